@@ -1,0 +1,73 @@
+// Instantaneous contact resolution (SPEC section 2): detection, a velocity
+// solve with per-contact Newton restitution and Coulomb friction iterated to a
+// consistent fixed point, position correction and exact time of impact.
+#pragma once
+
+#include <vector>
+
+#include "collision2d/body.h"
+#include "collision2d/contact.h"
+
+namespace collision2d
+{
+struct SolveReport
+{
+  int iterations = 0;                 ///< sweeps done (largest over coupled clusters)
+  double max_residual = 0.0;          ///< complementarity residual at exit (m/s)
+  double total_normal_impulse = 0.0;  ///< sum of normal impulses (N s)
+  bool converged = true;              ///< residual fell below tol before the cap
+  // Additions beyond SPEC's four fields.
+  std::size_t contact_count = 0;
+  std::size_t cluster_count = 0;         ///< coupled clusters (islands) solved
+  double kinetic_energy_before = 0.0;    ///< J
+  double kinetic_energy_after = 0.0;     ///< J
+};
+
+class ContactSolver
+{
+public:
+  /// e in [0,1], mu >= 0, iterations >= 1, tol > 0, bias_factor in [0,1],
+  /// slop >= 0; anything else (or non-finite) throws std::invalid_argument.
+  ContactSolver(double e, double mu, int iterations = 64, double tol = 1e-12, double bias_factor = 0.2,
+                double slop = 1e-3);
+
+  /// All contacts at the current poses (broad phase, then narrow phase),
+  /// ordered by (a, b). Throws std::runtime_error for an undefined normal.
+  static std::vector<Contact> detect_contacts(const std::vector<Body>& bodies);
+  /// As above, but pairs within `touch_tolerance` (m) of touching also count,
+  /// with zero penetration (used by step() at the time of impact).
+  static std::vector<Contact> detect_contacts(const std::vector<Body>& bodies, double touch_tolerance);
+
+  /// Velocity solve. Writes the applied impulses per contact to `impulses`
+  /// when given.
+  SolveReport solve(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                    std::vector<ContactImpulse>* impulses = nullptr) const;
+  /// Positions only: penetration beyond slop reduced by bias_factor, split by
+  /// inverse mass, once per pair.
+  void correct_positions(std::vector<Body>& bodies, const std::vector<Contact>& contacts) const;
+  /// detect, solve, correct.
+  SolveReport resolve(std::vector<Body>& bodies) const;
+  /// Earliest t in [0, 1] at which any pair first touches when every body
+  /// translates by its velocity over one unit step.
+  static double time_of_impact(const std::vector<Body>& bodies);
+  /// Move every body to the time of impact, then resolve contacts there
+  /// (pairs within a tiny relative tolerance of touching count as contacts).
+  SolveReport step(std::vector<Body>& bodies) const;
+
+  double restitution() const { return e_; }
+  double friction() const { return mu_; }
+  int max_iterations() const { return iterations_; }
+  double tolerance() const { return tol_; }
+  double bias_factor() const { return bias_factor_; }
+  double slop() const { return slop_; }
+
+private:
+  double e_;
+  double mu_;
+  int iterations_;
+  double tol_;
+  double bias_factor_;
+  double slop_;
+};
+
+}  // namespace collision2d

@@ -81,3 +81,52 @@ struct WorldContact
 };
 
 }  // namespace collision2d
+
+namespace collision2d
+{
+/// Bodies are kept by stable id; ids are never reused within one world.
+/// A World is a value: copying it snapshots the whole state, which is how a
+/// caller can try a change and roll back.
+class World
+{
+public:
+  /// Throws std::invalid_argument naming the field for an out-of-range setting.
+  explicit World(const WorldSettings& settings = WorldSettings());
+
+  /// Throws std::invalid_argument for an out-of-range or non-finite material.
+  BodyId add_body(const Body& body, const Material& material = Material());
+  /// Throws std::out_of_range for an unknown id.
+  void remove_body(BodyId id);
+  bool has_body(BodyId id) const;
+  const Body& body(BodyId id) const;
+  const Material& material(BodyId id) const;
+  /// Sets the pose and velocity of a body between frames.
+  void set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega);
+  /// Ids in ascending order.
+  std::vector<BodyId> body_ids() const;
+  std::size_t body_count() const;
+  void clear();
+
+  const WorldSettings& settings() const { return settings_; }
+  /// Validates like the constructor; the world is unchanged on failure.
+  void set_settings(const WorldSettings& settings);
+  /// Throws std::invalid_argument naming the field for an out-of-range setting.
+  static void validate(const WorldSettings& settings);
+
+  /// Advances `frames` frames of settings().dt. Never produces NaN from finite input.
+  StepReport step(int frames = 1);
+  /// Contact points of the last substep with their impulses.
+  const std::vector<WorldContact>& contacts() const { return contacts_; }
+  double time() const { return time_; }
+  std::uint64_t frame_count() const { return frame_count_; }
+
+private:
+  WorldSettings settings_;
+  std::vector<WorldContact> contacts_;
+  double time_ = 0.0;
+  std::uint64_t frame_count_ = 0;
+  // Implementation state (bodies, materials, id map, broad phase, warm-start
+  // cache, scratch buffers) is declared by the implementation.
+};
+
+}  // namespace collision2d

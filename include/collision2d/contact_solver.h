@@ -21,6 +21,17 @@ struct SolveReport
   std::size_t cluster_count = 0;         ///< coupled clusters (islands) solved
   double kinetic_energy_before = 0.0;    ///< J
   double kinetic_energy_after = 0.0;     ///< J
+  double time_of_impact = 1.0;           ///< step(): the time moved to, in [0, 1]
+  bool exact_fallback = false;           ///< exact mode: pivoting failed, iterative result used
+};
+
+/// Iterative: projected Gauss-Seidel on accumulated impulses, cluster by
+/// cluster, until the residual is below tol. Exact: each coupled cluster solved
+/// as a linear complementarity problem by pivoting.
+enum class SolverMode
+{
+  Iterative,
+  Exact
 };
 
 class ContactSolver
@@ -34,8 +45,9 @@ public:
   /// All contacts at the current poses (broad phase, then narrow phase),
   /// ordered by (a, b). Throws std::runtime_error for an undefined normal.
   static std::vector<Contact> detect_contacts(const std::vector<Body>& bodies);
-  /// As above, but pairs within `touch_tolerance` (m) of touching also count,
-  /// with zero penetration (used by step() at the time of impact).
+  /// As above, but pairs whose gap is at most touch_tolerance * (radius_a +
+  /// radius_b) also count, with zero penetration (step() uses this at the time
+  /// of impact, where the impacting pair touches exactly).
   static std::vector<Contact> detect_contacts(const std::vector<Body>& bodies, double touch_tolerance);
 
   /// Velocity solve. Writes the applied impulses per contact to `impulses`
@@ -60,6 +72,8 @@ public:
   double tolerance() const { return tol_; }
   double bias_factor() const { return bias_factor_; }
   double slop() const { return slop_; }
+  SolverMode mode() const { return mode_; }
+  void set_mode(SolverMode mode) { mode_ = mode; }
 
 private:
   double e_;
@@ -68,6 +82,7 @@ private:
   double tol_;
   double bias_factor_;
   double slop_;
+  SolverMode mode_ = SolverMode::Iterative;
 };
 
 }  // namespace collision2d

@@ -27,5 +27,7 @@ struct Scene
 
 /// A world holding the scene's bodies in order (ids 0..n-1) with its settings.
 World make_world(const Scene& scene);
+/// The world's current bodies (ascending id), materials and settings.
+Scene to_scene(const World& world, const std::string& name = "");
 
 }  // namespace collision2d

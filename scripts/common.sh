@@ -1,0 +1,146 @@
+# shellcheck shell=bash
+# Shared by demo.sh and test.sh: dependency install, ROS environment, build.
+# Source it from a script that has `set -euo pipefail`.
+
+COLLISION2D_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# Everything generated lives here (git-ignored); override to build elsewhere.
+COLLISION2D_BUILD_ROOT="${COLLISION2D_BUILD_ROOT:-$COLLISION2D_ROOT/.build}"
+COLLISION2D_WS="$COLLISION2D_BUILD_ROOT/ws"
+COLLISION2D_JOBS="${COLLISION2D_JOBS:-$(nproc)}"
+NOETIC_SETUP=/opt/ros/noetic/setup.bash
+# ROS python modules are installed for the system interpreter only; a python3
+# from pyenv/conda earlier on PATH would not find them.
+SYSTEM_PYTHON=/usr/bin/python3
+# apt waits this long for another apt/dpkg to release its lock.
+APT_LOCK_TIMEOUT_S=600
+
+# ---------------------------------------------------------------------------
+# Packages: the one place to add a dependency.
+# Needed on every system (not ROS packages).
+SYSTEM_PACKAGES=(cmake g++ libeigen3-dev libgtest-dev libyaml-cpp-dev)
+# ROS from Debian's own archive (Debian 12 and similar: ROS lives in /usr).
+DEBIAN_ROS_PACKAGES=(
+  catkin ros-core-dev ros-message-generation ros-message-runtime
+  libstd-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev
+  python3-rostest librostest-dev catkin-lint)
+# The same for ROS Noetic in /opt/ros/noetic, used when rosdep cannot resolve
+# package.xml (rosdep missing or never initialised).
+NOETIC_ROS_PACKAGES=(
+  ros-noetic-catkin ros-noetic-roscpp ros-noetic-message-generation
+  ros-noetic-message-runtime ros-noetic-std-msgs ros-noetic-geometry-msgs
+  ros-noetic-visualization-msgs ros-noetic-rostest python3-catkin-lint)
+
+# ---------------------------------------------------------------------------
+log() { printf '[collision2d] %s\n' "$*" >&2; }
+die() { log "error: $*"; exit 1; }
+
+run_as_root() {
+  if [[ $EUID -eq 0 ]]; then
+    "$@"
+  elif command -v sudo >/dev/null; then
+    sudo "$@"
+  else
+    die "root or sudo is needed to run: $*"
+  fi
+}
+
+using_noetic() { [[ -f $NOETIC_SETUP ]]; }
+
+missing_packages() {
+  local package
+  for package in "$@"; do
+    dpkg-query -W -f='${db:Status-Abbrev}' "$package" 2>/dev/null | grep -q '^ii' ||
+      printf '%s\n' "$package"
+  done
+}
+
+apt_get() {
+  run_as_root env DEBIAN_FRONTEND=noninteractive \
+    apt-get -q -o DPkg::Lock::Timeout="$APT_LOCK_TIMEOUT_S" "$@"
+}
+
+# Installs only what is missing, so a second run neither updates nor installs.
+install_apt_packages() {
+  local missing
+  mapfile -t missing < <(missing_packages "$@")
+  [[ ${#missing[@]} -eq 0 ]] && return 0
+  log "installing: ${missing[*]}"
+  apt_get update
+  apt_get install -y "${missing[@]}"
+}
+
+install_noetic_ros_packages() {
+  if command -v rosdep >/dev/null &&
+     DEBIAN_FRONTEND=noninteractive rosdep install --from-paths "$COLLISION2D_ROOT" \
+       --ignore-src -y --rosdistro noetic; then
+    return 0
+  fi
+  log "rosdep unavailable or failed: installing the explicit ros-noetic list"
+  install_apt_packages "${NOETIC_ROS_PACKAGES[@]}"
+}
+
+install_dependencies() {
+  install_apt_packages "${SYSTEM_PACKAGES[@]}"
+  # Never mix Debian's catkin/ros-* packages into a Noetic system.
+  if using_noetic; then
+    install_noetic_ros_packages
+  else
+    install_apt_packages "${DEBIAN_ROS_PACKAGES[@]}"
+  fi
+}
+
+# ---------------------------------------------------------------------------
+# ROS setup scripts read unset variables, so they are sourced without `set -u`.
+source_without_nounset() {
+  set +u
+  # shellcheck disable=SC1090
+  source "$1"
+  set -u
+}
+
+setup_ros_environment() {
+  # /usr/bin first so ROS tools and `#!/usr/bin/env python3` nodes run with the
+  # system python3 even when pyenv or conda shadow it; the Noetic setup then
+  # puts /opt/ros/noetic/bin ahead of /usr/bin.
+  export PATH="/usr/bin:/bin:$PATH"
+  if using_noetic; then
+    source_without_nounset "$NOETIC_SETUP"
+  fi
+  # Keep logs and rostest results of these scripts out of ~/.ros.
+  export ROS_HOME="$COLLISION2D_BUILD_ROOT/ros_home"
+  mkdir -p "$ROS_HOME"
+}
+
+# A catkin workspace whose only package is this repository (a symlink, so
+# edits in the clone are built without copying).
+prepare_workspace() {
+  mkdir -p "$COLLISION2D_WS/src"
+  ln -sfn "$COLLISION2D_ROOT" "$COLLISION2D_WS/src/collision2d"
+  # A clone that moved leaves a CMake cache pointing at the old place.
+  local cache="$COLLISION2D_WS/build/CMakeCache.txt"
+  if [[ -f $cache ]] &&
+     ! grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$COLLISION2D_WS/src" "$cache"; then
+    log "workspace moved: clearing $COLLISION2D_WS/build and devel"
+    rm -rf "$COLLISION2D_WS/build" "$COLLISION2D_WS/devel"
+  fi
+}
+
+# catkin_make with the project's fixed flags; extra arguments are targets.
+catkin_make_ws() {
+  catkin_make -C "$COLLISION2D_WS" -j"$COLLISION2D_JOBS" \
+    -DCMAKE_BUILD_TYPE=Release -DPYTHON_EXECUTABLE="$SYSTEM_PYTHON" "$@"
+}
+
+source_workspace() {
+  source_without_nounset "$COLLISION2D_WS/devel/setup.bash"
+}
+
+# Everything demo.sh and test.sh need before their own work.
+install_and_build() {
+  install_dependencies
+  setup_ros_environment
+  prepare_workspace
+  log "building in $COLLISION2D_WS"
+  catkin_make_ws all
+  source_workspace
+}

@@ -1,0 +1,100 @@
+// Internal to the core: the per-contact rows the velocity solver iterates on,
+// the coupled clusters they form, and the residual that decides convergence.
+// Shared by the iterative solver and any other solver mode that works on the
+// same rows and fixed targets.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "collision2d/body.h"
+#include "collision2d/contact.h"
+#include "collision2d/vec2.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// Velocity state of one body during a solve. Non-dynamic bodies carry zero
+/// inverse mass and inertia, so impulses never change them.
+struct BodyVelocity
+{
+  Vec2 v;
+  double omega = 0.0;
+  double inv_mass = 0.0;
+  double inv_inertia = 0.0;
+};
+
+/// One contact point: geometry, effective masses, the fixed Newton target and
+/// the accumulated impulses.
+struct ContactRow
+{
+  std::size_t contact = 0;  ///< index into the caller's contact list
+  std::size_t cluster = 0;  ///< representative body of the coupled cluster
+  std::size_t a = 0;
+  std::size_t b = 0;
+  Vec2 normal;
+  Vec2 tangent;  ///< perp(normal)
+  Vec2 r_a;      ///< lever arm from a's centre to the contact point
+  Vec2 r_b;
+  double k_n = 0.0;     ///< inverse effective mass along the normal (1/kg)
+  double k_t = 0.0;     ///< inverse effective mass along the tangent (1/kg)
+  double target = 0.0;  ///< post-solve normal separation speed to reach (m/s)
+  double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
+  double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
+};
+
+/// Rows [begin, end) of the solver's row list form one coupled cluster.
+struct ClusterRange
+{
+  std::size_t begin = 0;
+  std::size_t end = 0;
+};
+
+/// Throws std::invalid_argument naming contact `index` when it names a missing
+/// body or the same body twice, or its normal, point or depth is unusable.
+void validate_contact(const Contact& c, std::size_t index, std::size_t body_count);
+
+/// Copies the bodies' velocities and inverse masses into `state`.
+void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>& state);
+
+/// Builds one row per contact whose normal effective mass is positive (a pair of
+/// two non-dynamic bodies is skipped). Targets are e times the approach speed
+/// measured now, before any impulse; 0 for separating or resting contacts.
+/// Throws std::invalid_argument for a contact naming a missing or the same body.
+void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
+                const std::vector<Contact>& contacts, double restitution, std::vector<ContactRow>& rows);
+
+/// Reorders `rows` so each coupled cluster is contiguous (and, inside it, rows
+/// of the same pair are adjacent) and fills `clusters`. Only dynamic bodies
+/// couple: contacts that share just a static or kinematic body stay apart,
+/// because that body's velocity never changes. `parent` is working storage.
+void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactRow>& rows,
+                        std::vector<ClusterRange>& clusters, std::vector<std::size_t>& parent);
+
+/// Relative velocity of b with respect to a at the row's contact point.
+inline Vec2 relative_velocity(const ContactRow& row, const std::vector<BodyVelocity>& state)
+{
+  const BodyVelocity& a = state[row.a];
+  const BodyVelocity& b = state[row.b];
+  return (b.v + cross(b.omega, row.r_b)) - (a.v + cross(a.omega, row.r_a));
+}
+
+/// Applies impulse p to b at the contact point and -p to a, so linear and
+/// angular momentum are unchanged.
+inline void apply_impulse(const ContactRow& row, Vec2 p, std::vector<BodyVelocity>& state)
+{
+  BodyVelocity& a = state[row.a];
+  BodyVelocity& b = state[row.b];
+  a.v -= a.inv_mass * p;
+  a.omega -= a.inv_inertia * cross(row.r_a, p);
+  b.v += b.inv_mass * p;
+  b.omega += b.inv_inertia * cross(row.r_b, p);
+}
+
+/// Complementarity residual of one row at the current velocities (m/s); see
+/// the definition in contact_rows.cpp.
+double row_residual(const ContactRow& row, const std::vector<BodyVelocity>& state, double mu);
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,104 @@
+#include "collision2d/contact_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "contact_rows.h"
+#include "pgs_solver.h"
+
+namespace collision2d
+{
+namespace
+{
+void require(bool in_range, const char* name, double value, const char* range)
+{
+  // Written as a positive check so NaN (which fails every comparison) is rejected.
+  if (!in_range)
+    throw std::invalid_argument(std::string("ContactSolver: ") + name + " = " + std::to_string(value) +
+                                " is not in " + range);
+}
+
+double total_kinetic_energy(const std::vector<Body>& bodies)
+{
+  double energy = 0.0;
+  for (const Body& body : bodies)
+    energy += body.kinetic_energy();
+  return energy;
+}
+
+void store_velocities(const std::vector<detail::BodyVelocity>& state, std::vector<Body>& bodies)
+{
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    if (state[i].inv_mass <= 0.0)
+      continue;  // static and kinematic bodies keep their velocities untouched
+    bodies[i].set_velocity(state[i].v);
+    bodies[i].set_omega(state[i].omega);
+  }
+}
+
+void store_impulses(const std::vector<detail::ContactRow>& rows, std::size_t contact_count,
+                    std::vector<ContactImpulse>& impulses)
+{
+  impulses.assign(contact_count, ContactImpulse{});
+  for (const detail::ContactRow& row : rows)
+    impulses[row.contact] = {row.lambda_n, row.lambda_t};
+}
+}  // namespace
+
+ContactSolver::ContactSolver(double e, double mu, int iterations, double tol, double bias_factor, double slop)
+  : e_(e), mu_(mu), iterations_(iterations), tol_(tol), bias_factor_(bias_factor), slop_(slop)
+{
+  require(e >= 0.0 && e <= 1.0, "e (restitution)", e, "[0, 1]");
+  require(mu >= 0.0 && std::isfinite(mu), "mu (friction)", mu, "[0, inf)");
+  require(iterations >= 1, "iterations", iterations, "[1, inf)");
+  require(tol > 0.0 && std::isfinite(tol), "tol", tol, "(0, inf)");
+  require(bias_factor >= 0.0 && bias_factor <= 1.0, "bias_factor", bias_factor, "[0, 1]");
+  require(slop >= 0.0 && std::isfinite(slop), "slop", slop, "[0, inf)");
+}
+
+SolveReport ContactSolver::solve(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                                 std::vector<ContactImpulse>* impulses) const
+{
+  SolveReport report;
+  report.contact_count = contacts.size();
+  report.kinetic_energy_before = total_kinetic_energy(bodies);
+
+  // All working storage is sized here, once per call; the sweeps allocate nothing.
+  std::vector<detail::BodyVelocity> state;
+  std::vector<detail::ContactRow> rows;
+  std::vector<detail::ClusterRange> clusters;
+  std::vector<std::size_t> parent;
+  detail::load_velocities(bodies, state);
+  detail::build_rows(bodies, state, contacts, e_, rows);
+  detail::partition_clusters(state, rows, clusters, parent);
+  report.cluster_count = clusters.size();
+
+  for (const detail::ClusterRange& cluster : clusters)
+  {
+    const detail::ClusterResult result = detail::solve_cluster_pgs(rows, cluster, state, mu_, iterations_, tol_);
+    report.iterations = std::max(report.iterations, result.sweeps);
+    report.max_residual = std::max(report.max_residual, result.residual);
+    report.converged = report.converged && result.converged;
+  }
+  for (const detail::ContactRow& row : rows)
+    report.total_normal_impulse += row.lambda_n;
+
+  store_velocities(state, bodies);
+  if (impulses != nullptr)
+    store_impulses(rows, contacts.size(), *impulses);
+  report.kinetic_energy_after = total_kinetic_energy(bodies);
+  return report;
+}
+
+SolveReport ContactSolver::resolve(std::vector<Body>& bodies) const
+{
+  const std::vector<Contact> contacts = detect_contacts(bodies);
+  const SolveReport report = solve(bodies, contacts);
+  correct_positions(bodies, contacts);
+  return report;
+}
+
+}  // namespace collision2d

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -180,8 +181,9 @@ void add_gas(Scene& scene, const GasParams& p)
   const double slack = cell - 2.0 * p.radius;
   if (!(slack > 0.0))
   {
-    throw std::invalid_argument("gas: " + std::to_string(p.count) + " disks of radius " + std::to_string(p.radius) +
-                                " do not fit in the region");
+    std::ostringstream message;
+    message << "gas: " << p.count << " disks of radius " << p.radius << " m do not fit in the region";
+    throw std::invalid_argument(message.str());
   }
   SplitMix64 rng(p.seed);
   const std::size_t first = scene.bodies.size();

@@ -1,0 +1,50 @@
+// Human-editable scene files (YAML) and .collision scenarios as Scenes.
+//
+// YAML layout (every key optional unless noted; unknown keys are errors):
+//   name: pyramid
+//   gravity: [0, -9.81]                 # m/s^2
+//   settings: {dt: 0.0166, substeps: 4, velocity_iterations: 2, slop: 0.001,
+//              compliance: 1e-8, restitution_threshold: 0.001,
+//              rotation: auto, friction: on, ...}   # toggles: auto | on | off
+//   materials:
+//     rough: {restitution: 0, static_friction: 0.6, kinetic_friction: 0.5}
+//   generate:                           # expanded first, in order
+//     - ground: {width: 60, material: rough}
+//     - pyramid: {base: 20, box: 1.0, at: [0, 0.5], material: rough}
+//   bodies:                             # appended after the generated bodies
+//     - {name: ball, shape: disk, mass: 1, radius: 0.5, position: [0, 3],
+//        velocity: [1, 0], omega: 0, theta: 0, material: rough}
+//     - {shape: box, type: static, size: [2, 0.1], position: [0, -1]}
+//     - {shape: polygon, mass: 2, vertices: [[0, 0], [1, 0], [0, 1]]}
+// Generators: ground, container, pyramid, column, cradle, disk_row, gas,
+// incline, with the fields of the matching *Params in scene_parts.h.
+// Errors throw std::runtime_error "source:line: key.path: message".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "collision2d/scene.h"
+
+namespace collision2d
+{
+namespace scenes
+{
+Scene parse_scene_yaml(const std::string& text, const std::string& source_name = "<yaml>");
+/// .yaml/.yml as YAML; .collision via parse_scenario (its restitution and
+/// friction become every body's material, gravity zero).
+Scene load_scene_file(const std::string& path);
+
+/// YAML that parse_scene_yaml turns back into the same scene exactly (every
+/// body listed explicitly, doubles written with max_digits10).
+std::string scene_to_yaml(const Scene& scene);
+void save_scene_file(const Scene& scene, const std::string& path);
+
+/// Scene names (file stems of *.yaml, *.yml and *.collision) in `dir`, sorted.
+std::vector<std::string> list_scenes(const std::string& dir);
+/// Loads `dir`/name.{yaml,yml,collision}; throws std::runtime_error
+/// "unknown scene 'x' (known: a, b, ...)" when none exists.
+Scene load_named_scene(const std::string& name, const std::string& dir);
+
+}  // namespace scenes
+}  // namespace collision2d

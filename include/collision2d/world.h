@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "collision2d/body.h"
+#include "collision2d/broad_phase.h"
+#include "collision2d/collide.h"
 #include "collision2d/contact.h"
 #include "collision2d/vec2.h"
 
@@ -45,6 +47,24 @@ struct WorldSettings
   Toggle time_of_impact = Toggle::Auto;
   Toggle warm_starting = Toggle::Auto;
   Toggle sleeping = Toggle::Auto;
+
+  // Knobs of the individual effects (additions beyond SPEC section 3).
+  /// Fraction of the previous frame's impulses applied on a frame's first substep, [0, 1].
+  double warm_start_factor = 1.0;
+  /// A dynamic body is swept for time of impact when its displacement in one
+  /// substep exceeds this fraction of (its inner radius + the smallest inner
+  /// radius in the world); inner radius = radius of a disk, least centroid-to-face
+  /// distance of a polygon. Below it the body cannot skip over anything. > 0.
+  double toi_displacement_fraction = 0.5;
+  /// A dynamic body rests (and may sleep) below this speed (m/s), >= 0.
+  double sleep_linear_speed = 0.05;
+  /// ... and below this angular speed (rad/s), >= 0.
+  double sleep_angular_speed = 0.1;
+  /// Time every body of an island must have rested before the island sleeps (s), >= 0.
+  double sleep_time = 0.5;
+  /// Toggle::Auto sleeps only worlds with at least this many dynamic bodies:
+  /// smaller scenes gain little and keep exactly reproducible trajectories.
+  std::size_t sleep_auto_min_bodies = 256;
 };
 
 /// Which effects the last step actually modelled.
@@ -65,8 +85,20 @@ struct StepReport
   int substeps = 0;                 ///< substeps done in total
   std::size_t contact_count = 0;    ///< contact points in the last substep
   double max_penetration = 0.0;     ///< largest depth seen after correction (m)
-  double kinetic_energy = 0.0;      ///< after the step (J)
-  ActiveEffects active;
+  double kinetic_energy = 0.0;      ///< of the dynamic bodies after the step (J)
+  ActiveEffects active;             ///< union over the step's frames
+
+  // Additions beyond the original fields.
+  double max_detected_penetration = 0.0;  ///< largest depth found by detection, before correction (m)
+  /// Largest normal-velocity residual left by any substep's velocity solve (m/s):
+  /// per contact |v_n - target| if it carries impulse, else max(0, target - v_n).
+  double velocity_residual = 0.0;
+  /// The same residual on the first substep of the last frame, the only one
+  /// warm starting acts on (m/s).
+  double warm_substep_residual = 0.0;
+  std::size_t swept_bodies = 0;     ///< body sweeps done for time of impact
+  std::size_t toi_clamps = 0;       ///< sweeps that stopped a body at its time of impact
+  std::size_t sleeping_bodies = 0;  ///< asleep after the step
 };
 
 using BodyId = std::uint32_t;
@@ -115,18 +147,119 @@ public:
 
   /// Advances `frames` frames of settings().dt. Never produces NaN from finite input.
   StepReport step(int frames = 1);
-  /// Contact points of the last substep with their impulses.
+  /// Contact points of the last substep with their impulses (pairs of a
+  /// sleeping island keep the values they had when it fell asleep).
   const std::vector<WorldContact>& contacts() const { return contacts_; }
   double time() const { return time_; }
   std::uint64_t frame_count() const { return frame_count_; }
+  /// True while the body's island sleeps (never for static or kinematic bodies).
+  bool is_sleeping(BodyId id) const;
 
 private:
+  /// One contact point prepared for the substep's solves.
+  struct ContactRow
+  {
+    std::size_t a = 0;  ///< dense index, a < b
+    std::size_t b = 0;
+    Vec2 normal;        ///< unit, from a to b
+    Vec2 point;
+    Vec2 ra;            ///< lever arm from a's centre at detection (m)
+    Vec2 rb;
+    double penetration = 0.0;
+    std::uint32_t feature = 0;
+    int count = 1;                ///< points in this pair's manifold
+    bool active = true;           ///< false: sleeping island, carried over unsolved
+    double inv_mass_a = 0.0;      ///< 1/kg, 0 for static and kinematic bodies
+    double inv_mass_b = 0.0;
+    double inv_inertia_a = 0.0;   ///< 1/(kg m^2), 0 also when rotation is off
+    double inv_inertia_b = 0.0;
+    double normal_mass = 0.0;     ///< 1 / K_n without compliance (kg)
+    double tangent_mass = 0.0;    ///< 1 / K_t (kg)
+    double target = 0.0;          ///< post-solve normal speed (m/s)
+    double mu_s = 0.0;
+    double mu_k = 0.0;
+    ContactImpulse impulse;       ///< accumulated this substep (N s)
+  };
+
+  /// Which effects one frame models, decided once per frame.
+  struct FrameEffects
+  {
+    ActiveEffects flags;
+    bool warm_start_now = false;  ///< warm starting on and a cache to start from
+  };
+
+  // world.cpp
+  std::size_t index_of(BodyId id) const;
+  void wake(std::size_t index);
+  // world_effects.cpp
+  FrameEffects select_effects() const;
+  bool needs_rotation(bool friction) const;
+  bool any_pair_with(double (*property)(const Material&)) const;
+  bool sleeping_wanted() const;
+  // world_step.cpp
+  void step_frame(StepReport& report);
+  void substep(FrameEffects& effects, double h, bool first, StepReport& report);
+  void integrate(FrameEffects& effects, double h, StepReport& report);
+  // world_toi.cpp
+  void refresh_inner_radii();
+  Vec2 substep_displacement(std::size_t i, double h) const;
+  bool is_fast(std::size_t i, Vec2 displacement) const;
+  bool mark_swept_bodies(double h);
+  bool sweep(double h, StepReport& report);
+  bool clamped(std::size_t i) const;
+  // world_contacts.cpp
+  bool is_mover(std::size_t i) const;
+  void detect(bool warm, double h, StepReport& report);
+  bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
+  void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale);
+  void carry_sleeping_pair(std::size_t i, std::size_t j);
+  const WorldContact* find_cached(BodyId a, BodyId b, std::uint32_t feature) const;
+  void publish_contacts();
+  double measure_penetration() const;
+  // world_solve.cpp
+  void prepare_rows(const ActiveEffects& effects);
+  double effective_inverse_mass(const ContactRow& row, Vec2 direction) const;
+  Vec2 relative_velocity(const ContactRow& row) const;
+  void correct_positions(double h);
+  void displace(std::size_t i, double lambda, Vec2 n, Vec2 r, double inv_mass, double inv_inertia);
+  void warm_start();
+  void solve_velocities(bool friction);
+  void solve_normal(ContactRow& row);
+  void solve_friction(ContactRow& row);
+  void apply_impulse(const ContactRow& row, Vec2 impulse);
+  double velocity_residual() const;
+  // world_sleep.cpp
+  void update_sleep();
+  void update_rest_times();
+
   WorldSettings settings_;
   std::vector<WorldContact> contacts_;
   double time_ = 0.0;
   std::uint64_t frame_count_ = 0;
-  // Implementation state (bodies, materials, id map, broad phase, warm-start
-  // cache, scratch buffers) is declared by the implementation.
+
+  // Bodies in ascending id order; a dense index is a position in these arrays.
+  std::vector<Body> bodies_;
+  std::vector<Material> materials_;
+  std::vector<BodyId> ids_;
+  BodyId next_id_ = 0;
+  std::vector<bool> asleep_;
+  std::vector<double> rest_time_;     ///< how long each body has been resting (s)
+  std::vector<double> inner_radius_;  ///< m, for the time-of-impact speed test
+  double min_inner_radius_ = 0.0;
+
+  // Scratch reused across substeps and steps (no allocation once warmed up).
+  BroadPhase broad_phase_;
+  BroadPhase sweep_phase_;
+  std::vector<Aabb> boxes_;
+  std::vector<BodyPair> pairs_;
+  std::vector<bool> swept_;           ///< bodies swept this substep
+  std::vector<double> toi_;           ///< fraction of the substep each body travels
+  bool clamping_ = false;             ///< some body stopped at its time of impact this substep
+  std::vector<ContactRow> rows_;
+  std::vector<WorldContact> cache_;   ///< previous frame's contacts, for warm starting
+  double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
+  std::vector<std::size_t> island_;   ///< union-find parents for sleeping
+  std::vector<bool> island_awake_;
 };
 
 }  // namespace collision2d

@@ -1,0 +1,225 @@
+// World: bodies by stable id, materials, settings and their validation.
+#include "collision2d/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace collision2d
+{
+namespace
+{
+[[noreturn]] void reject(const std::string& field, const std::string& rule, double value)
+{
+  std::ostringstream msg;
+  msg << field << " must be " << rule << " (got " << value << ")";
+  throw std::invalid_argument(msg.str());
+}
+
+void require_positive(const char* field, double value)
+{
+  if (!(std::isfinite(value) && value > 0.0))
+  {
+    reject(std::string("WorldSettings.") + field, "finite and > 0", value);
+  }
+}
+
+void require_non_negative(const char* field, double value)
+{
+  if (!(std::isfinite(value) && value >= 0.0))
+  {
+    reject(std::string("WorldSettings.") + field, "finite and >= 0", value);
+  }
+}
+
+void require_at_least_one(const char* field, int value)
+{
+  if (value < 1)
+  {
+    reject(std::string("WorldSettings.") + field, ">= 1", value);
+  }
+}
+
+void validate_material(const Material& m)
+{
+  if (!(std::isfinite(m.restitution) && m.restitution >= 0.0 && m.restitution <= 1.0))
+  {
+    reject("Material.restitution", "in [0, 1]", m.restitution);
+  }
+  if (!(std::isfinite(m.static_friction) && m.static_friction >= 0.0))
+  {
+    reject("Material.static_friction", "finite and >= 0", m.static_friction);
+  }
+  if (!(std::isfinite(m.kinetic_friction) && m.kinetic_friction >= 0.0))
+  {
+    reject("Material.kinetic_friction", "finite and >= 0", m.kinetic_friction);
+  }
+}
+
+/// Static bodies never move, so a velocity given to one is dropped rather
+/// than reported as a motion that never happens.
+void settle_static(Body& body)
+{
+  if (body.type() == BodyType::Static)
+  {
+    body.set_velocity(Vec2{0.0, 0.0});
+    body.set_omega(0.0);
+  }
+}
+
+}  // namespace
+
+World::World(const WorldSettings& settings) : settings_(settings)
+{
+  validate(settings);
+}
+
+void World::validate(const WorldSettings& s)
+{
+  if (!is_finite(s.gravity))
+  {
+    reject("WorldSettings.gravity", "finite", std::isfinite(s.gravity.x) ? s.gravity.y : s.gravity.x);
+  }
+  require_positive("dt", s.dt);
+  require_at_least_one("substeps", s.substeps);
+  require_at_least_one("velocity_iterations", s.velocity_iterations);
+  require_non_negative("slop", s.slop);
+  require_non_negative("compliance", s.compliance);
+  require_non_negative("restitution_threshold", s.restitution_threshold);
+  if (!(std::isfinite(s.warm_start_factor) && s.warm_start_factor >= 0.0 && s.warm_start_factor <= 1.0))
+  {
+    reject("WorldSettings.warm_start_factor", "in [0, 1]", s.warm_start_factor);
+  }
+  require_positive("toi_displacement_fraction", s.toi_displacement_fraction);
+  require_non_negative("sleep_linear_speed", s.sleep_linear_speed);
+  require_non_negative("sleep_angular_speed", s.sleep_angular_speed);
+  require_non_negative("sleep_time", s.sleep_time);
+}
+
+void World::set_settings(const WorldSettings& settings)
+{
+  validate(settings);
+  settings_ = settings;
+}
+
+BodyId World::add_body(const Body& body, const Material& material)
+{
+  validate_material(material);
+  bodies_.push_back(body);
+  settle_static(bodies_.back());
+  materials_.push_back(material);
+  ids_.push_back(next_id_);
+  asleep_.push_back(false);
+  rest_time_.push_back(0.0);
+  refresh_inner_radii();
+  return next_id_++;
+}
+
+void World::remove_body(BodyId id)
+{
+  const std::size_t i = index_of(id);
+  // Bodies resting on the removed one must fall, so its sleeping partners wake.
+  for (const WorldContact& c : contacts_)
+  {
+    if (c.a == id || c.b == id)
+    {
+      const BodyId other = c.a == id ? c.b : c.a;
+      if (has_body(other))
+      {
+        wake(index_of(other));
+      }
+    }
+  }
+  const auto offset = static_cast<std::ptrdiff_t>(i);
+  bodies_.erase(bodies_.begin() + offset);
+  materials_.erase(materials_.begin() + offset);
+  ids_.erase(ids_.begin() + offset);
+  asleep_.erase(asleep_.begin() + offset);
+  rest_time_.erase(rest_time_.begin() + offset);
+  // Dense indices shifted: the reported contacts no longer describe the world.
+  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
+                                 [id](const WorldContact& c) { return c.a == id || c.b == id; }),
+                  contacts_.end());
+  refresh_inner_radii();
+}
+
+bool World::has_body(BodyId id) const
+{
+  return std::binary_search(ids_.begin(), ids_.end(), id);
+}
+
+std::size_t World::index_of(BodyId id) const
+{
+  // ids_ stays sorted: new ids are larger than every existing one and
+  // removal preserves order.
+  const auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
+  if (it == ids_.end() || *it != id)
+  {
+    throw std::out_of_range("unknown body id " + std::to_string(id));
+  }
+  return static_cast<std::size_t>(it - ids_.begin());
+}
+
+const Body& World::body(BodyId id) const
+{
+  return bodies_[index_of(id)];
+}
+
+const Material& World::material(BodyId id) const
+{
+  return materials_[index_of(id)];
+}
+
+bool World::is_sleeping(BodyId id) const
+{
+  return asleep_[index_of(id)];
+}
+
+void World::set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega)
+{
+  const std::size_t i = index_of(id);
+  if (!is_finite(position) || !std::isfinite(theta) || !is_finite(velocity) || !std::isfinite(omega))
+  {
+    throw std::invalid_argument("set_body_state: non-finite state for body " + std::to_string(id));
+  }
+  Body& b = bodies_[i];
+  b.set_position(position);
+  b.set_theta(theta);
+  b.set_velocity(velocity);
+  b.set_omega(omega);
+  settle_static(b);
+  wake(i);
+}
+
+void World::wake(std::size_t index)
+{
+  asleep_[index] = false;
+  rest_time_[index] = 0.0;
+}
+
+std::vector<BodyId> World::body_ids() const
+{
+  return ids_;
+}
+
+std::size_t World::body_count() const
+{
+  return bodies_.size();
+}
+
+void World::clear()
+{
+  bodies_.clear();
+  materials_.clear();
+  ids_.clear();
+  asleep_.clear();
+  rest_time_.clear();
+  contacts_.clear();
+  cache_.clear();
+  rows_.clear();
+  refresh_inner_radii();
+}
+
+}  // namespace collision2d

@@ -1,0 +1,214 @@
+// Detection for the substep (broad then narrow phase on fresh boxes), the
+// warm-start cache keyed by (body ids, feature), and the published contacts.
+#include <algorithm>
+
+#include "collision2d/collide.h"
+#include "collision2d/touch_tolerance.h"
+#include "collision2d/world.h"
+
+namespace collision2d
+{
+namespace
+{
+/// Direction used for two disks whose centres coincide, where the contact
+/// normal is undefined and collide() would throw mid-step: any unit vector
+/// separates them, "up" is as good as another.
+constexpr Vec2 kCoincidentNormal{0.0, 1.0};
+
+bool coincident_disks(const Body& a, const Body& b)
+{
+  return a.shape() == Shape::Disk && b.shape() == Shape::Disk && a.position() == b.position();
+}
+
+bool pair_less(const WorldContact& c, BodyId a, BodyId b)
+{
+  return c.a < a || (c.a == a && c.b < b);
+}
+
+}  // namespace
+
+bool World::is_mover(std::size_t i) const
+{
+  const Body& b = bodies_[i];
+  switch (b.type())
+  {
+    case BodyType::Dynamic:
+      return !asleep_[i];
+    case BodyType::Kinematic:
+      return b.velocity() != Vec2{0.0, 0.0} || b.omega() != 0.0;
+    case BodyType::Static:
+      break;
+  }
+  return false;
+}
+
+void World::detect(bool warm, double h, StepReport& report)
+{
+  const std::size_t n = bodies_.size();
+  boxes_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    boxes_[i] = bodies_[i].aabb();
+  }
+  broad_phase_.find_pairs(boxes_, pairs_);
+  rows_.clear();
+  // Impulses were made over the cached substep length; a changed dt or
+  // substep count rescales them to this one.
+  const double warm_scale = warm ? settings_.warm_start_factor * h / cache_h_ : 0.0;
+  for (const BodyPair& pair : pairs_)
+  {
+    const std::size_t i = pair.first;
+    const std::size_t j = pair.second;
+    const bool dynamic = bodies_[i].type() == BodyType::Dynamic || bodies_[j].type() == BodyType::Dynamic;
+    if (!dynamic)
+    {
+      continue;
+    }
+    if (!is_mover(i) && !is_mover(j))
+    {
+      carry_sleeping_pair(i, j);
+      continue;
+    }
+    const bool touch = clamped(i) || clamped(j);
+    const double tolerance = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
+    add_manifold(i, j, tolerance, warm_scale);
+  }
+  for (const ContactRow& row : rows_)
+  {
+    report.max_detected_penetration = std::max(report.max_detected_penetration, row.penetration);
+  }
+}
+
+bool World::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const
+{
+  const Body& a = bodies_[i];
+  const Body& b = bodies_[j];
+  if (coincident_disks(a, b))
+  {
+    m.normal = kCoincidentNormal;
+    m.count = 1;
+    m.points[0] = ManifoldPoint{a.position(), a.radius() + b.radius(), 0};
+    return true;
+  }
+  return collide(a, b, m, tolerance);
+}
+
+void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale)
+{
+  Manifold m;
+  if (!collide_pair(i, j, tolerance, m))
+  {
+    return;
+  }
+  // A moving body reached a sleeping one: its island takes part again.
+  if (asleep_[i] || asleep_[j])
+  {
+    wake(asleep_[i] ? i : j);
+  }
+  for (int k = 0; k < m.count; ++k)
+  {
+    ContactRow row;
+    row.a = i;
+    row.b = j;
+    row.normal = m.normal;
+    row.point = m.points[k].point;
+    row.penetration = m.points[k].penetration;
+    row.feature = m.points[k].feature;
+    row.count = m.count;
+    if (warm_scale > 0.0)
+    {
+      const WorldContact* cached = find_cached(ids_[i], ids_[j], row.feature);
+      if (cached != nullptr)
+      {
+        row.impulse.normal = warm_scale * cached->impulse.normal;
+        row.impulse.tangent = warm_scale * cached->impulse.tangent;
+      }
+    }
+    rows_.push_back(row);
+  }
+}
+
+void World::carry_sleeping_pair(std::size_t i, std::size_t j)
+{
+  // Nothing moves in a sleeping island, so its contacts and impulses stay
+  // what they were when it fell asleep; they are kept (unsolved) so the
+  // island stays one island and wakes with its impulses intact.
+  const BodyId a = ids_[i];
+  const BodyId b = ids_[j];
+  auto it = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
+                             [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
+                               return pair_less(c, key.first, key.second);
+                             });
+  for (; it != cache_.end() && it->a == a && it->b == b; ++it)
+  {
+    ContactRow row;
+    row.a = i;
+    row.b = j;
+    row.normal = it->contact.normal;
+    row.point = it->contact.point;
+    row.penetration = it->contact.penetration;
+    row.feature = it->contact.feature;
+    row.active = false;
+    row.impulse = it->impulse;
+    rows_.push_back(row);
+  }
+}
+
+const WorldContact* World::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
+{
+  // The cache is in (a, b) order because contacts are published in broad-phase
+  // pair order and dense indices follow ids; a pair has at most two points.
+  auto it = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
+                             [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
+                               return pair_less(c, key.first, key.second);
+                             });
+  for (; it != cache_.end() && it->a == a && it->b == b; ++it)
+  {
+    if (it->contact.feature == feature)
+    {
+      return &*it;
+    }
+  }
+  return nullptr;
+}
+
+void World::publish_contacts()
+{
+  contacts_.resize(rows_.size());
+  for (std::size_t k = 0; k < rows_.size(); ++k)
+  {
+    const ContactRow& row = rows_[k];
+    WorldContact& c = contacts_[k];
+    c.a = ids_[row.a];
+    c.b = ids_[row.b];
+    c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
+    c.impulse = row.impulse;
+  }
+}
+
+double World::measure_penetration() const
+{
+  // The correction is linearised and pairs share bodies, so the depth left is
+  // measured again at the final poses rather than predicted.
+  double deepest = 0.0;
+  for (std::size_t k = 0; k < rows_.size(); ++k)
+  {
+    const ContactRow& row = rows_[k];
+    const bool new_pair = k == 0 || rows_[k - 1].a != row.a || rows_[k - 1].b != row.b;
+    if (!row.active || !new_pair)
+    {
+      continue;
+    }
+    Manifold m;
+    if (collide_pair(row.a, row.b, 0.0, m))
+    {
+      for (int p = 0; p < m.count; ++p)
+      {
+        deepest = std::max(deepest, m.points[p].penetration);
+      }
+    }
+  }
+  return deepest;
+}
+
+}  // namespace collision2d

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace collision2d
@@ -25,6 +26,12 @@ constexpr double kMinAspect = 0.4;
 constexpr double kMaxFaceOffset = 0.3;
 /// How far a chain's attachment direction wanders from the chain's axis (rad).
 constexpr double kChainWander = 0.5;
+/// A placement may overlap bodies other than its parent (more contacts), but
+/// only by this fraction of the smaller bounding radius, so piles stay
+/// physical rather than bodies sunk into each other; up to kPlacementTries
+/// hints are tried before the least overlapping one is kept.
+constexpr double kMaxIncidentalOverlap = 0.1;
+constexpr int kPlacementTries = 16;
 /// Spacing between the two clusters of a two-cluster scene, in units of the
 /// largest body size per body: far enough that they never touch.
 constexpr double kClusterSpacingPerBody = 4.0;
@@ -161,39 +168,77 @@ void attach(Draw& draw, const RandomSceneOptions& options, const Body& parent, B
   child.set_position(tip - nearest);
 }
 
+/// Deepest bounding-circle overlap of bodies[child] with bodies [begin, child)
+/// other than its parent, relative to the smaller radius.
+double incidental_overlap(const std::vector<Body>& bodies, std::size_t begin, std::size_t parent, std::size_t child)
+{
+  double worst = 0.0;
+  for (std::size_t k = begin; k < child; ++k)
+  {
+    if (k == parent)
+      continue;
+    const double reach = bodies[k].radius() + bodies[child].radius();
+    const double depth = reach - length(bodies[k].position() - bodies[child].position());
+    worst = std::max(worst, depth / std::min(bodies[k].radius(), bodies[child].radius()));
+  }
+  return worst;
+}
+
+/// Which earlier body the next one touches, and from which side.
+void choose_attachment(Draw& draw, RandomLayout layout, Vec2 axis, std::size_t begin, std::size_t child,
+                       std::size_t count, int attempt, std::size_t& parent, Vec2& hint)
+{
+  switch (layout)
+  {
+    case RandomLayout::Chain:
+    {
+      parent = child - 1;
+      const double wander = draw.uniform(-kChainWander, kChainWander);
+      hint = rotate(axis, std::cos(wander), std::sin(wander));
+      return;
+    }
+    case RandomLayout::Star:
+    {
+      // Evenly around the centre first; later attempts anywhere around it.
+      parent = begin;
+      const double step = 2.0 * kPi / static_cast<double>(std::max<std::size_t>(count - 1, 1));
+      const double angle = attempt == 0 ? angle_of(axis) + step * static_cast<double>(child - begin - 1)
+                                        : draw.uniform(-kPi, kPi);
+      hint = {std::cos(angle), std::sin(angle)};
+      return;
+    }
+    case RandomLayout::Pile:
+      parent = begin + static_cast<std::size_t>(draw.integer(0, static_cast<int>(child - begin) - 1));
+      hint = draw.direction();
+      return;
+  }
+}
+
 /// Lays out bodies [begin, end) as one cluster whose first body sits at `origin`.
 void lay_out_cluster(Draw& draw, const RandomSceneOptions& options, RandomLayout layout, Vec2 origin,
                      std::vector<Body>& bodies, std::size_t begin, std::size_t end)
 {
   bodies[begin].set_position(origin);
   const Vec2 axis = draw.direction();
-  const double star_step = 2.0 * kPi / static_cast<double>(std::max<std::size_t>(end - begin - 1, 1));
   for (std::size_t i = begin + 1; i < end; ++i)
   {
-    std::size_t parent = begin;
-    Vec2 hint;
-    switch (layout)
+    Body best = bodies[i];
+    double best_overlap = std::numeric_limits<double>::infinity();
+    for (int attempt = 0; attempt < kPlacementTries && best_overlap > kMaxIncidentalOverlap; ++attempt)
     {
-      case RandomLayout::Chain:
+      std::size_t parent = begin;
+      Vec2 hint;
+      choose_attachment(draw, layout, axis, begin, i, end - begin, attempt, parent, hint);
+      const double smaller = std::min(bodies[parent].radius(), bodies[i].radius());
+      attach(draw, options, bodies[parent], bodies[i], hint, draw.uniform(0.0, options.max_overlap) * smaller);
+      const double overlap = incidental_overlap(bodies, begin, parent, i);
+      if (overlap < best_overlap)
       {
-        parent = i - 1;
-        const double wander = draw.uniform(-kChainWander, kChainWander);
-        hint = rotate(axis, std::cos(wander), std::sin(wander));
-        break;
+        best_overlap = overlap;
+        best = bodies[i];
       }
-      case RandomLayout::Star:
-      {
-        const double angle = angle_of(axis) + star_step * static_cast<double>(i - begin - 1);
-        hint = {std::cos(angle), std::sin(angle)};
-        break;
-      }
-      case RandomLayout::Pile:
-        parent = begin + static_cast<std::size_t>(draw.integer(0, static_cast<int>(i - begin) - 1));
-        hint = draw.direction();
-        break;
     }
-    const double smaller = std::min(bodies[parent].radius(), bodies[i].radius());
-    attach(draw, options, bodies[parent], bodies[i], hint, draw.uniform(0.0, options.max_overlap) * smaller);
+    bodies[i] = best;
   }
 }
 

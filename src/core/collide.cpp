@@ -118,8 +118,7 @@ std::size_t face_of_max_separation(const Body& polygon, Vec2 local_point, double
   return best;
 }
 
-/// Normal (polygon frame) from the polygon to the disk, closest polygon point
-/// and overlap depth; false when the disk is out of reach.
+/// The polygon feature nearest a disk, in the polygon frame.
 struct DiskFeature
 {
   Vec2 normal;
@@ -129,6 +128,8 @@ struct DiskFeature
   std::size_t index = 0;
 };
 
+/// Normal from the polygon to the disk centre (polygon frame), closest polygon
+/// point and overlap depth; false when the disk is out of reach.
 bool nearest_feature_to_disk(const Body& polygon, Vec2 centre, double radius, double touch_tolerance,
                              DiskFeature& f)
 {

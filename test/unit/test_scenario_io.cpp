@@ -105,7 +105,8 @@ TEST(ParseScenario, RejectsMalformedInputNamingTheLine)
       {"negative restitution", "restitution -0.1\n", 1, "restitution must be in [0, 1]"},
       {"negative friction", kValid + "friction -0.2\n", 4, "friction must be >= 0, got -0.2"},
       {"duplicate restitution", kValid + "restitution 0.5\n", 4, "duplicate 'restitution' (first given on line 3)"},
-      {"duplicate friction", kValid + "friction 0.1\n\nfriction 0.1\n", 6, "duplicate 'friction' (first given on line 4)"},
+      {"duplicate friction", kValid + "friction 0.1\n\nfriction 0.1\n", 6,
+       "duplicate 'friction' (first given on line 4)"},
       {"one body", "body 1 1 0 0 0 0\nrestitution 0.5\n# end\n", 3, "at least 2 bodies, found 1"},
       {"no restitution", "body 1 1 0 0 0 0\nbody 1 1 3 0 0 0\n", 2, "missing 'restitution <e>'"},
   };

@@ -56,6 +56,16 @@ WorldSettings read_settings(const YAML::Node& node, const std::string& source, W
   s.time_of_impact = read_toggle(f, "time_of_impact", s.time_of_impact);
   s.warm_starting = read_toggle(f, "warm_starting", s.warm_starting);
   s.sleeping = read_toggle(f, "sleeping", s.sleeping);
+  s.warm_start_factor = f.non_negative("warm_start_factor", s.warm_start_factor);
+  if (s.warm_start_factor > 1.0)
+  {
+    f.fail_at("warm_start_factor", "must be in [0, 1]");
+  }
+  s.toi_displacement_fraction = f.positive("toi_displacement_fraction", s.toi_displacement_fraction);
+  s.sleep_linear_speed = f.non_negative("sleep_linear_speed", s.sleep_linear_speed);
+  s.sleep_angular_speed = f.non_negative("sleep_angular_speed", s.sleep_angular_speed);
+  s.sleep_time = f.non_negative("sleep_time", s.sleep_time);
+  s.sleep_auto_min_bodies = f.unsigned_integer("sleep_auto_min_bodies", s.sleep_auto_min_bodies);
   f.finish();
   return s;
 }

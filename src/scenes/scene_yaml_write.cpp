@@ -121,6 +121,12 @@ void write_settings(std::ostream& out, const WorldSettings& s)
   out << "  time_of_impact: " << toggle_name(s.time_of_impact) << "\n";
   out << "  warm_starting: " << toggle_name(s.warm_starting) << "\n";
   out << "  sleeping: " << toggle_name(s.sleeping) << "\n";
+  out << "  warm_start_factor: " << format_number(s.warm_start_factor) << "\n";
+  out << "  toi_displacement_fraction: " << format_number(s.toi_displacement_fraction) << "\n";
+  out << "  sleep_linear_speed: " << format_number(s.sleep_linear_speed) << "\n";
+  out << "  sleep_angular_speed: " << format_number(s.sleep_angular_speed) << "\n";
+  out << "  sleep_time: " << format_number(s.sleep_time) << "\n";
+  out << "  sleep_auto_min_bodies: " << s.sleep_auto_min_bodies << "\n";
 }
 
 /// Distinct materials in order of first use; bodies refer to them by index.

@@ -130,6 +130,12 @@ void expect_same_settings(const WorldSettings& a, const WorldSettings& b)
   EXPECT_EQ(a.time_of_impact, b.time_of_impact);
   EXPECT_EQ(a.warm_starting, b.warm_starting);
   EXPECT_EQ(a.sleeping, b.sleeping);
+  EXPECT_EQ(a.warm_start_factor, b.warm_start_factor);
+  EXPECT_EQ(a.toi_displacement_fraction, b.toi_displacement_fraction);
+  EXPECT_EQ(a.sleep_linear_speed, b.sleep_linear_speed);
+  EXPECT_EQ(a.sleep_angular_speed, b.sleep_angular_speed);
+  EXPECT_EQ(a.sleep_time, b.sleep_time);
+  EXPECT_EQ(a.sleep_auto_min_bodies, b.sleep_auto_min_bodies);
 }
 
 void expect_same_scene(const Scene& a, const Scene& b, double vertex_tolerance = 0.0)
@@ -403,6 +409,12 @@ TEST(SceneFiles, SaveThenLoadKeepsEverySettingTypeAndAwkwardNumber)
   s.time_of_impact = Toggle::On;
   s.warm_starting = Toggle::Off;
   s.sleeping = Toggle::On;
+  s.warm_start_factor = 0.85;
+  s.toi_displacement_fraction = 0.3;
+  s.sleep_linear_speed = 0.01;
+  s.sleep_angular_speed = 0.02;
+  s.sleep_time = 1.5;
+  s.sleep_auto_min_bodies = 12345678901ULL;
   Body disk(0.7, 0.123456789, {1e-300, -2.0 / 7.0}, {1.0 / 3.0, 0.0}, -4.5);
   disk.set_theta(1.0 / 9.0);
   scene.bodies.push_back(SceneBody{disk, Material{0.3, 0.2, 0.1}, "disk: with colon"});
@@ -474,6 +486,8 @@ TEST(SceneFiles, EveryErrorNamesTheLineAndTheKey)
       {"settings:\n  dt: 0.01\n  substeps: 0\n", 3, "settings.substeps", "at least 1"},
       {"settings:\n  friction: maybe\n", 2, "settings.friction", "auto, on or off"},
       {"settings:\n  dt: -1\n", 2, "settings.dt", "must be positive"},
+      {"settings:\n  warm_start_factor: 1.5\n", 2, "settings.warm_start_factor", "[0, 1]"},
+      {"settings:\n  gravity: [0, 1]\n", 2, "settings.gravity", "unknown key"},
       {"materials:\n  a: {restitution: 2}\n", 2, "materials.a.restitution", "[0, 1]"},
       {"materials:\n  a: {restitutoin: 0.5}\n", 2, "materials.a.restitutoin", "unknown key"},
       {"bodies:\n  - {shape: disk, mass: 1, radius: 1}\n  - {shape: disk, mass: -1, radius: 1}\n", 3,

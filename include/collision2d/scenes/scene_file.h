@@ -4,8 +4,9 @@
 //   name: pyramid
 //   gravity: [0, -9.81]                 # m/s^2
 //   settings: {dt: 0.0166, substeps: 4, velocity_iterations: 2, slop: 0.001,
-//              compliance: 1e-8, restitution_threshold: 0.001,
-//              rotation: auto, friction: on, ...}   # toggles: auto | on | off
+//              rotation: auto, friction: on, sleep_time: 0.5, ...}
+//              # every WorldSettings field but gravity, by its name;
+//              # toggles are auto | on | off
 //   materials:
 //     rough: {restitution: 0, static_friction: 0.6, kinetic_friction: 0.5}
 //   generate:                           # expanded first, in order

@@ -16,7 +16,7 @@ namespace
 {
 using test::make_contact;
 
-constexpr double kTight = 1e-12;   // relative agreement with a closed form
+constexpr double kTight = 1e-12;   // agreement with a closed form (m/s, rad/s, N s): round-off only
 constexpr double kRadius = 0.5;    // m
 constexpr double kOverlap = 1e-3;  // m
 

@@ -1,8 +1,10 @@
 // Deterministic random scenes of disks and convex polygons arranged in
 // multi-contact clusters (chains, stars, piles) with slight overlaps: the
 // shared input of the solver soak tests and the benchmarks. The same seed
-// gives the same scenes on every platform (the distributions are implemented
-// here, not taken from the standard library, whose mappings may differ).
+// gives the same draws with every standard library (the distributions are
+// mapped here from the raw engine output, not taken from <random>, whose
+// mappings differ between implementations); only libm's last-bit differences
+// in cos/sin/pow could move a body by round-off.
 #pragma once
 
 #include <cstdint>

@@ -137,7 +137,7 @@ Body read_shape(FieldReader& f, double mass, Vec2 position, double theta, Vec2 v
 SceneBody read_body(const YAML::Node& node, const std::string& path, const ParseContext& context)
 {
   FieldReader f(node, path, context.source);
-  SceneBody entry{Body(kDefaultMass, 1.0, Vec2{}, Vec2{}), Material{}, f.text("name", "")};
+  const std::string name = f.text("name", "");
   const BodyType type = read_body_type(f);
   if (type == BodyType::Dynamic)
   {
@@ -152,18 +152,18 @@ SceneBody read_body(const YAML::Node& node, const std::string& path, const Parse
   {
     f.fail_at(f.has("velocity") ? "velocity" : "omega", "a static body cannot move (use type: kinematic)");
   }
-  entry.material = read_material(f, "material", Material{}, context);
+  const Material material = read_material(f, "material", Material{}, context);
   try
   {
-    entry.body = read_shape(f, mass, position, theta, velocity, omega);
+    Body body = read_shape(f, mass, position, theta, velocity, omega);
+    body.set_type(type);
+    f.finish();
+    return SceneBody{body, material, name};
   }
   catch (const std::invalid_argument& error)
   {
     fail(context.source, f.line(), path, error.what());
   }
-  entry.body.set_type(type);
-  f.finish();
-  return entry;
 }
 
 void read_materials(const YAML::Node& node, ParseContext& context)

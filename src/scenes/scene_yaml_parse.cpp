@@ -212,8 +212,9 @@ Scene read_scene(const YAML::Node& root, const std::string& source)
   }
   if (top.has("generate"))
   {
-    for_each_item(top.node("generate"), "generate", source,
-                  [&](const YAML::Node& item, const std::string& path) { expand_generator(item, path, context, scene); });
+    for_each_item(top.node("generate"), "generate", source, [&](const YAML::Node& item, const std::string& path) {
+      expand_generator(item, path, context, scene);
+    });
   }
   if (top.has("bodies"))
   {

@@ -1,0 +1,31 @@
+// Solver and world settings: messages <-> core, validated with messages that
+// name the field ("settings: iterations = 0 must be in [1, 100000]").
+#pragma once
+
+#include <collision2d/Effects.h>
+#include <collision2d/SolverSettings.h>
+#include <collision2d/WorldConfig.h>
+
+#include "collision2d/contact_solver.h"
+#include "collision2d/world.h"
+
+namespace collision2d
+{
+namespace ros_interface
+{
+/// Upper bound on SolverSettings.iterations: a cap beyond it only lets one
+/// request hold a service thread for minutes.
+constexpr int kMaxSolverIterations = 100000;
+
+/// A solver configured as `msg` says (mode included). Throws InvalidRequest.
+ContactSolver solver_from_msg(const SolverSettings& msg);
+
+/// `base` with the fields `msg` carries replaced (the others keep their
+/// values). Throws InvalidRequest naming the field.
+WorldSettings world_settings_from_msg(const WorldConfig& msg, WorldSettings base = WorldSettings());
+WorldConfig world_settings_to_msg(const WorldSettings& settings);
+
+Effects effects_to_msg(const ActiveEffects& effects);
+
+}  // namespace ros_interface
+}  // namespace collision2d

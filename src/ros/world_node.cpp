@@ -1,0 +1,205 @@
+// Parameters, advertising and dynamic_reconfigure for the world node.
+#include "collision2d/ros/world_node.h"
+
+#include <string>
+
+#include <collision2d/WorldState.h>
+
+#include "collision2d/ros/reconfigure.h"
+#include "collision2d/ros/resolve_contacts.h"
+#include "collision2d/ros/settings_conversions.h"
+#include "collision2d/ros/validation.h"
+
+namespace collision2d
+{
+namespace ros_interface
+{
+namespace
+{
+constexpr int kDefaultThreads = 4;
+constexpr int kDefaultMaxBodies = 5000;
+constexpr int kDefaultMaxFramesPerCall = 10000;
+
+template <typename T>
+T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fallback)
+{
+  T value = fallback;
+  handle.param(name, value, fallback);
+  if (!(value > T{0}))
+  {
+    ROS_WARN("~%s must be > 0; using %s", name.c_str(), std::to_string(fallback).c_str());
+    return fallback;
+  }
+  return value;
+}
+
+WorldServiceOptions options_from_params(const ::ros::NodeHandle& handle)
+{
+  WorldServiceOptions options;
+  options.max_bodies = static_cast<std::size_t>(positive_param(handle, "max_bodies", kDefaultMaxBodies));
+  options.max_frames_per_call =
+      static_cast<std::uint32_t>(positive_param(handle, "max_frames_per_call", kDefaultMaxFramesPerCall));
+  handle.param<std::string>("scenes_dir", options.scenes_dir, COLLISION2D_DEFAULT_SCENES_DIR);
+  handle.param<std::string>("frame_id", options.frame_id, "map");
+  return options;
+}
+
+/// roscpp service callbacks return false only when no response should be
+/// sent; every collision2d failure is a response with success = false.
+template <typename Service, typename Handler>
+::ros::ServiceServer advertise(::ros::NodeHandle& handle, const std::string& name, Handler handler)
+{
+  using Request = typename Service::Request;
+  using Response = typename Service::Response;
+  return handle.advertiseService<Request, Response>(name, [handler](Request& request, Response& response) {
+    handler(request, response);
+    return true;
+  });
+}
+
+}  // namespace
+
+WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHandle& private_handle)
+  : node_handle_(node_handle)
+  , private_handle_(private_handle)
+  , threads_(positive_param(private_handle, "threads", kDefaultThreads))
+  , rate_(0.0)
+  , world_(options_from_params(private_handle))
+{
+  private_handle_.param("rate", rate_, 0.0);
+  state_publisher_ = node_handle_.advertise<WorldState>("world_state", 1, /*latch=*/true);
+  world_.set_change_listener([this](const WorldState& state) { state_publisher_.publish(state); });
+
+  std::string scene;
+  private_handle_.param<std::string>("scene", scene, "");
+  if (!scene.empty())
+  {
+    try
+    {
+      world_.load(scene);
+    }
+    catch (const std::exception& e)
+    {
+      ROS_ERROR("initial scene not loaded, starting with an empty world: %s", e.what());
+    }
+  }
+  advertise_services();
+  start_reconfigure();
+  start_timer();
+}
+
+void WorldNode::spin()
+{
+  ::ros::AsyncSpinner spinner(threads_);
+  spinner.start();
+  ::ros::waitForShutdown();
+}
+
+void WorldNode::advertise_services()
+{
+  ::ros::NodeHandle& nh = node_handle_;
+  services_.push_back(advertise<ResolveContacts>(nh, "resolve_contacts", [this](auto& request, auto& response) {
+    resolve_contacts(request, solver_settings(), world_.options().max_bodies, response);
+  }));
+  services_.push_back(advertise<StepWorld>(
+      nh, "step_world", [this](auto& request, auto& response) { world_.step(request, response); }));
+  services_.push_back(advertise<GetWorld>(
+      nh, "get_world", [this](auto&, auto& response) { world_.get_world(response); }));
+  services_.push_back(advertise<AddBody>(
+      nh, "add_body", [this](auto& request, auto& response) { world_.add_body(request, response); }));
+  services_.push_back(advertise<RemoveBody>(
+      nh, "remove_body", [this](auto& request, auto& response) { world_.remove_body(request, response); }));
+  // Replacing the world brings the new world's settings, which
+  // dynamic_reconfigure then shows.
+  services_.push_back(advertise<LoadScene>(nh, "load_scene", [this](auto& request, auto& response) {
+    world_.load_scene(request, response);
+    show_world_settings();
+  }));
+  services_.push_back(advertise<SetWorld>(nh, "set_world", [this](auto& request, auto& response) {
+    world_.set_world(request, response);
+    show_world_settings();
+  }));
+  services_.push_back(advertise<std_srvs::Trigger>(nh, "reset_world", [this](auto&, auto& response) {
+    world_.reset(response);
+    show_world_settings();
+  }));
+}
+
+void WorldNode::start_reconfigure()
+{
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<Collision2dConfig>>(reconfigure_mutex_, private_handle_);
+  // The first callback carries the parameters (config/collision2d.yaml): it
+  // sets the solver settings, but the world keeps its scene's settings.
+  reconfigure_->setCallback([this](Collision2dConfig& config, std::uint32_t level) { on_reconfigure(config, level); });
+  reconfigure_started_ = true;
+  show_world_settings();
+}
+
+void WorldNode::start_timer()
+{
+  if (rate_ <= 0.0)
+  {
+    return;  // steps only on request
+  }
+  timer_ = node_handle_.createWallTimer(::ros::WallDuration(1.0 / rate_), [this](const ::ros::WallTimerEvent&) {
+    try
+    {
+      world_.step_frame();
+    }
+    catch (const std::exception& e)
+    {
+      ROS_ERROR_THROTTLE(1.0, "free-running step failed: %s", e.what());
+    }
+  });
+}
+
+void WorldNode::on_reconfigure(Collision2dConfig& config, std::uint32_t level)
+{
+  if (level & kSolverLevel)
+  {
+    const SolverSettings settings = solver_settings_from_config(config);
+    try
+    {
+      solver_from_msg(settings);  // validates
+      std::lock_guard<std::mutex> lock(solver_mutex_);
+      solver_settings_ = settings;
+    }
+    catch (const InvalidRequest& e)
+    {
+      ROS_ERROR("solver settings not changed: %s", e.what());
+    }
+  }
+  if (reconfigure_started_ && (level & kWorldLevel))
+  {
+    try
+    {
+      world_.set_settings(world_settings_from_config(config, world_.settings()));
+    }
+    catch (const InvalidRequest& e)
+    {
+      ROS_ERROR("world settings not changed: %s", e.what());
+      world_settings_to_config(world_.settings(), config);
+    }
+  }
+  config_ = config;
+}
+
+void WorldNode::show_world_settings()
+{
+  if (!reconfigure_)
+  {
+    return;
+  }
+  boost::recursive_mutex::scoped_lock lock(reconfigure_mutex_);
+  world_settings_to_config(world_.settings(), config_);
+  reconfigure_->updateConfig(config_);
+}
+
+SolverSettings WorldNode::solver_settings() const
+{
+  std::lock_guard<std::mutex> lock(solver_mutex_);
+  return solver_settings_;
+}
+
+}  // namespace ros_interface
+}  // namespace collision2d

@@ -151,9 +151,11 @@ int main(int argc, char** argv)
   if (!args.csv)
   {
     std::printf("\nms/step: median wall time of one frame (dt = the scene's) over %d repetitions of %g s "
-                "simulated.\nspeedup: all-On time / Auto time, same run. drift: stacks only (bodies starting at "
-                "rest in contact). KE error: conservative scenes only (no gravity, e = 1, mu = 0).\n",
-                args.options.repetitions, args.options.seconds);
+                "simulated.\nspeedup: all-On time / Auto time in the same run; all On forces every physics effect "
+                "on, sleeping stays as the scene sets it.\ndrift (after %g s) and max pen: one Auto run. drift: "
+                "stacks only (bodies starting at rest in contact). KE error: conservative scenes only (no gravity, "
+                "e = 1, mu = 0).\n",
+                args.options.repetitions, args.options.seconds, args.options.settle_seconds);
   }
   return 0;
 }

@@ -96,6 +96,18 @@ std::string effect_letters(const ActiveEffects& e)
   return s;
 }
 
+/// A table cell: "-" where the measure does not apply (NaN).
+std::string cell(double value)
+{
+  if (std::isnan(value))
+  {
+    return "-";
+  }
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.4g", value);
+  return text;
+}
+
 void print_header(bool csv)
 {
   if (csv)
@@ -121,9 +133,9 @@ void print_row(const SceneMetrics& m, bool csv)
                 m.ms_per_step_on, speedup, drift, m.max_penetration, energy, effect_letters(m.auto_effects).c_str());
     return;
   }
-  std::printf("%-16s %6zu %10.4f %10.4f %8.2f %10.4g %9.4g %10.3g %s\n", m.name.c_str(), m.bodies,
-              m.ms_per_step_auto, m.ms_per_step_on, speedup, drift * kMillimetresPerMetre,
-              m.max_penetration * kMillimetresPerMetre, energy, effect_letters(m.auto_effects).c_str());
+  std::printf("%-16s %6zu %10.4f %10.4f %8.2f %10s %9.4g %10s %s\n", m.name.c_str(), m.bodies, m.ms_per_step_auto,
+              m.ms_per_step_on, speedup, cell(drift * kMillimetresPerMetre).c_str(),
+              m.max_penetration * kMillimetresPerMetre, cell(energy).c_str(), effect_letters(m.auto_effects).c_str());
 }
 
 }  // namespace

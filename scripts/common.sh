@@ -21,14 +21,17 @@ SYSTEM_PACKAGES=(cmake g++ libeigen3-dev libgtest-dev libyaml-cpp-dev)
 # ROS from Debian's own archive (Debian 12 and similar: ROS lives in /usr).
 DEBIAN_ROS_PACKAGES=(
   catkin ros-core-dev ros-message-generation ros-message-runtime
-  libstd-msgs-dev libgeometry-msgs-dev libvisualization-msgs-dev
-  python3-rostest librostest-dev catkin-lint)
+  libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
+  python3-rospy python3-rosservice python3-rostest librostest-dev catkin-lint)
 # The same for ROS Noetic in /opt/ros/noetic, used when rosdep cannot resolve
 # package.xml (rosdep missing or never initialised).
 NOETIC_ROS_PACKAGES=(
   ros-noetic-catkin ros-noetic-roscpp ros-noetic-message-generation
-  ros-noetic-message-runtime ros-noetic-std-msgs ros-noetic-geometry-msgs
-  ros-noetic-visualization-msgs ros-noetic-rostest python3-catkin-lint)
+  ros-noetic-message-runtime ros-noetic-std-msgs ros-noetic-std-srvs
+  ros-noetic-geometry-msgs ros-noetic-visualization-msgs
+  ros-noetic-dynamic-reconfigure ros-noetic-rospy ros-noetic-rosservice
+  ros-noetic-rostest python3-catkin-lint)
 
 # ---------------------------------------------------------------------------
 log() { printf '[collision2d] %s\n' "$*" >&2; }

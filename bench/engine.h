@@ -1,0 +1,67 @@
+// One scene built in one physics engine (ours or a peer), advanced frame by
+// frame and read back body by body in the scene's order, so that every
+// measurement in the benchmarks is computed the same way for every engine.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "collision2d/scene.h"
+
+namespace collision2d
+{
+namespace bench
+{
+struct BodyState
+{
+  Vec2 position;
+  double theta = 0.0;
+  Vec2 velocity;
+  double omega = 0.0;
+};
+
+enum class EngineKind
+{
+  Collision2d,
+  Box2d,
+  Chipmunk
+};
+
+/// How a peer is configured. Defaults: the engine's own recommended values
+/// (one step per frame, its iteration counts, slop and sleeping). Matched:
+/// the substeps, velocity iterations and slop of `settings`, sleeping off.
+/// Ours always runs with `settings` exactly.
+enum class PeerVariant
+{
+  Defaults,
+  Matched
+};
+
+struct EngineConfig
+{
+  EngineKind kind = EngineKind::Collision2d;
+  PeerVariant variant = PeerVariant::Matched;
+  WorldSettings settings;  ///< ours; peers take dt (always) and the matched knobs
+};
+
+class Engine
+{
+public:
+  virtual ~Engine() = default;
+  /// Advances one frame of settings.dt.
+  virtual void step_frame() = 0;
+  /// State of scene.bodies[index].
+  virtual BodyState state(std::size_t index) const = 0;
+};
+
+/// Throws std::runtime_error when the peer was not found at build time.
+std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineConfig& config);
+/// Whether make_engine can build this kind in this build.
+bool engine_available(EngineKind kind);
+
+std::string engine_name(EngineKind kind);
+std::string variant_name(PeerVariant variant);
+
+}  // namespace bench
+}  // namespace collision2d

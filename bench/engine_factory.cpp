@@ -1,0 +1,79 @@
+// Dispatch to ours or to a peer; peers exist only when CMake found them.
+#include <stdexcept>
+
+#include "engine.h"
+#ifdef COLLISION2D_HAVE_BOX2D
+#include "peers/box2d_engine.h"
+#endif
+#ifdef COLLISION2D_HAVE_CHIPMUNK
+#include "peers/chipmunk_engine.h"
+#endif
+
+namespace collision2d
+{
+namespace bench
+{
+std::unique_ptr<Engine> make_collision2d_engine(const Scene& scene, const WorldSettings& settings);
+
+bool engine_available(EngineKind kind)
+{
+  switch (kind)
+  {
+    case EngineKind::Collision2d:
+      return true;
+    case EngineKind::Box2d:
+#ifdef COLLISION2D_HAVE_BOX2D
+      return true;
+#else
+      return false;
+#endif
+    case EngineKind::Chipmunk:
+#ifdef COLLISION2D_HAVE_CHIPMUNK
+      return true;
+#else
+      return false;
+#endif
+  }
+  return false;
+}
+
+std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineConfig& config)
+{
+  switch (config.kind)
+  {
+    case EngineKind::Collision2d:
+      return make_collision2d_engine(scene, config.settings);
+#ifdef COLLISION2D_HAVE_BOX2D
+    case EngineKind::Box2d:
+      return make_box2d_engine(scene, config);
+#endif
+#ifdef COLLISION2D_HAVE_CHIPMUNK
+    case EngineKind::Chipmunk:
+      return make_chipmunk_engine(scene, config);
+#endif
+    default:
+      throw std::runtime_error(engine_name(config.kind) + " was not found when this benchmark was built");
+  }
+}
+
+std::string engine_name(EngineKind kind)
+{
+  switch (kind)
+  {
+    case EngineKind::Collision2d:
+      return "collision2d";
+    case EngineKind::Box2d:
+      return "box2d";
+    case EngineKind::Chipmunk:
+      return "chipmunk";
+  }
+  return "?";
+}
+
+std::string variant_name(PeerVariant variant)
+{
+  return variant == PeerVariant::Defaults ? "defaults" : "matched";
+}
+
+}  // namespace bench
+}  // namespace collision2d

@@ -1,0 +1,134 @@
+// collision2d_scaling_bench: time per frame and peak memory for one gas-like
+// scene of n scattered disks (scenes::elastic_gas), one size per process so
+// that the peak resident set (VmHWM) belongs to that size alone.
+//
+//   collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk] [--reps R] [--header]
+//
+// Prints one CSV row: engine,bodies,frames,ms_per_step,vmhwm_kib.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "collision2d/scenes/standard_scenes.h"
+#include "engine.h"
+#include "timing.h"
+
+namespace
+{
+using namespace collision2d;
+using namespace collision2d::bench;
+
+constexpr int kWarmupFrames = 3;          // first frames build caches and scratch
+constexpr double kFrameBudget = 2e4;      // body-frames per repetition: ~constant work per size
+constexpr int kMinFrames = 3;
+constexpr int kMaxFrames = 120;
+constexpr int kDefaultRepetitions = 5;
+
+struct Arguments
+{
+  long bodies = 0;
+  EngineKind engine = EngineKind::Collision2d;
+  int repetitions = kDefaultRepetitions;
+  bool header = false;
+};
+
+[[noreturn]] void usage(const std::string& problem)
+{
+  std::fprintf(stderr,
+               "%s\nusage: collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk] [--reps R] "
+               "[--header]\n",
+               problem.c_str());
+  std::exit(2);
+}
+
+EngineKind parse_engine(const std::string& name)
+{
+  for (EngineKind kind : {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk})
+  {
+    if (engine_name(kind) == name)
+    {
+      return kind;
+    }
+  }
+  usage("unknown engine '" + name + "'");
+}
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  Arguments args;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string flag = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (flag == "--bodies" && has_value)
+      args.bodies = std::atol(argv[++i]);
+    else if (flag == "--engine" && has_value)
+      args.engine = parse_engine(argv[++i]);
+    else if (flag == "--reps" && has_value)
+      args.repetitions = std::atoi(argv[++i]);
+    else if (flag == "--header")
+      args.header = true;
+    else
+      usage("unknown or incomplete argument: " + flag);
+  }
+  if (args.header)
+    return args;
+  if (args.bodies < 1 || args.repetitions < 1)
+    usage("--bodies and --reps must be positive");
+  return args;
+}
+
+/// Peak resident set of this process (kB as /proc reports it, i.e. KiB); -1 if unreadable.
+long peak_resident_kib()
+{
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key)
+  {
+    if (key == "VmHWM:")
+    {
+      long kib = -1;
+      status >> kib;
+      return kib;
+    }
+    status.ignore(4096, '\n');
+  }
+  return -1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  const Arguments args = parse_arguments(argc, argv);
+  if (args.header)
+  {
+    std::printf("engine,bodies,frames,ms_per_step,vmhwm_kib\n");
+    return 0;
+  }
+  try
+  {
+    const Scene scene = scenes::elastic_gas(static_cast<int>(args.bodies));
+    EngineConfig config{args.engine, PeerVariant::Defaults, scene.settings};
+    std::unique_ptr<Engine> engine = make_engine(scene, config);
+    time_frames(*engine, kWarmupFrames);
+    const int frames = std::clamp(static_cast<int>(kFrameBudget / args.bodies), kMinFrames, kMaxFrames);
+    std::vector<double> ms;
+    for (int r = 0; r < args.repetitions; ++r)
+    {
+      ms.push_back(time_frames(*engine, frames));
+    }
+    std::printf("%s,%ld,%d,%.6g,%ld\n", engine_name(args.engine).c_str(), args.bodies, frames, median(ms),
+                peak_resident_kib());
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "collision2d_scaling_bench: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

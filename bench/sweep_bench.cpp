@@ -1,0 +1,189 @@
+// collision2d_sweep_bench: the speed/accuracy sweep of issue 6. Prints CSV.
+//
+//   collision2d_sweep_bench world|peers|stand [--quick] [--scene NAME]... [--reps N] [--out FILE]
+//   collision2d_sweep_bench solver [--quick] [--scenes N] [--out FILE]
+//
+// CSV goes to FILE (default stdout): the packaged Chipmunk prints a banner
+// on stdout when its first space is made, which must not land in the CSV.
+//
+// world:  our World over one-knob-at-a-time sweeps (iterations, substeps,
+//         slop, warm starting, time of impact, solver mode when the world has
+//         one) and a substeps x iterations grid;
+// peers:  Box2D and Chipmunk with their defaults and matched to a few of our
+//         points, and ours at the same points, all in this one process;
+// stand:  the stacks for 60 s at a few settings (the drift target);
+// solver: the instantaneous ContactSolver on random clusters per mode,
+//         iteration cap and tolerance: Newton-target and complementarity residuals.
+// Progress goes to stderr; docs/performance.md explains every column.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "metrics.h"
+#include "sweep.h"
+
+namespace
+{
+using namespace collision2d;
+using namespace collision2d::bench;
+
+constexpr std::size_t kSolverScenes = 400;       // random clusters per solver point
+constexpr std::size_t kQuickSolverScenes = 100;
+constexpr std::uint64_t kSolverSeed = 20240601;  // the same draws for every point
+constexpr int kQuickRepetitions = 3;
+
+struct Arguments
+{
+  std::string part;
+  bool quick = false;
+  std::vector<std::string> scenes;  ///< empty: all
+  RunOptions options;
+  std::size_t solver_scenes = kSolverScenes;
+  std::string out;  ///< empty: stdout
+};
+
+FILE* g_csv = stdout;
+
+[[noreturn]] void usage(const std::string& problem)
+{
+  std::fprintf(stderr,
+               "%s\nusage: collision2d_sweep_bench world|peers|stand|solver [--quick] [--scene NAME]... "
+               "[--reps N] [--scenes N] [--out FILE]\n",
+               problem.c_str());
+  std::exit(2);
+}
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  if (argc < 2)
+  {
+    usage("missing part");
+  }
+  Arguments args;
+  args.part = argv[1];
+  bool reps_given = false;
+  bool scenes_given = false;
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string flag = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (flag == "--quick")
+      args.quick = true;
+    else if (flag == "--scene" && has_value)
+      args.scenes.push_back(argv[++i]);
+    else if (flag == "--reps" && has_value)
+      reps_given = (args.options.repetitions = std::atoi(argv[++i])) > 0;
+    else if (flag == "--out" && has_value)
+      args.out = argv[++i];
+    else if (flag == "--scenes" && has_value)
+      scenes_given = (args.solver_scenes = std::strtoul(argv[++i], nullptr, 10)) > 0;
+    else
+      usage("unknown or incomplete argument: " + flag);
+  }
+  if (args.quick && !reps_given)
+    args.options.repetitions = kQuickRepetitions;
+  if (args.quick && !scenes_given)
+    args.solver_scenes = kQuickSolverScenes;
+  if (args.options.repetitions < 1 || args.solver_scenes < 1)
+    usage("--reps and --scenes must be positive");
+  return args;
+}
+
+void print_run_header()
+{
+  std::fprintf(g_csv, "scene,kind,engine,variant,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
+              "solver_mode,seconds,ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
+              "incline_accel_error,tunnelled,error,error_name\n");
+}
+
+void print_run(const BenchScene& scene, const RunSpec& run, double seconds, const RunMetrics& m)
+{
+  const WorldSettings& s = run.config.settings;
+  const bool peer_defaults = run.config.kind != EngineKind::Collision2d && run.config.variant == PeerVariant::Defaults;
+  const bool ours = run.config.kind == EngineKind::Collision2d;
+  // A peer's defaults use its own steps and iterations: leave ours out.
+  const std::string substeps = peer_defaults ? "" : std::to_string(s.substeps);
+  const std::string iterations = peer_defaults ? "" : std::to_string(s.velocity_iterations);
+  std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
+              scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
+              variant_name(run.config.variant).c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
+              iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
+              ours ? toggle_name(s.time_of_impact).c_str() : "", ours ? world_mode_name(s).c_str() : "", seconds,
+              m.ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error, m.incline_error,
+              m.tunnelled, m.error, error_name(scene.kind).c_str());
+  std::fflush(g_csv);
+}
+
+std::vector<RunSpec> runs_for(const std::string& part, const BenchScene& scene, bool quick)
+{
+  if (part == "world")
+    return world_runs(scene, quick);
+  if (part == "peers")
+    return peer_runs(scene, quick);
+  return scene.name == "pyramid" || scene.name == "column" ? stand_runs(scene, quick) : std::vector<RunSpec>{};
+}
+
+void run_scenes(const Arguments& args)
+{
+  const std::vector<std::string> names = args.scenes.empty() ? bench_scene_names() : args.scenes;
+  print_run_header();
+  for (const std::string& name : names)
+  {
+    const BenchScene scene = make_bench_scene(name);
+    for (const RunSpec& run : runs_for(args.part, scene, args.quick))
+    {
+      RunOptions options = args.options;
+      options.seconds = run.seconds;
+      std::fprintf(stderr, "%s %s %s %s=%s\n", args.part.c_str(), name.c_str(), engine_name(run.config.kind).c_str(),
+                   run.knob.c_str(), run.value.c_str());
+      const RunMetrics m = measure_run(scene, run.config, options);
+      print_run(scene, run, run.seconds > 0.0 ? run.seconds : scene.seconds, m);
+    }
+  }
+}
+
+void run_solver(const Arguments& args)
+{
+  std::fprintf(g_csv, "mode,iterations,tolerance,max_mass_ratio,scenes,contacts,us_per_solve,max_target_residual,"
+              "max_complementarity,mean_complementarity,max_coulomb_excess,converged_fraction,exact_fallbacks\n");
+  for (const SolverSweepPoint& p : solver_points(args.quick))
+  {
+    std::fprintf(stderr, "solver %s it=%d tol=%g ratio=%g\n", mode_name(p.mode).c_str(), p.iterations, p.tolerance,
+                 p.max_mass_ratio);
+    const SolverMetrics m = measure_solver(p, args.solver_scenes, kSolverSeed);
+    std::fprintf(g_csv, "%s,%d,%g,%g,%zu,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%zu\n", mode_name(p.mode).c_str(), p.iterations,
+                p.tolerance, p.max_mass_ratio, m.scenes, m.contacts, m.us_per_solve, m.max_target_residual,
+                m.max_complementarity, m.mean_complementarity, m.max_coulomb_excess, m.converged_fraction,
+                m.exact_fallbacks);
+    std::fflush(g_csv);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  const Arguments args = parse_arguments(argc, argv);
+  if (!args.out.empty() && (g_csv = std::fopen(args.out.c_str(), "w")) == nullptr)
+  {
+    usage("cannot write " + args.out);
+  }
+  try
+  {
+    if (args.part == "solver")
+      run_solver(args);
+    else if (args.part == "world" || args.part == "peers" || args.part == "stand")
+      run_scenes(args);
+    else
+      usage("unknown part '" + args.part + "'");
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "collision2d_sweep_bench: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

@@ -94,6 +94,7 @@ private:
   Eigen::RowVectorXd pivot_row_;
   Eigen::VectorXd pivot_column_;  ///< divisor of the ratio and lexicographic tests
   Eigen::MatrixXd basis_;
+  Eigen::VectorXd refinement_;  ///< residual of the terminal basis solve
   std::vector<int> basic_;  ///< variable index basic in each row
   std::vector<int> candidates_;  ///< rows tied so far in a ratio test
 };

@@ -1,0 +1,49 @@
+// Exact contact solve (SolverMode::Exact): every coupled cluster of contacts
+// is one linear complementarity problem solved by pivoting (lcp.h), so the
+// fixed point that the iterative solver approaches is found directly.
+#pragma once
+
+#include <vector>
+
+#include "collision2d/body.h"
+#include "collision2d/contact.h"
+#include "collision2d/contact_solver.h"
+
+namespace collision2d
+{
+/// Velocity solve with the same contract as ContactSolver::solve (SPEC
+/// section 2): Newton targets e * (approach speed) fixed from the velocities
+/// before the solve (0 for separating or resting contacts), normal impulses
+/// that only push, complementarity against those targets, and Coulomb
+/// friction, which in 2D is exact: per contact the cone is two half-planes,
+/// modelled with lambda_t+ >= 0, lambda_t- >= 0 and a sliding-speed slack
+/// beta >= 0 (Stewart-Trinkle / Anitescu-Potra form). mu = 0 keeps only the
+/// normal rows. Impulses act at the contact points, equal and opposite.
+///
+/// Clusters are the connected components of contacts over dynamic bodies
+/// (bodies with inverse mass 0 do not couple); contacts between two bodies
+/// with inverse mass 0 get no impulse.
+///
+/// Failure and fallback: if pivoting fails on any cluster (an infeasible
+/// problem such as a body pinched between approaching walls, the pivot cap,
+/// or a numerically unusable basis), NO body is modified, `impulses` (if
+/// given) is all zeros, and the report has `exact_fallback = true` and
+/// `converged = false`. The caller then runs the iterative solver on the same
+/// untouched input and keeps `exact_fallback = true` in its report.
+///
+/// Report on success: `iterations` = pivots of the cluster that needed the
+/// most; `max_residual` (m/s) is recomputed from the final velocities and
+/// impulses: per contact the worst of target violation, push-only violation,
+/// normal complementarity, Coulomb cone violation, stick/slide
+/// complementarity and friction direction, impulses converted to speeds by
+/// the contact's effective inverse mass. `converged` is true when that
+/// residual is at most tol times the cluster's velocity scale (the largest
+/// contact speed before or after, or impulse over effective mass, so that
+/// extreme mass ratios are judged against the speeds they actually produce).
+///
+/// e in [0, 1], mu >= 0 and tol > 0 are expected (ContactSolver validates
+/// them); `impulses` is resized to contacts.size().
+SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& contacts, double e, double mu,
+                        double tol, std::vector<ContactImpulse>* impulses = nullptr);
+
+}  // namespace collision2d

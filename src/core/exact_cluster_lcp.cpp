@@ -1,0 +1,176 @@
+#include "exact_cluster_lcp.h"
+
+#include <cmath>
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+constexpr int kDofPerBody = 3;  // vx, vy, omega
+
+bool is_dynamic(const BodyVelocity& body) { return body.inv_mass > 0.0; }
+
+/// Gives each dynamic body of the cluster its block of jacobian columns;
+/// returns the number of such bodies.
+int number_cluster_bodies(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                          const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+{
+  int count = 0;
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    for (std::size_t body : {rows[r].a, rows[r].b})
+      if (is_dynamic(state[body]) && lcp.local_body[body] < 0)
+        lcp.local_body[body] = kDofPerBody * count++;
+  return count;
+}
+
+void forget_cluster_bodies(const std::vector<ContactRow>& rows, ClusterRange cluster, ClusterLcp& lcp)
+{
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    lcp.local_body[rows[r].a] = -1;
+    lcp.local_body[rows[r].b] = -1;
+  }
+}
+
+/// Adds sign * (dir, r x dir) to jacobian row `row` at the body's columns.
+void add_jacobian_entry(ClusterLcp& lcp, Eigen::Index row, std::size_t body, double sign, Vec2 dir, Vec2 r)
+{
+  const int column = lcp.local_body[body];
+  if (column < 0)
+    return;  // static or kinematic: its velocity never changes
+  lcp.jacobian(row, column) = sign * dir.x;
+  lcp.jacobian(row, column + 1) = sign * dir.y;
+  lcp.jacobian(row, column + 2) = sign * cross(r, dir);
+}
+
+void fill_inverse_masses(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                         const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+{
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    for (std::size_t body : {rows[r].a, rows[r].b})
+    {
+      const int column = lcp.local_body[body];
+      if (column < 0)
+        continue;
+      lcp.body_inverse_mass(column) = state[body].inv_mass;
+      lcp.body_inverse_mass(column + 1) = state[body].inv_mass;
+      lcp.body_inverse_mass(column + 2) = state[body].inv_inertia;
+    }
+}
+
+/// G = J W J^T over the cluster's normal and tangent directions.
+void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                       const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+{
+  const Eigen::Index contacts = static_cast<Eigen::Index>(cluster.end - cluster.begin);
+  const int bodies = number_cluster_bodies(rows, cluster, state, lcp);
+  lcp.jacobian.setZero(2 * contacts, kDofPerBody * bodies);
+  lcp.body_inverse_mass.resize(kDofPerBody * bodies);
+  for (Eigen::Index i = 0; i < contacts; ++i)
+  {
+    const ContactRow& row = rows[cluster.begin + i];
+    add_jacobian_entry(lcp, 2 * i, row.b, 1.0, row.normal, row.r_b);
+    add_jacobian_entry(lcp, 2 * i, row.a, -1.0, row.normal, row.r_a);
+    add_jacobian_entry(lcp, 2 * i + 1, row.b, 1.0, row.tangent, row.r_b);
+    add_jacobian_entry(lcp, 2 * i + 1, row.a, -1.0, row.tangent, row.r_a);
+  }
+  fill_inverse_masses(rows, cluster, state, lcp);
+  forget_cluster_bodies(rows, cluster, lcp);
+  lcp.delassus.noalias() = lcp.jacobian * lcp.body_inverse_mass.asDiagonal() * lcp.jacobian.transpose();
+}
+
+void assemble_frictionless(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                           const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+{
+  const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
+  lcp.M.resize(m, m);
+  lcp.q.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i)
+  {
+    const ContactRow& row = rows[cluster.begin + i];
+    const double s_i = 1.0 / std::sqrt(row.k_n);
+    for (Eigen::Index j = 0; j < m; ++j)
+      lcp.M(i, j) = lcp.delassus(2 * i, 2 * j) * s_i / std::sqrt(rows[cluster.begin + j].k_n);
+    lcp.q(i) = (dot(relative_velocity(row, state), row.normal) - row.target) * s_i;
+  }
+}
+
+void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                         const std::vector<BodyVelocity>& state, double mu, ClusterLcp& lcp)
+{
+  const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
+  const Eigen::Index k = unknowns_per_contact(mu);
+  lcp.M.setZero(k * m, k * m);
+  lcp.q.resize(k * m);
+  for (Eigen::Index i = 0; i < m; ++i)
+  {
+    const ContactRow& row = rows[cluster.begin + i];
+    const double s_i = 1.0 / std::sqrt(row.k_n);
+    const Eigen::Index n_i = k * i;  // then t+ at n_i + 1, t- at n_i + 2, beta at n_i + 3
+    for (Eigen::Index j = 0; j < m; ++j)
+    {
+      const double scale = s_i / std::sqrt(rows[cluster.begin + j].k_n);
+      const double g_nn = lcp.delassus(2 * i, 2 * j) * scale;
+      const double g_nt = lcp.delassus(2 * i, 2 * j + 1) * scale;
+      const double g_tn = lcp.delassus(2 * i + 1, 2 * j) * scale;
+      const double g_tt = lcp.delassus(2 * i + 1, 2 * j + 1) * scale;
+      const Eigen::Index n_j = k * j;
+      // Columns n, t+, t- of contact j act as +n, +t, -t impulses.
+      lcp.M.block<3, 3>(n_i, n_j) << g_nn, g_nt, -g_nt,  //
+          g_tn, g_tt, -g_tt,                              //
+          -g_tn, -g_tt, g_tt;
+    }
+    // beta + vt >= 0 and beta - vt >= 0; mu lambda_n - lambda_t+ - lambda_t- >= 0.
+    lcp.M(n_i + 1, n_i + 3) = 1.0;
+    lcp.M(n_i + 2, n_i + 3) = 1.0;
+    lcp.M(n_i + 3, n_i) = mu;
+    lcp.M(n_i + 3, n_i + 1) = -1.0;
+    lcp.M(n_i + 3, n_i + 2) = -1.0;
+
+    const Vec2 dv = relative_velocity(row, state);
+    const double vt = dot(dv, row.tangent);
+    lcp.q(n_i) = (dot(dv, row.normal) - row.target) * s_i;
+    lcp.q(n_i + 1) = vt * s_i;
+    lcp.q(n_i + 2) = -vt * s_i;
+    lcp.q(n_i + 3) = 0.0;
+  }
+}
+}  // namespace
+
+void assemble_cluster_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                          const std::vector<BodyVelocity>& state, double mu, ClusterLcp& lcp)
+{
+  assemble_delassus(rows, cluster, state, lcp);
+  if (mu > 0.0)
+    assemble_frictional(rows, cluster, state, mu, lcp);
+  else
+    assemble_frictionless(rows, cluster, state, lcp);
+}
+
+void store_cluster_impulses(const Eigen::VectorXd& z, double mu, ClusterRange cluster,
+                            std::vector<ContactRow>& rows)
+{
+  const int k = unknowns_per_contact(mu);
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    ContactRow& row = rows[r];
+    const Eigen::Index n_i = k * static_cast<Eigen::Index>(r - cluster.begin);
+    const double s = 1.0 / std::sqrt(row.k_n);
+    row.lambda_n = z(n_i) * s;
+    row.lambda_t = 0.0;
+    if (k == 1)
+      continue;
+    const double t_plus = z(n_i + 1) * s;
+    const double t_minus = z(n_i + 2) * s;
+    const bool sliding = z(n_i + 3) > 0.0;
+    if (sliding)
+      row.lambda_t = (t_plus >= t_minus ? 1.0 : -1.0) * mu * row.lambda_n;
+    else
+      row.lambda_t = t_plus - t_minus;
+  }
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,52 @@
+// Internal to the core: one coupled cluster of contact rows written as a
+// linear complementarity problem (for the exact solver mode).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "contact_rows.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// Work arrays for one cluster's LCP; kept across clusters so a solve call
+/// allocates only when a bigger cluster arrives.
+///
+/// Unknowns per contact c, in this order: lambda_n, lambda_t+, lambda_t-
+/// (>= 0, tangential impulse lambda_t+ - lambda_t-) and the sliding-speed
+/// slack beta (friction only). Complementary rows: vn - target, beta + vt,
+/// beta - vt, mu lambda_n - lambda_t+ - lambda_t-. Every unknown and row is
+/// scaled symmetrically by the contact's normal effective mass k_n (impulses
+/// times sqrt(k_n), speeds over sqrt(k_n)): the scaled Delassus block stays
+/// positive semidefinite with unit diagonal, the friction coupling stays
+/// skew, and extreme mass ratios do not spread the entries over many decades.
+struct ClusterLcp
+{
+  Eigen::MatrixXd jacobian;  ///< rows n, t per contact; 3 columns (vx, vy, w) per dynamic body
+  Eigen::VectorXd body_inverse_mass;  ///< diagonal of W matching the jacobian's columns
+  Eigen::MatrixXd delassus;           ///< J W J^T: velocity change per unit impulse
+  Eigen::MatrixXd M;
+  Eigen::VectorXd q;
+  std::vector<int> local_body;  ///< body index -> first jacobian column, -1 outside the cluster
+};
+
+/// Unknowns per contact: 1 without friction, 4 with.
+inline int unknowns_per_contact(double mu) { return mu > 0.0 ? 4 : 1; }
+
+/// Fills lcp.M and lcp.q for rows [cluster.begin, cluster.end) at the
+/// velocities in `state` (the pre-solve ones: targets are already fixed in
+/// the rows).
+void assemble_cluster_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                          const std::vector<BodyVelocity>& state, double mu, ClusterLcp& lcp);
+
+/// Writes the impulses of solution z into the rows' lambda_n and lambda_t.
+/// A sliding contact (beta > 0) is put exactly on the cone, |lambda_t| =
+/// mu lambda_n: the LCP says so, and the solve's round-off must not move it
+/// strictly inside, where the contact would count as sticking.
+void store_cluster_impulses(const Eigen::VectorXd& z, double mu, ClusterRange cluster,
+                            std::vector<ContactRow>& rows);
+
+}  // namespace detail
+}  // namespace collision2d

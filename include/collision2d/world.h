@@ -49,8 +49,15 @@ struct WorldSettings
   Toggle sleeping = Toggle::Auto;
 
   // Knobs of the individual effects (additions beyond SPEC section 3).
-  /// Fraction of the previous frame's impulses applied on a frame's first substep, [0, 1].
+  /// Fraction of the cached impulses applied when warm starting, [0, 1].
   double warm_start_factor = 1.0;
+  /// SPEC section 3 warm-starts only a frame's first substep (false gives
+  /// exactly that). The later substeps then start cold, and two Gauss-Seidel
+  /// passes cannot carry the weight of a tall stack from zero: a 20-box
+  /// column sinks metres into itself. With true (default) every later substep
+  /// also starts from the previous substep's impulses, matched the same way
+  /// by (body ids, feature).
+  bool warm_start_every_substep = true;
   /// A dynamic body is swept for time of impact when its displacement in one
   /// substep exceeds this fraction of (its inner radius + the smallest inner
   /// radius in the world); inner radius = radius of a disk, least centroid-to-face
@@ -110,6 +117,7 @@ struct WorldContact
   BodyId b = 0;
   Contact contact;  ///< indices a/b refer to positions in body_ids()
   ContactImpulse impulse;
+  bool sliding = false;  ///< friction was at its bound (the contact slips)
 };
 
 }  // namespace collision2d
@@ -175,9 +183,12 @@ private:
     double inv_inertia_b = 0.0;
     double normal_mass = 0.0;     ///< 1 / K_n without compliance (kg)
     double tangent_mass = 0.0;    ///< 1 / K_t (kg)
+    double pair_tangent_mass = 0.0;  ///< 1 / K_t at a two-point manifold's midpoint (kg)
     double target = 0.0;          ///< post-solve normal speed (m/s)
     double mu_s = 0.0;
     double mu_k = 0.0;
+    bool kinetic = false;         ///< slid in the previous substep: kinetic bound applies
+    bool sliding = false;         ///< friction at its bound in this solve
     ContactImpulse impulse;       ///< accumulated this substep (N s)
   };
 
@@ -198,7 +209,7 @@ private:
   bool sleeping_wanted() const;
   // world_step.cpp
   void step_frame(StepReport& report);
-  void substep(FrameEffects& effects, double h, bool first, StepReport& report);
+  void substep(FrameEffects& effects, double h, bool first, bool warm, StepReport& report);
   void integrate(FrameEffects& effects, double h, StepReport& report);
   // world_toi.cpp
   void refresh_inner_radii();
@@ -209,9 +220,9 @@ private:
   bool clamped(std::size_t i) const;
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;
-  void detect(bool warm, double h, StepReport& report);
+  void detect(const ActiveEffects& effects, bool warm, double h, StepReport& report);
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
-  void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale);
+  void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction);
   void carry_sleeping_pair(std::size_t i, std::size_t j);
   const WorldContact* find_cached(BodyId a, BodyId b, std::uint32_t feature) const;
   void publish_contacts();
@@ -220,13 +231,25 @@ private:
   void prepare_rows(const ActiveEffects& effects);
   double effective_inverse_mass(const ContactRow& row, Vec2 direction) const;
   Vec2 relative_velocity(const ContactRow& row) const;
-  void correct_positions(double h);
+  Vec2 relative_velocity_at(const ContactRow& row, Vec2 ra, Vec2 rb) const;
+  void correct_positions(double h, bool friction);
+  Vec2 integration_move(std::size_t i, Vec2 r) const;
+  void hold_static_friction(const ContactRow& first, const ContactRow& second);
+  double current_depth(const ContactRow& row) const;
+  void correct_point(const ContactRow& row, double depth, double softness);
   void displace(std::size_t i, double lambda, Vec2 n, Vec2 r, double inv_mass, double inv_inertia);
   void warm_start();
   void solve_velocities(bool friction);
   void solve_normal(ContactRow& row);
+  // world_block.cpp
+  void solve_pair(ContactRow& first, ContactRow& second, bool rough);
+  bool solve_stick_pair(ContactRow& first, ContactRow& second);
+  bool solve_normal_pair(ContactRow& first, ContactRow& second);
   void solve_friction(ContactRow& row);
+  void solve_friction_pair(ContactRow& first, ContactRow& second);
+  static double coulomb(ContactRow& row, double needed, double normal_impulse);
   void apply_impulse(const ContactRow& row, Vec2 impulse);
+  void apply_impulse_at(const ContactRow& row, Vec2 ra, Vec2 rb, Vec2 impulse);
   double velocity_residual() const;
   // world_sleep.cpp
   void update_sleep();
@@ -256,6 +279,10 @@ private:
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact this substep
   std::vector<ContactRow> rows_;
+  std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
+  std::vector<double> prev_theta_;
+  std::vector<Vec2> moved_;           ///< position correction applied this substep (m)
+  std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
   std::vector<WorldContact> cache_;   ///< previous frame's contacts, for warm starting
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
   std::vector<std::size_t> island_;   ///< union-find parents for sleeping

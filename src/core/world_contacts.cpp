@@ -42,7 +42,7 @@ bool World::is_mover(std::size_t i) const
   return false;
 }
 
-void World::detect(bool warm, double h, StepReport& report)
+void World::detect(const ActiveEffects& effects, bool warm, double h, StepReport& report)
 {
   const std::size_t n = bodies_.size();
   boxes_.resize(n);
@@ -71,7 +71,7 @@ void World::detect(bool warm, double h, StepReport& report)
     }
     const bool touch = clamped(i) || clamped(j);
     const double tolerance = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
-    add_manifold(i, j, tolerance, warm_scale);
+    add_manifold(i, j, tolerance, warm_scale, effects.friction);
   }
   for (const ContactRow& row : rows_)
   {
@@ -93,7 +93,7 @@ bool World::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifol
   return collide(a, b, m, tolerance);
 }
 
-void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale)
+void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction)
 {
   Manifold m;
   if (!collide_pair(i, j, tolerance, m))
@@ -115,14 +115,12 @@ void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double 
     row.penetration = m.points[k].penetration;
     row.feature = m.points[k].feature;
     row.count = m.count;
-    if (warm_scale > 0.0)
+    const WorldContact* cached = warm_scale > 0.0 || friction ? find_cached(ids_[i], ids_[j], row.feature) : nullptr;
+    if (cached != nullptr)
     {
-      const WorldContact* cached = find_cached(ids_[i], ids_[j], row.feature);
-      if (cached != nullptr)
-      {
-        row.impulse.normal = warm_scale * cached->impulse.normal;
-        row.impulse.tangent = warm_scale * cached->impulse.tangent;
-      }
+      row.impulse.normal = warm_scale * cached->impulse.normal;
+      row.impulse.tangent = warm_scale * cached->impulse.tangent;
+      row.kinetic = friction && cached->sliding;
     }
     rows_.push_back(row);
   }
@@ -150,6 +148,7 @@ void World::carry_sleeping_pair(std::size_t i, std::size_t j)
     row.feature = it->contact.feature;
     row.active = false;
     row.impulse = it->impulse;
+    row.sliding = it->sliding;
     rows_.push_back(row);
   }
 }
@@ -183,6 +182,7 @@ void World::publish_contacts()
     c.b = ids_[row.b];
     c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
     c.impulse = row.impulse;
+    c.sliding = row.sliding;
   }
 }
 

@@ -63,36 +63,36 @@ void World::step_frame(StepReport& report)
   {
     asleep_.assign(bodies_.size(), false);
   }
-  // Last frame's contacts become the warm-start cache; contacts_ is refilled
-  // by the last substep (swapping keeps both buffers' capacity).
-  cache_.swap(contacts_);
-  contacts_.clear();
   const double h = settings_.dt / settings_.substeps;
   for (int k = 0; k < settings_.substeps; ++k)
   {
-    substep(effects, h, k == 0, report);
+    // The contacts of the previous substep (or frame) become the cache that
+    // warm starting and the friction state read; swapping keeps both
+    // buffers' capacity.
+    cache_.swap(contacts_);
+    const bool warm = effects.warm_start_now && (k == 0 || settings_.warm_start_every_substep);
+    substep(effects, h, k == 0, warm, report);
+    publish_contacts();
+    cache_h_ = h;
   }
-  publish_contacts();
   if (effects.flags.sleeping)
   {
     update_sleep();
   }
-  cache_h_ = h;
   time_ += settings_.dt;
   ++frame_count_;
   ++report.frames;
   merge(report.active, effects.flags);
 }
 
-void World::substep(FrameEffects& effects, double h, bool first, StepReport& report)
+void World::substep(FrameEffects& effects, double h, bool first, bool warm, StepReport& report)
 {
   integrate(effects, h, report);
-  const bool warm = first && effects.warm_start_now;
-  detect(warm, h, report);
+  detect(effects.flags, warm, h, report);
   prepare_rows(effects.flags);
   if (effects.flags.position_correction)
   {
-    correct_positions(h);
+    correct_positions(h, effects.flags.friction);
   }
   if (warm)
   {
@@ -112,8 +112,12 @@ void World::substep(FrameEffects& effects, double h, bool first, StepReport& rep
 void World::integrate(FrameEffects& effects, double h, StepReport& report)
 {
   const Vec2 gravity_kick = settings_.gravity * h;
+  prev_position_.resize(bodies_.size());
+  prev_theta_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
+    prev_position_[i] = bodies_[i].position();
+    prev_theta_[i] = bodies_[i].theta();
     if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
     {
       bodies_[i].set_velocity(bodies_[i].velocity() + gravity_kick);

@@ -1,0 +1,170 @@
+// Block solves for the two points of a manifold. Solved one after the other,
+// the first point's impulse tilts the body and biases the second; two
+// Gauss-Seidel passes do not remove that bias, and a resting box turns it
+// into a slow creep. Solved together, a box on a floor or an incline is at
+// rest after one pass.
+#include <algorithm>
+#include <cmath>
+
+#include "collision2d/world.h"
+
+namespace collision2d
+{
+namespace
+{
+/// A block solve needs det K > this fraction of the product of K's diagonal;
+/// below it the rows act almost as one (no rotation, coincident arms) and are
+/// solved one by one instead.
+constexpr double kBlockConditionLimit = 1e-6;
+
+/// One velocity constraint of a block: impulse direction and lever arms.
+struct BlockRow
+{
+  Vec2 direction;
+  Vec2 ra;
+  Vec2 rb;
+};
+
+/// Solves k x = rhs (3x3) by Cramer's rule; false when k is near singular.
+bool solve3(const double k[3][3], const double rhs[3], double x[3])
+{
+  auto det3 = [](const double m[3][3]) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+  };
+  const double det = det3(k);
+  if (!(std::abs(det) > kBlockConditionLimit * k[0][0] * k[1][1] * k[2][2]))
+  {
+    return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    double m[3][3];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int q = 0; q < 3; ++q)
+      {
+        m[r][q] = q == c ? rhs[r] : k[r][q];
+      }
+    }
+    x[c] = det3(m) / det;
+  }
+  return true;
+}
+
+}  // namespace
+
+void World::solve_pair(ContactRow& first, ContactRow& second, bool rough)
+{
+  if (rough && solve_stick_pair(first, second))
+  {
+    return;
+  }
+  if (!solve_normal_pair(first, second))
+  {
+    solve_normal(first);
+    solve_normal(second);
+  }
+  if (rough)
+  {
+    solve_friction_pair(first, second);
+  }
+}
+
+bool World::solve_stick_pair(ContactRow& first, ContactRow& second)
+{
+  // Both normals and the pair's friction row (at the midpoint, see
+  // solve_friction_pair) solved at once assuming the pair sticks; accepted
+  // only when that keeps both normal impulses >= 0 and the friction inside
+  // its cone, otherwise the caller clamps row by row.
+  const Vec2 n = first.normal;
+  const Vec2 t = perp(n);
+  const Vec2 ra = 0.5 * (first.ra + second.ra);
+  const Vec2 rb = 0.5 * (first.rb + second.rb);
+  const BlockRow rows[3] = {{n, first.ra, first.rb}, {n, second.ra, second.rb}, {t, ra, rb}};
+  double k[3][3];
+  for (int u = 0; u < 3; ++u)
+  {
+    for (int v = 0; v < 3; ++v)
+    {
+      k[u][v] = (first.inv_mass_a + first.inv_mass_b) * dot(rows[u].direction, rows[v].direction) +
+                first.inv_inertia_a * cross(rows[u].ra, rows[u].direction) * cross(rows[v].ra, rows[v].direction) +
+                first.inv_inertia_b * cross(rows[u].rb, rows[u].direction) * cross(rows[v].rb, rows[v].direction);
+    }
+  }
+  const double rhs[3] = {first.target - dot(relative_velocity(first), n),
+                         second.target - dot(relative_velocity(second), n),
+                         -dot(relative_velocity_at(first, ra, rb), t)};
+  double delta[3];
+  if (!solve3(k, rhs, delta))
+  {
+    return false;
+  }
+  const double x1 = first.impulse.normal + delta[0];
+  const double x2 = second.impulse.normal + delta[1];
+  const double y = first.impulse.tangent + second.impulse.tangent + delta[2];
+  const double limit = (first.kinetic ? first.mu_k : first.mu_s) * (x1 + x2);
+  if (!(x1 >= 0.0 && x2 >= 0.0 && std::abs(y) <= limit))
+  {
+    return false;
+  }
+  apply_impulse(first, delta[0] * n);
+  apply_impulse(second, delta[1] * n);
+  apply_impulse_at(first, ra, rb, delta[2] * t);
+  first.impulse.normal = x1;
+  second.impulse.normal = x2;
+  // Split in proportion to the normal impulses: each point inside its cone.
+  const double share = x1 + x2 > 0.0 ? x1 / (x1 + x2) : 0.5;
+  first.impulse.tangent = share * y;
+  second.impulse.tangent = y - first.impulse.tangent;
+  first.sliding = false;
+  second.sliding = false;
+  return true;
+}
+
+bool World::solve_normal_pair(ContactRow& first, ContactRow& second)
+{
+  // Two-point LCP on the accumulated impulses x >= 0 with residual
+  // w = K x + q >= 0, x . w = 0, solved exactly by trying its four cases.
+  const Vec2 n = first.normal;
+  const double arm_a1 = cross(first.ra, n);
+  const double arm_a2 = cross(second.ra, n);
+  const double arm_b1 = cross(first.rb, n);
+  const double arm_b2 = cross(second.rb, n);
+  const double k11 = 1.0 / first.normal_mass;
+  const double k22 = 1.0 / second.normal_mass;
+  const double k12 = first.inv_mass_a + first.inv_mass_b + first.inv_inertia_a * arm_a1 * arm_a2 +
+                     first.inv_inertia_b * arm_b1 * arm_b2;
+  const double det = k11 * k22 - k12 * k12;
+  if (!(det > kBlockConditionLimit * k11 * k22))
+  {
+    return false;  // nearly dependent points (no rotation, or coincident arms)
+  }
+  const double x1 = first.impulse.normal;
+  const double x2 = second.impulse.normal;
+  const double q1 = dot(relative_velocity(first), n) - first.target - (k11 * x1 + k12 * x2);
+  const double q2 = dot(relative_velocity(second), n) - second.target - (k12 * x1 + k22 * x2);
+  double y1 = (k12 * q2 - k22 * q1) / det;
+  double y2 = (k12 * q1 - k11 * q2) / det;
+  if (!(y1 >= 0.0 && y2 >= 0.0))
+  {
+    y1 = std::max(0.0, -q1 / k11);
+    y2 = 0.0;
+    if (!(k12 * y1 + q2 >= 0.0))
+    {
+      y1 = 0.0;
+      y2 = std::max(0.0, -q2 / k22);
+      if (!(k12 * y2 + q1 >= 0.0))
+      {
+        y2 = 0.0;
+      }
+    }
+  }
+  first.impulse.normal = y1;
+  second.impulse.normal = y2;
+  apply_impulse(first, (y1 - x1) * n);
+  apply_impulse(second, (y2 - x2) * n);
+  return true;
+}
+
+}  // namespace collision2d

@@ -170,6 +170,25 @@ double polar_moment_of_area(const std::vector<Vec2>& v)
   return sum / 12.0;
 }
 
+/// Finite inputs can still give unusable mass properties: a radius of 1e-200
+/// squares to an inertia of 0 (inverse inertia inf, then inf * 0 = NaN in an
+/// effective mass), a mass of 1e-320 has an infinite inverse, and outlines of
+/// size 1e200 overflow area, radius or inertia to inf (then inf * 0 in the
+/// kinetic energy). Such bodies are rejected here instead of producing NaN
+/// later.
+void require_usable(double mass, double inv_mass, double inertia, double inv_inertia, double radius)
+{
+  const bool usable = std::isfinite(inv_mass) && inv_mass > 0.0 && std::isfinite(inertia) && inertia > 0.0 &&
+                      std::isfinite(inv_inertia) && inv_inertia > 0.0 && std::isfinite(radius) && radius > 0.0;
+  if (!usable)
+  {
+    throw std::invalid_argument("Body: mass " + number(mass) + " and size " + number(radius) +
+                                " give unusable mass properties (inverse mass " + number(inv_mass) + ", inertia " +
+                                number(inertia) + ", inverse inertia " + number(inv_inertia) +
+                                "): mass, size or their product is outside the double range");
+  }
+}
+
 }  // namespace
 
 Body::Body(double mass, double radius, Vec2 position, Vec2 velocity, double omega)
@@ -191,6 +210,7 @@ Body::Body(double mass, double radius, Vec2 position, Vec2 velocity, double omeg
   inv_mass_ = 1.0 / mass_;
   inertia_ = 0.5 * mass_ * radius_ * radius_;
   inv_inertia_ = 1.0 / inertia_;
+  require_usable(mass_, inv_mass_, inertia_, inv_inertia_, radius_);
 }
 
 Body::Body(double mass, const std::vector<Vec2>& local_vertices, Vec2 position, Vec2 velocity, double theta,
@@ -246,6 +266,12 @@ Body::Body(double mass, const std::vector<Vec2>& local_vertices, Vec2 position, 
   inv_mass_ = 1.0 / mass_;
   inertia_ = density * polar_moment_of_area(local_vertices_);
   inv_inertia_ = 1.0 / inertia_;
+  require_usable(mass_, inv_mass_, inertia_, inv_inertia_, radius_);
+  for (std::size_t i = 0; i < local_vertices_.size(); ++i)
+  {
+    require_finite(local_vertices_[i], "recentred vertex");
+    require_finite(local_normals_[i], "face normal");
+  }
   set_theta(theta);
 }
 

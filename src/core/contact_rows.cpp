@@ -59,6 +59,21 @@ void validate_contact(const Contact& c, std::size_t index, std::size_t body_coun
     throw std::invalid_argument("contact " + std::to_string(index) + ": point or penetration is not finite");
 }
 
+void validate_bodies(const std::vector<Body>& bodies)
+{
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    const Body& b = bodies[i];
+    const char* field = !is_finite(b.position()) ? "position"
+                        : !std::isfinite(b.theta()) ? "theta"
+                        : !is_finite(b.velocity())  ? "velocity"
+                        : !std::isfinite(b.omega()) ? "omega"
+                                                    : nullptr;
+    if (field != nullptr)
+      throw std::invalid_argument("body " + std::to_string(i) + ": " + field + " is not finite");
+  }
+}
+
 void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>& state)
 {
   state.resize(bodies.size());

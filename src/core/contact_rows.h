@@ -55,6 +55,11 @@ struct ClusterRange
 /// body or the same body twice, or its normal, point or depth is unusable.
 void validate_contact(const Contact& c, std::size_t index, std::size_t body_count);
 
+/// Throws std::invalid_argument naming the body and field when a body's pose
+/// or velocity is not finite. Body setters do not check (they run in every
+/// world substep), so each ContactSolver entry point checks its input here.
+void validate_bodies(const std::vector<Body>& bodies);
+
 /// Copies the bodies' velocities and inverse masses into `state`.
 void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>& state);
 

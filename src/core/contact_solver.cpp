@@ -62,6 +62,7 @@ ContactSolver::ContactSolver(double e, double mu, int iterations, double tol, do
 SolveReport ContactSolver::solve(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
                                  std::vector<ContactImpulse>* impulses) const
 {
+  detail::validate_bodies(bodies);
   SolveReport report;
   report.contact_count = contacts.size();
   report.kinetic_energy_before = total_kinetic_energy(bodies);

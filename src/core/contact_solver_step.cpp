@@ -7,6 +7,7 @@
 #include "collision2d/contact_solver.h"
 #include "collision2d/time_of_impact.h"
 #include "collision2d/touch_tolerance.h"
+#include "contact_rows.h"
 
 namespace collision2d
 {
@@ -23,6 +24,7 @@ bool either_dynamic(const Body& a, const Body& b)
 
 double ContactSolver::time_of_impact(const std::vector<Body>& bodies)
 {
+  detail::validate_bodies(bodies);
   // Boxes swept over the whole step: a pair that meets anywhere in [0, 1]
   // has overlapping swept boxes, however thin or fast the bodies are.
   std::vector<Aabb> swept;

@@ -9,6 +9,7 @@
 #include "collision2d/broad_phase.h"
 #include "collision2d/collide.h"
 #include "collision2d/contact_solver.h"
+#include "contact_rows.h"
 
 namespace collision2d
 {
@@ -24,6 +25,7 @@ bool both_non_dynamic(const Body& a, const Body& b)
 /// by its own share, so the two boxes of such a pair still overlap.
 std::vector<Contact> detect(const std::vector<Body>& bodies, double relative_tolerance)
 {
+  detail::validate_bodies(bodies);
   std::vector<Aabb> boxes;
   boxes.reserve(bodies.size());
   for (const Body& body : bodies)

@@ -26,6 +26,7 @@ std::size_t deepest(const std::vector<Contact>& contacts, const std::vector<std:
 
 void ContactSolver::correct_positions(std::vector<Body>& bodies, const std::vector<Contact>& contacts) const
 {
+  detail::validate_bodies(bodies);
   for (std::size_t i = 0; i < contacts.size(); ++i)
     detail::validate_contact(contacts[i], i, bodies.size());
 

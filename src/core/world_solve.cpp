@@ -29,17 +29,21 @@ void World::prepare_rows(const ActiveEffects& effects)
     row.rb = row.point - b.position();
     row.inv_mass_a = a.inv_mass();
     row.inv_mass_b = b.inv_mass();
-    // With rotation off, bodies are modelled as not turning at all.
-    row.inv_inertia_a = effects.rotation ? a.inv_inertia() : 0.0;
-    row.inv_inertia_b = effects.rotation ? b.inv_inertia() : 0.0;
-    const Vec2 t = perp(row.normal);
-    row.normal_mass = 1.0 / effective_inverse_mass(row, row.normal);
-    row.tangent_mass = 1.0 / effective_inverse_mass(row, t);
-    row.pair_tangent_mass = row.tangent_mass;
     const Material& ma = materials_[row.a];
     const Material& mb = materials_[row.b];
     row.mu_s = effects.friction ? min_of(ma.static_friction, mb.static_friction) : 0.0;
     row.mu_k = effects.friction ? min_of(ma.kinetic_friction, mb.kinetic_friction) : 0.0;
+    // With rotation off, bodies are modelled as not turning at all. A disk's
+    // contact normal passes through its centre, so without friction it cannot
+    // turn either; dropping its inertia there keeps the round-off of the lever
+    // arm from spinning it.
+    const bool rough = row.mu_s > 0.0 || row.mu_k > 0.0;
+    row.inv_inertia_a = effects.rotation && (rough || a.shape() == Shape::Polygon) ? a.inv_inertia() : 0.0;
+    row.inv_inertia_b = effects.rotation && (rough || b.shape() == Shape::Polygon) ? b.inv_inertia() : 0.0;
+    const Vec2 t = perp(row.normal);
+    row.normal_mass = 1.0 / effective_inverse_mass(row, row.normal);
+    row.tangent_mass = 1.0 / effective_inverse_mass(row, t);
+    row.pair_tangent_mass = row.tangent_mass;
     // The approach speed is taken before the position solve and kept fixed
     // through the iterations; below the threshold a contact just rests.
     const double e = effects.restitution ? min_of(ma.restitution, mb.restitution) : 0.0;

@@ -91,7 +91,9 @@ struct StepReport
   int frames = 0;
   int substeps = 0;                 ///< substeps done in total
   std::size_t contact_count = 0;    ///< contact points in the last substep
-  double max_penetration = 0.0;     ///< largest depth seen after correction (m)
+  /// Largest depth left after correction (m): the last substep's contact
+  /// pairs measured again at the poses the step ends with.
+  double max_penetration = 0.0;
   double kinetic_energy = 0.0;      ///< of the dynamic bodies after the step (J)
   ActiveEffects active;             ///< union over the step's frames
 
@@ -127,6 +129,22 @@ namespace collision2d
 /// Bodies are kept by stable id; ids are never reused within one world.
 /// A World is a value: copying it snapshots the whole state, which is how a
 /// caller can try a change and roll back.
+///
+/// Each substep follows SPEC section 3 (integrate, detect, penetration
+/// resolution with the previous-pose shift, velocities, velocity resolution,
+/// warm starting), with these refinements, each explained where it is coded:
+///  - warm starting also on later substeps, from the previous substep
+///    (WorldSettings::warm_start_every_substep; false is SPEC's first-substep-only);
+///  - a two-point manifold's normals are solved as one 2x2 block, and, when
+///    it sticks, together with its friction (world_block.cpp); its friction
+///    is one row at the manifold's midpoint against the summed normal impulse;
+///  - stick or slip is a contact state: a sticking contact holds up to mu_s,
+///    a sliding one is held at mu_k, and a sticking contact also takes back
+///    the tangential part of its integration move (world_solve.cpp);
+///  - penetration is resolved with the depth left after the corrections
+///    already made in the pass;
+///  - the velocity is the integrated one, which equals the derived
+///    (pose - shifted previous pose) / h (world_step.cpp).
 class World
 {
 public:

@@ -58,6 +58,22 @@ void validate_material(const Material& m)
   }
 }
 
+/// Body setters do not check, so a body spoiled through them is stopped here:
+/// one NaN body would turn its contact partners NaN on the next step.
+void validate_state(const Body& b)
+{
+  const auto require = [](bool ok, const char* field) {
+    if (!ok)
+    {
+      throw std::invalid_argument(std::string("add_body: non-finite ") + field);
+    }
+  };
+  require(is_finite(b.position()), "position");
+  require(std::isfinite(b.theta()), "theta");
+  require(is_finite(b.velocity()), "velocity");
+  require(std::isfinite(b.omega()), "omega");
+}
+
 /// Static bodies never move, so a velocity given to one is dropped rather
 /// than reported as a motion that never happens.
 void settle_static(Body& body)
@@ -107,6 +123,7 @@ void World::set_settings(const WorldSettings& settings)
 BodyId World::add_body(const Body& body, const Material& material)
 {
   validate_material(material);
+  validate_state(body);
   bodies_.push_back(body);
   settle_static(bodies_.back());
   materials_.push_back(material);
@@ -138,10 +155,15 @@ void World::remove_body(BodyId id)
   ids_.erase(ids_.begin() + offset);
   asleep_.erase(asleep_.begin() + offset);
   rest_time_.erase(rest_time_.begin() + offset);
-  // Dense indices shifted: the reported contacts no longer describe the world.
+  // The removed body's contacts go; the others follow the shifted dense indices.
   contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
                                  [id](const WorldContact& c) { return c.a == id || c.b == id; }),
                   contacts_.end());
+  for (WorldContact& c : contacts_)
+  {
+    c.contact.a -= c.contact.a > i ? 1 : 0;
+    c.contact.b -= c.contact.b > i ? 1 : 0;
+  }
   refresh_inner_radii();
 }
 

@@ -3,6 +3,7 @@
 // fixed point that the iterative solver approaches is found directly.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "collision2d/body.h"
@@ -11,6 +12,16 @@
 
 namespace collision2d
 {
+/// Clusters with more unknowns than this (4 per contact with friction, 1
+/// without) are not attempted: the dense tableau takes about 40 n^2 bytes
+/// and O(n^2) per pivot, so beyond this the iterative solver is the tool.
+constexpr std::size_t kMaxExactUnknowns = 1200;
+
+/// A solved cluster whose residual, recomputed from the final velocities,
+/// exceeds this fraction of its velocity scale is treated as a pivoting
+/// failure (a well-posed cluster lands near 1e-15).
+constexpr double kTrustedResidual = 1e-6;
+
 /// Velocity solve with the same contract as ContactSolver::solve (SPEC
 /// section 2): Newton targets e * (approach speed) fixed from the velocities
 /// before the solve (0 for separating or resting contacts), normal impulses
@@ -26,7 +37,9 @@ namespace collision2d
 ///
 /// Failure and fallback: if pivoting fails on any cluster (an infeasible
 /// problem such as a body pinched between approaching walls, the pivot cap,
-/// or a numerically unusable basis), NO body is modified, `impulses` (if
+/// a numerically unusable basis even after a retry with conservative
+/// tolerances, a cluster larger than kMaxExactUnknowns, or a recomputed
+/// residual above kTrustedResidual), NO body is modified, `impulses` (if
 /// given) is all zeros, and the report has `exact_fallback = true` and
 /// `converged = false`. The caller then runs the iterative solver on the same
 /// untouched input and keeps `exact_fallback = true` in its report.

@@ -75,6 +75,8 @@ public:
 
 private:
   void build_tableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& d);
+  /// Pivots until z0 leaves the basis; counts them in `pivots`.
+  LcpStatus run_pivots(const Eigen::VectorXd& d, int& pivots);
   void pivot(int row, int column);
   void refresh_tableau();
   int initial_row(const Eigen::VectorXd& d);

@@ -11,6 +11,41 @@ namespace collision2d
 {
 namespace
 {
+/// A second pivoting run after a failure, with tolerances that treat more
+/// near-zero tableau entries as zero: on clusters with many redundant
+/// contacts round-off can steer the first run into a false ray.
+LemkeSettings conservative_settings()
+{
+  LemkeSettings settings;
+  settings.pivot_tolerance = 1e-9;
+  settings.tie_tolerance = 1e-9;
+  return settings;
+}
+
+/// Solves one cluster's LCP (with one conservative retry) and stores the
+/// impulses in its rows. Returns false when pivoting failed or the cluster is
+/// too large; adds the pivots done to `pivots`.
+bool solve_cluster(std::vector<detail::ContactRow>& rows, detail::ClusterRange cluster,
+                   const std::vector<detail::BodyVelocity>& state, double mu, detail::ClusterLcp& lcp,
+                   int& pivots)
+{
+  const std::size_t unknowns = (cluster.end - cluster.begin) * detail::unknowns_per_contact(mu);
+  if (unknowns > kMaxExactUnknowns)
+    return false;
+  detail::assemble_cluster_lcp(rows, cluster, state, mu, lcp);
+  LcpResult result = LemkeSolver().solve(lcp.M, lcp.q);
+  pivots = result.pivots;
+  if (!result.solved())
+  {
+    result = LemkeSolver(conservative_settings()).solve(lcp.M, lcp.q);
+    pivots += result.pivots;
+  }
+  if (!result.solved())
+    return false;
+  detail::store_cluster_impulses(result.z, mu, cluster, rows);
+  return true;
+}
+
 double total_kinetic_energy(const std::vector<Body>& bodies)
 {
   double energy = 0.0;
@@ -96,19 +131,18 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   // leaves the bodies exactly as they came in.
   detail::ClusterLcp lcp;
   lcp.local_body.assign(bodies.size(), -1);
-  LemkeSolver lemke;
   std::vector<double> speed_before(clusters.size());
   for (std::size_t c = 0; c < clusters.size(); ++c)
   {
-    detail::assemble_cluster_lcp(rows, clusters[c], state, mu, lcp);
-    const LcpResult result = lemke.solve(lcp.M, lcp.q);
-    report.iterations = std::max(report.iterations, result.pivots);
-    if (!result.solved())
+    int pivots = 0;
+    const bool solved = solve_cluster(rows, clusters[c], state, mu, lcp, pivots);
+    report.iterations = std::max(report.iterations, pivots);
+    if (!solved)
       return failed_report(report, contacts.size(), impulses);
-    detail::store_cluster_impulses(result.z, mu, clusters[c], rows);
     speed_before[c] = contact_speed_scale(rows, clusters[c], state);
   }
 
+  // Applied to the working copy only: the bodies change once all is checked.
   for (const detail::ContactRow& row : rows)
   {
     detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent, state);
@@ -122,6 +156,8 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
     const double scale = std::max({speed_before[c], contact_speed_scale(rows, clusters[c], state),
                                    impulse_speed_scale(rows, clusters[c])});
     const double residual = cluster_residual(rows, clusters[c], state, mu);
+    if (!(residual <= kTrustedResidual * scale))
+      return failed_report(report, contacts.size(), impulses);
     report.max_residual = std::max(report.max_residual, residual);
     report.converged = report.converged && residual <= tol * scale;
   }

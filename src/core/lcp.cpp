@@ -21,6 +21,10 @@ constexpr int kMinRefreshInterval = 32;
 /// -log10(cond * eps) digits, so a few reach double precision.
 constexpr int kRefinementSteps = 4;
 
+/// Reciprocal condition number below which the terminal basis is not
+/// trusted. A 1e6 mass ratio gives about 1e-9.
+constexpr double kMinBasisRcond = 1e-14;
+
 bool all_finite(const Eigen::MatrixXd& m) { return m.allFinite(); }
 
 /// r = q - B x as if computed in twice double precision (compensated dot
@@ -80,6 +84,16 @@ LcpResult LemkeSolver::solve(const Eigen::MatrixXd& M, const Eigen::VectorXd& q,
 
   n_ = static_cast<int>(n);
   build_tableau(M, q, d);
+  result.status = run_pivots(d, result.pivots);
+  if (result.status != LcpStatus::Solved)
+    return result;
+  if (!recover_solution(M, q, result))
+    result.status = LcpStatus::NumericalFailure;
+  return result;
+}
+
+LcpStatus LemkeSolver::run_pivots(const Eigen::VectorXd& d, int& pivots)
+{
   const int z0 = 2 * n_;
   const int cap = settings_.max_pivots > 0 ? settings_.max_pivots : kPivotsPerUnknown * n_ + kPivotsBase;
   const int refresh_interval =
@@ -90,32 +104,36 @@ LcpResult LemkeSolver::solve(const Eigen::MatrixXd& M, const Eigen::VectorXd& q,
   int row = initial_row(d);
   int leaving = basic_[row];
   pivot(row, z0);
-  result.pivots = 1;
+  pivots = 1;
+  int since_refresh = 1;
   while (leaving != z0)
   {
-    if (result.pivots >= cap)
+    if (pivots >= cap)
+      return LcpStatus::PivotLimit;
+    if (since_refresh >= refresh_interval)
     {
-      result.status = LcpStatus::PivotLimit;
-      return result;
-    }
-    if (result.pivots % refresh_interval == 0)
       refresh_tableau();
+      since_refresh = 0;
+    }
     const int entering = leaving < n_ ? leaving + n_ : leaving - n_;  // complement
     row = ratio_test(entering);
-    if (row < 0)
+    if (row < 0 && since_refresh > 0)
     {
-      result.status = LcpStatus::RayTermination;
-      return result;
+      // On degenerate problems (many redundant contacts) drift in the
+      // tableau can hide the one valid pivot: check with a fresh tableau
+      // before calling the problem infeasible.
+      refresh_tableau();
+      since_refresh = 0;
+      row = ratio_test(entering);
     }
+    if (row < 0)
+      return LcpStatus::RayTermination;
     leaving = basic_[row];
     pivot(row, entering);
-    ++result.pivots;
+    ++pivots;
+    ++since_refresh;
   }
-  if (!recover_solution(M, q, result))
-    result.status = LcpStatus::NumericalFailure;
-  else
-    result.status = LcpStatus::Solved;
-  return result;
+  return LcpStatus::Solved;
 }
 
 void LemkeSolver::build_tableau(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& d)
@@ -183,8 +201,7 @@ int LemkeSolver::initial_row(const Eigen::VectorXd& d)
 int LemkeSolver::ratio_test(int column)
 {
   pivot_column_ = tableau_.col(column);
-  const double largest = pivot_column_.cwiseAbs().maxCoeff();
-  const double threshold = settings_.pivot_tolerance * largest;
+  const double threshold = settings_.pivot_tolerance * pivot_column_.cwiseAbs().maxCoeff();
   const int rhs = 2 * n_ + 1;
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n_; ++i)
@@ -232,6 +249,11 @@ bool LemkeSolver::recover_solution(const Eigen::MatrixXd& M, const Eigen::Vector
 {
   fill_basis_matrix();
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(basis_);
+  // A numerically singular terminal basis means round-off steered the
+  // pivots; its "solution" can be huge and still look complementary
+  // relative to its own size.
+  if (!(lu.rcond() >= kMinBasisRcond))
+    return false;
   // Basic variables from the original (unnormalised) q: the tableau only
   // picked the basis. Extreme mass ratios make the basis ill-conditioned
   // (condition numbers near 1e9 at a 1e6 ratio), so the plain solve has a

@@ -126,7 +126,9 @@ double expect_contract(const std::vector<Body>& before, const std::vector<Body>&
     EXPECT_GE(slack, -tol) << "contact " << i << " outside the Coulomb cone";
     EXPECT_LE(std::min(std::abs(vt), slack), tol) << "contact " << i << " slides inside the cone";
     if (lambda_t * vt > 0.0)
+    {
       EXPECT_LE(std::min(std::abs(vt), k * std::abs(lambda_t)), tol) << "contact " << i << " friction pushes";
+    }
   }
   return scale;
 }
@@ -395,6 +397,30 @@ TEST(ExactSolver, InfeasiblePinchFallsBackWithoutTouchingBodies)
     EXPECT_EQ(solved[i].omega(), bodies[i].omega());
   }
   EXPECT_EQ(report.kinetic_energy_after, report.kinetic_energy_before);
+}
+
+TEST(ExactSolver, OversizedClusterFallsBackAndSmallerOnesSolve)
+{
+  // A touching row of disks: one cluster of n - 1 contacts, 4 unknowns each
+  // with friction. Above kMaxExactUnknowns the call reports failure at once.
+  const std::size_t n = kMaxExactUnknowns / 4 + 2;
+  std::vector<Body> bodies;
+  for (std::size_t i = 0; i < n; ++i)
+    bodies.push_back(disk(1.0, 0.5, {static_cast<double>(i), 0.0}, {i == 0 ? 1.0 : 0.0, 0.1}));
+  std::vector<Contact> contacts;
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    contacts.push_back(disk_contact(bodies, i, i + 1));
+  const Outcome rough = solve(bodies, contacts, 1.0, 0.3);
+  EXPECT_TRUE(rough.report.exact_fallback);
+  EXPECT_FALSE(rough.report.converged);
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_EQ(rough.bodies[i].velocity(), bodies[i].velocity());
+  // Without friction the same row is n - 1 unknowns: solved. Newton's cradle:
+  // e = 1 passes the speed to the last disk.
+  const Outcome smooth = solve(bodies, contacts, 1.0, 0.0);
+  ASSERT_FALSE(smooth.report.exact_fallback);
+  EXPECT_TRUE(smooth.report.converged);
+  expect_contract(bodies, smooth.bodies, contacts, smooth.impulses, 1.0, 0.0, kContractTol);
 }
 
 TEST(ExactSolver, StaticBodiesDoNotCoupleClustersAndKinematicOnesKeepTheirVelocity)

@@ -3,6 +3,7 @@
 // and on random problems built around a planted solution.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "collision2d/lcp.h"
@@ -263,6 +264,42 @@ TEST(Lcp, FrequentTableauRefreshesGiveTheSameSolution)
   EXPECT_GT(result.pivots, 10);
   expect_complementary(M, q, result, 1e-12);
   EXPECT_LE((result.z - z_star).cwiseAbs().maxCoeff(), 1e-8 * (1.0 + z_star.cwiseAbs().maxCoeff()));
+}
+
+TEST(Lcp, MassRatioMillionColumnKeepsFullAccuracy)
+{
+  // A 1D column of bodies with masses alternating 1 and 1e6 on the ground,
+  // all falling at speed v: contact i sits below body i (row J_i = e_i -
+  // e_{i-1}), M = J W J^T, only the ground contact approaches. Every body
+  // must stop, so contact i carries v times the mass above it. M itself is
+  // rounded (1 + 1e-6 keeps the heavy share to 1e-10), and the ratio
+  // amplifies that in z; the speeds w of the problem as given must still be
+  // exact to double precision of the impulses' effects.
+  const int n = 8;
+  const double v = 0.1635;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd inverse_mass(n);
+  for (int i = 0; i < n; ++i)
+  {
+    J(i, i) = 1.0;
+    if (i > 0)
+      J(i, i - 1) = -1.0;
+    inverse_mass(i) = i % 2 == 0 ? 1.0 : 1e-6;
+  }
+  const Eigen::MatrixXd M = J * inverse_mass.asDiagonal() * J.transpose();
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(n);
+  q(0) = -v;
+  LemkeSolver lemke;
+  const LcpResult result = lemke.solve(M, q);
+  ASSERT_TRUE(result.solved());
+  double above = 0.0;
+  for (int i = n - 1; i >= 0; --i)
+  {
+    above += v / inverse_mass(i);
+    EXPECT_NEAR(result.z(i), above, 1e-8 * above) << "contact " << i;
+  }
+  // Speeds to a few epsilons of the largest impulse effect, v * 4e6 m/s.
+  EXPECT_LE(result.w.cwiseAbs().maxCoeff(), 4.0 * std::numeric_limits<double>::epsilon() * v * 4e6);
 }
 
 TEST(Lcp, ReusedSolverHandlesShrinkingAndGrowingProblems)

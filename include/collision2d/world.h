@@ -69,8 +69,9 @@ struct WorldSettings
   double sleep_angular_speed = 0.1;
   /// Time every body of an island must have rested before the island sleeps (s), >= 0.
   double sleep_time = 0.5;
-  /// Toggle::Auto sleeps only worlds with at least this many dynamic bodies:
-  /// smaller scenes gain little and keep exactly reproducible trajectories.
+  /// Toggle::Auto sleeps only worlds with gravity and at least this many
+  /// dynamic bodies: smaller scenes gain little and keep exactly reproducible
+  /// trajectories; without gravity nothing rests against anything.
   std::size_t sleep_auto_min_bodies = 256;
 };
 

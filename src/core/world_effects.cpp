@@ -56,6 +56,12 @@ bool World::needs_rotation(bool friction) const
 
 bool World::sleeping_wanted() const
 {
+  // Without gravity a slow body is drifting, not resting on anything:
+  // freezing it would change the motion (and take energy from a gas).
+  if (settings_.gravity.x == 0.0 && settings_.gravity.y == 0.0)
+  {
+    return false;
+  }
   std::size_t dynamic = 0;
   for (const Body& b : bodies_)
   {

@@ -51,7 +51,9 @@ public:
   static std::vector<Contact> detect_contacts(const std::vector<Body>& bodies, double touch_tolerance);
 
   /// Velocity solve. Writes the applied impulses per contact to `impulses`
-  /// when given.
+  /// when given. In SolverMode::Exact each coupled cluster is solved by
+  /// pivoting; if pivoting fails the iterative solve is used and the report's
+  /// exact_fallback is set.
   SolveReport solve(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
                     std::vector<ContactImpulse>* impulses = nullptr) const;
   /// Positions only: penetration beyond slop reduced by bias_factor, split by
@@ -76,6 +78,9 @@ public:
   void set_mode(SolverMode mode) { mode_ = mode; }
 
 private:
+  SolveReport solve_iterative(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                              std::vector<ContactImpulse>* impulses) const;
+
   double e_;
   double mu_;
   int iterations_;

@@ -1,4 +1,5 @@
 #include "collision2d/contact_solver.h"
+#include "collision2d/exact_solver.h"
 
 #include <algorithm>
 #include <cmath>
@@ -63,6 +64,23 @@ SolveReport ContactSolver::solve(std::vector<Body>& bodies, const std::vector<Co
                                  std::vector<ContactImpulse>* impulses) const
 {
   detail::validate_bodies(bodies);
+  if (mode_ == SolverMode::Exact)
+  {
+    // solve_exact leaves every body untouched when any cluster fails to pivot,
+    // so the iterative solve below starts from the same input.
+    SolveReport exact = solve_exact(bodies, contacts, e_, mu_, tol_, impulses);
+    if (!exact.exact_fallback)
+      return exact;
+    SolveReport fallback = solve_iterative(bodies, contacts, impulses);
+    fallback.exact_fallback = true;
+    return fallback;
+  }
+  return solve_iterative(bodies, contacts, impulses);
+}
+
+SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
+                                           std::vector<ContactImpulse>* impulses) const
+{
   SolveReport report;
   report.contact_count = contacts.size();
   report.kinetic_energy_before = total_kinetic_energy(bodies);

@@ -23,6 +23,7 @@ struct Resolution
   std::vector<Contact> contacts;
   std::vector<ContactImpulse> impulses;
   SolveReport report;
+  Totals after;
   double time_of_impact = 0.0;
 };
 
@@ -46,6 +47,10 @@ Resolution resolve(const ContactSolver& solver, bool sweep, std::vector<Body>& b
     out.contacts = ContactSolver::detect_contacts(bodies);
   }
   out.report = solver.solve(bodies, out.contacts, &out.impulses);
+  // Angular momentum about the origin is conserved by the solve at the
+  // positions it solved at; correction then moves bodies without changing any
+  // velocity, so the totals are taken in between.
+  out.after = totals_of(bodies);
   solver.correct_positions(bodies, out.contacts);
   out.report.time_of_impact = out.time_of_impact;
   return out;
@@ -68,7 +73,7 @@ void fill_response(const ResolveContacts::Request& request, const std::vector<Bo
     response.contacts.push_back(
         contact_to_msg(contact, impulse, request.bodies[contact.a].id, request.bodies[contact.b].id));
   }
-  response.report = solver_report_to_msg(resolution.report, before, totals_of(bodies));
+  response.report = solver_report_to_msg(resolution.report, before, resolution.after);
   response.time_of_impact = resolution.time_of_impact;
   response.success = true;
   response.message = "resolved " + std::to_string(resolution.contacts.size()) + " contact points";

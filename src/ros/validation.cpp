@@ -2,10 +2,9 @@
 #include "collision2d/ros/validation.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <limits>
 #include <numeric>
-#include <sstream>
 
 namespace collision2d
 {
@@ -20,6 +19,8 @@ constexpr double kRelativeDegeneracy = 1e-12;
 /// A convex outline turns by exactly 2 pi; more means it winds around twice.
 constexpr double kFullTurn = 2.0 * M_PI;
 constexpr double kTurnTolerance = 1e-6;  // rad
+/// Longest shortest-round-trip double: sign, 17 digits, point, exponent.
+constexpr std::size_t kNumberChars = 32;
 
 std::string vertex_name(std::size_t i)
 {
@@ -40,10 +41,10 @@ std::string body_label(std::size_t index, std::uint32_t id)
 
 std::string format_number(double value)
 {
-  std::ostringstream out;
-  out.precision(std::numeric_limits<double>::max_digits10);
-  out << value;
-  return out.str();
+  // Shortest text that reads back exactly: "0.1", not "0.10000000000000001".
+  char text[kNumberChars];
+  const std::to_chars_result end = std::to_chars(text, text + kNumberChars, value);
+  return std::string(text, end.ptr);
 }
 
 void require_finite(double value, const std::string& where, const std::string& field)

@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""A rospy client of the collision2d services, as a Python user would write it.
+
+Checks the physics on what comes back: momentum and the Newton target of a
+head-on impact, a bad request's message, and a step published on world_state.
+"""
+import math
+import threading
+import unittest
+
+import rospy
+import rostest
+from collision2d.msg import RigidBody, SolverSettings, WorldState
+from collision2d.srv import LoadScene, ResolveContacts, StepWorld
+
+SERVICE_WAIT_S = 30.0
+
+
+def disk(body_id, x, vx, mass=1.0, radius=0.5):
+    body = RigidBody(id=body_id, shape=RigidBody.DISK, type=RigidBody.DYNAMIC, mass=mass, radius=radius)
+    body.pose.x = x
+    body.twist.linear.x = vx
+    return body
+
+
+def settings(restitution, friction=0.0):
+    return SolverSettings(restitution=restitution, friction=friction, iterations=200, tolerance=1e-10,
+                          bias_factor=0.2, slop=1e-3, mode=SolverSettings.ITERATIVE)
+
+
+class PythonClient(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("test_python_client")
+        for name in ("resolve_contacts", "step_world", "load_scene"):
+            rospy.wait_for_service(name, timeout=SERVICE_WAIT_S)
+        cls.resolve = rospy.ServiceProxy("resolve_contacts", ResolveContacts)
+
+    def test_head_on_impact_meets_newton_and_keeps_momentum(self):
+        e = 0.5
+        light, heavy = disk(1, 0.0, 1.0), disk(2, 0.95, -1.0, mass=3.0)
+        response = self.resolve(bodies=[light, heavy], settings=settings(e))
+        self.assertTrue(response.success, response.message)
+        self.assertEqual(len(response.contacts), 1)
+        contact = response.contacts[0]
+        self.assertEqual((contact.body_a, contact.body_b), (1, 2))
+        self.assertGreater(contact.normal_impulse, 0.0)
+        v1, v2 = (b.twist.linear.x for b in response.bodies)
+        # Momentum 1 * 1 + 3 * (-1) = -2 kg m/s before and after.
+        self.assertAlmostEqual(1.0 * v1 + 3.0 * v2, -2.0, places=9)
+        # Approach at 2 m/s: separation at e * 2 m/s.
+        self.assertAlmostEqual(v2 - v1, e * 2.0, places=7)
+        # The impulse changed the light disk's momentum by exactly itself.
+        self.assertAlmostEqual(contact.normal_impulse, 1.0 - v1, places=9)
+        self.assertLess(response.report.kinetic_energy_after, response.report.kinetic_energy_before)
+
+    def test_bad_request_names_body_and_field(self):
+        bad = disk(9, 3.0, 0.0, mass=float("nan"))
+        response = self.resolve(bodies=[disk(1, 0.0, 0.0), bad], settings=settings(0.5))
+        self.assertFalse(response.success)
+        self.assertIn("bodies[1] (id 9): mass = nan is not finite", response.message)
+        self.assertEqual(len(response.bodies), 0)
+
+    def test_step_is_published(self):
+        received = []
+        done = threading.Event()
+
+        def on_state(state):
+            received.append(state.frame_count)
+            if state.frame_count == 5:
+                done.set()
+
+        loaded = rospy.ServiceProxy("load_scene", LoadScene)(scene="bouncing_disks")
+        self.assertTrue(loaded.success, loaded.message)
+        subscriber = rospy.Subscriber("world_state", WorldState, on_state)
+        try:
+            stepped = rospy.ServiceProxy("step_world", StepWorld)(frames=5, dt=0.0)
+            self.assertTrue(stepped.success, stepped.message)
+            self.assertEqual(stepped.state.frame_count, 5)
+            self.assertTrue(math.isclose(stepped.state.sim_time, 5 * stepped.state.settings.dt, rel_tol=1e-12))
+            self.assertTrue(done.wait(SERVICE_WAIT_S), "world_state never showed frame 5: %s" % received)
+        finally:
+            subscriber.unregister()
+
+
+if __name__ == "__main__":
+    rostest.rosrun("collision2d", "python_client", PythonClient)

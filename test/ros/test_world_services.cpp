@@ -1,0 +1,410 @@
+// rostest client of the world services: StepWorld on shipped scenes (a resting
+// stack stays, a dropped disk bounces, frames and time advance, the topic
+// publishes), the other world services, and every bad-input class, each
+// answered with success = false, a message naming the body and field, and the
+// world (GetWorld) left exactly as it was.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+
+#include <collision2d/AddBody.h>
+#include <collision2d/GetWorld.h>
+#include <collision2d/LoadScene.h>
+#include <collision2d/RemoveBody.h>
+#include <collision2d/ResolveContacts.h>
+#include <collision2d/SetWorld.h>
+#include <collision2d/StepWorld.h>
+
+#include "ros_test_helpers.h"
+
+namespace collision2d
+{
+namespace
+{
+using ros_test::box_msg;
+using ros_test::contains;
+using ros_test::disk_msg;
+using ros_test::same_world;
+
+constexpr double kServiceWait = 30.0;  // s
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// The test launch file's ~max_bodies and ~max_frames_per_call.
+constexpr std::size_t kMaxBodies = 64;
+constexpr std::uint32_t kMaxFrames = 2000;
+
+template <typename Service>
+Service call(const std::string& name, const typename Service::Request& request = typename Service::Request())
+{
+  Service srv;
+  srv.request = request;
+  EXPECT_TRUE(ros::service::call(name, srv)) << name << ": transport failed";
+  return srv;
+}
+
+WorldState get_world()
+{
+  const GetWorld srv = call<GetWorld>("get_world");
+  EXPECT_TRUE(srv.response.success);
+  return srv.response.state;
+}
+
+WorldState load(const std::string& scene)
+{
+  LoadScene::Request request;
+  request.scene = scene;
+  const LoadScene srv = call<LoadScene>("load_scene", request);
+  EXPECT_TRUE(srv.response.success) << srv.response.message;
+  return srv.response.state;
+}
+
+StepWorld::Response step(std::uint32_t frames, double dt = 0.0)
+{
+  StepWorld::Request request;
+  request.frames = frames;
+  request.dt = dt;
+  const StepWorld srv = call<StepWorld>("step_world", request);
+  EXPECT_TRUE(srv.response.success) << srv.response.message;
+  return srv.response;
+}
+
+const RigidBody* find_body(const WorldState& state, std::uint32_t id)
+{
+  for (const RigidBody& body : state.bodies)
+  {
+    if (body.id == id)
+    {
+      return &body;
+    }
+  }
+  return nullptr;
+}
+
+class WorldServices : public ::testing::Test
+{
+protected:
+  /// A known world to compare against after each failed request.
+  void SetUp() override
+  {
+    load("resting_box");
+    step(3);
+    before_ = get_world();
+    ASSERT_FALSE(before_.bodies.empty());
+  }
+
+  /// The failure message names what it must, and the world did not move.
+  template <typename Response>
+  void expect_rejected(const Response& response, const std::string& part)
+  {
+    EXPECT_FALSE(response.success);
+    EXPECT_TRUE(contains(response.message, part));
+    EXPECT_TRUE(same_world(before_, get_world()));
+  }
+
+  /// SetWorld with a valid first body and `bad` second (index 1, id 7).
+  SetWorld::Response set_with_bad_second(RigidBody bad)
+  {
+    bad.id = 7;
+    SetWorld::Request request;
+    request.keep_settings = true;
+    request.bodies = {disk_msg(3, {-10.0, 5.0}), bad};
+    return call<SetWorld>("set_world", request).response;
+  }
+
+  WorldState before_;
+};
+
+TEST_F(WorldServices, StepAdvancesFramesAndTime)
+{
+  const double dt = before_.settings.dt;
+  StepWorld::Response response = step(10);
+  EXPECT_EQ(response.state.frame_count, before_.frame_count + 10);
+  EXPECT_NEAR(response.state.sim_time, before_.sim_time + 10 * dt, 1e-12);
+  EXPECT_EQ(response.report.frames, 10);
+  EXPECT_EQ(response.report.substeps, 10 * before_.settings.substeps);
+  // A dt for one call: time advances by it, the world keeps its own.
+  response = step(4, 0.5 * dt);
+  EXPECT_NEAR(response.state.sim_time, before_.sim_time + 12 * dt, 1e-12);
+  EXPECT_EQ(response.state.settings.dt, dt);
+  EXPECT_TRUE(same_world(response.state, get_world()));
+}
+
+TEST_F(WorldServices, RestingStackStays)
+{
+  const WorldState start = load("column");  // 20 boxes of 1 m on the ground
+  const StepWorld::Response response = step(120);  // 2 s
+  ASSERT_EQ(response.state.bodies.size(), start.bodies.size());
+  // Neither sliding nor toppling. The boxes do sink into their 20 contacts by
+  // the gravity sag each substep's correction leaves (test_world_stacking
+  // states about 0.15 m at the top with the default 4 substeps).
+  constexpr double kLateral = 0.02;  // m
+  constexpr double kTilt = 0.02;     // rad
+  constexpr double kSink = 0.2;      // m
+  for (std::size_t i = 0; i < start.bodies.size(); ++i)
+  {
+    const RigidBody& a = start.bodies[i];
+    const RigidBody& b = response.state.bodies[i];
+    EXPECT_NEAR(b.pose.x, a.pose.x, kLateral) << "body " << a.id;
+    EXPECT_NEAR(b.pose.theta, a.pose.theta, kTilt) << "body " << a.id;
+    EXPECT_LE(a.pose.y - b.pose.y, kSink) << "body " << a.id;
+    EXPECT_GE(a.pose.y - b.pose.y, -kLateral) << "body " << a.id << " rose";
+  }
+  // At rest: 1 mJ over 20 kg is a speed of 1 cm/s.
+  EXPECT_LT(response.report.kinetic_energy_after, 1e-3);
+}
+
+TEST_F(WorldServices, DroppedDiskBounces)
+{
+  constexpr double kHeight = 2.0;       // m, of the disk's lowest point above the ground
+  constexpr double kRestitution = 0.8;
+  SetWorld::Request request;
+  request.keep_settings = true;
+  RigidBody ground = box_msg(0, 40.0, 1.0, {0.0, -0.5});
+  ground.type = RigidBody::STATIC;
+  ground.material.restitution = 1.0;
+  RigidBody ball = disk_msg(1, {0.0, kHeight + 0.25}, {}, 0.25);
+  ball.material.restitution = kRestitution;
+  request.bodies = {ground, ball};
+  const SetWorld set = call<SetWorld>("set_world", request);
+  ASSERT_TRUE(set.response.success) << set.response.message;
+  ASSERT_LT(set.response.state.settings.gravity.y, 0.0);
+
+  // Fall (~0.64 s), bounce, and rise to the next apex.
+  double lowest = kHeight, apex_after_bounce = 0.0;
+  bool bounced = false;
+  for (int frame = 0; frame < 150; ++frame)
+  {
+    const RigidBody* disk = find_body(step(1).state, set.response.state.bodies[1].id);
+    ASSERT_NE(disk, nullptr);
+    const double height = disk->pose.y - 0.25;
+    lowest = std::min(lowest, height);
+    bounced = bounced || disk->twist.linear.y > 0.0;
+    if (bounced)
+    {
+      apex_after_bounce = std::max(apex_after_bounce, height);
+    }
+  }
+  ASSERT_TRUE(bounced) << "the disk never moved up";
+  // Frames sample the fall every dt: the lowest sample is within one frame's
+  // travel at impact speed of the ground.
+  const double impact_speed = std::sqrt(2.0 * -set.response.state.settings.gravity.y * kHeight);
+  EXPECT_LT(lowest, impact_speed * set.response.state.settings.dt) << "bounced before reaching the ground";
+  EXPECT_GE(lowest, -0.01) << "sank into the ground";
+  // Newton's e (min of the two materials, 0.8) returns e^2 of the drop height.
+  EXPECT_NEAR(apex_after_bounce, kRestitution * kRestitution * kHeight, 0.15 * kHeight);
+}
+
+TEST_F(WorldServices, TopicPublishesEveryStep)
+{
+  std::mutex mutex;
+  std::vector<std::uint64_t> frames;
+  ros::NodeHandle handle;
+  ros::Subscriber subscriber = handle.subscribe<WorldState>("world_state", 10, [&](const WorldState::ConstPtr& state) {
+    std::lock_guard<std::mutex> lock(mutex);
+    frames.push_back(state->frame_count);
+  });
+  // Latched: the last state arrives on subscribing.
+  const ros::WallTime deadline = ros::WallTime::now() + ros::WallDuration(kServiceWait);
+  const auto received = [&](std::uint64_t frame) {
+    std::lock_guard<std::mutex> lock(mutex);
+    return std::find(frames.begin(), frames.end(), frame) != frames.end();
+  };
+  while (!received(before_.frame_count) && ros::WallTime::now() < deadline)
+  {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  EXPECT_TRUE(received(before_.frame_count)) << "latched state not received";
+  step(1);
+  step(1);
+  while (!received(before_.frame_count + 2) && ros::WallTime::now() < deadline)
+  {
+    ros::spinOnce();
+    ros::WallDuration(0.01).sleep();
+  }
+  EXPECT_TRUE(received(before_.frame_count + 1));
+  EXPECT_TRUE(received(before_.frame_count + 2));
+}
+
+TEST_F(WorldServices, AddRemoveAndReset)
+{
+  AddBody::Request add;
+  add.body = disk_msg(999, {5.0, 3.0});
+  const AddBody added = call<AddBody>("add_body", add);
+  ASSERT_TRUE(added.response.success) << added.response.message;
+  WorldState state = get_world();
+  ASSERT_NE(find_body(state, added.response.id), nullptr);
+  EXPECT_EQ(state.bodies.size(), before_.bodies.size() + 1);
+
+  RemoveBody::Request remove;
+  remove.id = added.response.id;
+  EXPECT_TRUE(call<RemoveBody>("remove_body", remove).response.success);
+  EXPECT_EQ(find_body(get_world(), added.response.id), nullptr);
+
+  const std_srvs::Trigger reset = call<std_srvs::Trigger>("reset_world");
+  EXPECT_TRUE(reset.response.success) << reset.response.message;
+  state = get_world();
+  EXPECT_EQ(state.frame_count, 0u);
+  EXPECT_EQ(state.scene, "resting_box");
+}
+
+TEST_F(WorldServices, SetWorldRoundTripsGetWorld)
+{
+  SetWorld::Request request;
+  request.bodies = before_.bodies;
+  request.settings = before_.settings;
+  const SetWorld set = call<SetWorld>("set_world", request);
+  ASSERT_TRUE(set.response.success) << set.response.message;
+  // Same bodies and settings, restarted at frame 0.
+  ASSERT_EQ(set.response.state.bodies.size(), before_.bodies.size());
+  for (std::size_t i = 0; i < before_.bodies.size(); ++i)
+  {
+    EXPECT_EQ(set.response.state.bodies[i].pose, before_.bodies[i].pose);
+    EXPECT_EQ(set.response.state.bodies[i].twist, before_.bodies[i].twist);
+    EXPECT_EQ(set.response.state.bodies[i].material, before_.bodies[i].material);
+  }
+  EXPECT_EQ(set.response.state.settings, before_.settings);
+  EXPECT_EQ(set.response.state.frame_count, 0u);
+}
+
+TEST_F(WorldServices, NonFiniteNumbers)
+{
+  RigidBody bad = disk_msg(0, {0.0, 0.0});
+  bad.pose.x = kNaN;
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): pose.x = nan is not finite");
+  bad = disk_msg(0, {0.0, 0.0});
+  bad.twist.linear.y = kInf;
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): twist.linear.y = inf is not finite");
+  AddBody::Request add;
+  add.body = disk_msg(0, {1.0, 1.0});
+  add.body.radius = kNaN;
+  expect_rejected(call<AddBody>("add_body", add).response, "body: radius = nan is not finite");
+}
+
+TEST_F(WorldServices, NonPositiveMassOrRadius)
+{
+  expect_rejected(set_with_bad_second(disk_msg(0, {0.0, 0.0}, {}, 0.5, 0.0)), "bodies[1] (id 7): mass = 0 must be > 0");
+  expect_rejected(set_with_bad_second(disk_msg(0, {0.0, 0.0}, {}, -0.1)),
+                  "bodies[1] (id 7): radius = -0.1 must be > 0");
+}
+
+TEST_F(WorldServices, BadOutlines)
+{
+  RigidBody bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
+  bad.vertices.resize(2);
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices: 2 given, a POLYGON needs at least 3");
+  bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
+  std::reverse(bad.vertices.begin(), bad.vertices.end());
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices are clockwise");
+  bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
+  bad.vertices[2].x = 0.0;  // (0.5, 0.5) -> (0, -0.2): a dent at vertex 2
+  bad.vertices[2].y = -0.2;
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices[2]: the outline turns clockwise here");
+  bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
+  bad.vertices.resize(3);
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    bad.vertices[i].x = 0.5 * i;  // three distinct points on a line
+    bad.vertices[i].y = 0.0;
+  }
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices enclose zero area");
+}
+
+TEST_F(WorldServices, UnknownShapeType)
+{
+  RigidBody bad = disk_msg(0, {0.0, 0.0});
+  bad.shape = 2;
+  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): shape = 2 is not DISK (0) or POLYGON (1)");
+}
+
+TEST_F(WorldServices, CoincidentCentres)
+{
+  expect_rejected(set_with_bad_second(disk_msg(0, {-10.0, 5.0})), "bodies[0] (id 3) and bodies[1] (id 7)");
+  AddBody::Request add;
+  add.body = disk_msg(0, {before_.bodies.back().pose.x, before_.bodies.back().pose.y}, {}, 0.1);
+  expect_rejected(call<AddBody>("add_body", add).response,
+                  "centre coincides with that of body id " + std::to_string(before_.bodies.back().id));
+}
+
+TEST_F(WorldServices, OutOfRangeSettings)
+{
+  SetWorld::Request request;
+  request.bodies = {disk_msg(0, {0.0, 0.0})};
+  request.settings = before_.settings;
+  request.settings.substeps = 0;
+  expect_rejected(call<SetWorld>("set_world", request).response, "substeps");
+  request.settings = before_.settings;
+  request.settings.friction = 9;
+  expect_rejected(call<SetWorld>("set_world", request).response, "settings: friction = 9 is not AUTO (0), ON (1) or OFF (2)");
+
+  StepWorld::Request step_request;
+  step_request.frames = 0;
+  expect_rejected(call<StepWorld>("step_world", step_request).response, "frames = 0 must be in [1, 2000]");
+  step_request.frames = kMaxFrames + 1;
+  expect_rejected(call<StepWorld>("step_world", step_request).response, "frames = 2001");
+  step_request.frames = 1;
+  step_request.dt = kNaN;
+  expect_rejected(call<StepWorld>("step_world", step_request).response, "dt = nan is not finite");
+
+  ResolveContacts::Request resolve;
+  resolve.bodies = {disk_msg(0, {0.0, 0.0})};
+  resolve.settings = ros_test::solver_settings(-0.5, 0.0);
+  expect_rejected(call<ResolveContacts>("resolve_contacts", resolve).response,
+                  "settings: restitution = -0.5 must be in [0, 1]");
+}
+
+TEST_F(WorldServices, UnknownSceneOrBody)
+{
+  LoadScene::Request request;
+  request.scene = "no_such_scene";
+  const LoadScene srv = call<LoadScene>("load_scene", request);
+  expect_rejected(srv.response, "unknown scene 'no_such_scene' (known: ");
+  EXPECT_TRUE(std::find(srv.response.available.begin(), srv.response.available.end(), "pyramid") !=
+              srv.response.available.end());
+  request.scene = "/nonexistent/scene.yaml";
+  expect_rejected(call<LoadScene>("load_scene", request).response, "scene '/nonexistent/scene.yaml'");
+
+  RemoveBody::Request remove;
+  remove.id = 123456;
+  expect_rejected(call<RemoveBody>("remove_body", remove).response, "id 123456: no body with this id");
+}
+
+TEST_F(WorldServices, MoreBodiesThanTheLimit)
+{
+  SetWorld::Request request;
+  request.keep_settings = true;
+  for (std::uint32_t i = 0; i <= kMaxBodies; ++i)
+  {
+    request.bodies.push_back(disk_msg(i, {2.0 * i, 0.0}));
+  }
+  expect_rejected(call<SetWorld>("set_world", request).response, "65 given, more than the limit of 64");
+  // A shipped scene above the limit is refused the same way (pyramid: 210 boxes).
+  LoadScene::Request load_request;
+  load_request.scene = "pyramid";
+  expect_rejected(call<LoadScene>("load_scene", load_request).response, "more than the limit of 64");
+}
+
+}  // namespace
+}  // namespace collision2d
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "test_world_services");
+  ros::NodeHandle handle;
+  for (const char* service : {"get_world", "step_world", "load_scene", "set_world", "reset_world"})
+  {
+    if (!ros::service::waitForService(service, ros::Duration(collision2d::kServiceWait)))
+    {
+      ADD_FAILURE() << service << " never came up";
+    }
+  }
+  return RUN_ALL_TESTS();
+}

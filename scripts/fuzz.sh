@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets in fuzz/ with clang (-fsanitize=fuzzer,address,
+# undefined) and runs each for the given number of seconds (default 60),
+# starting from the seed corpus in fuzz/corpus/<target> plus the shipped
+# scenarios and scenes. Prints executions and crashes per target and fails
+# when any target crashed (the reproducer is kept in
+# <repo>/.build/fuzz/artifacts/<target>/; turn it into a regression test in
+# test/unit/). Idempotent: reuses <repo>/.build/fuzz and its grown corpora.
+#
+# Usage: scripts/fuzz.sh [seconds-per-target]
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+SECONDS_PER_TARGET="${1:-60}"
+BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz"
+JOBS="${COLLISION2D_JOBS:-2}"
+TARGETS=(fuzz_scenario fuzz_scene_yaml fuzz_solve)
+# Per-input limits: a single input running longer or using more memory than
+# this is reported by libFuzzer as a crash (timeout / out of memory).
+INPUT_TIMEOUT_S=20
+RSS_LIMIT_MB=2048
+MAX_INPUT_BYTES=4096
+
+log() { printf '[fuzz] %s\n' "$*" >&2; }
+
+[[ $SECONDS_PER_TARGET =~ ^[0-9]+$ && $SECONDS_PER_TARGET -gt 0 ]] ||
+  { log "usage: $0 [seconds-per-target > 0]"; exit 2; }
+command -v clang++ >/dev/null || { log "clang++ not found (install clang and libclang-rt-dev)"; exit 2; }
+
+log "configuring $BUILD_DIR with clang++"
+cmake -S "$ROOT/fuzz" -B "$BUILD_DIR/build" -DCMAKE_CXX_COMPILER=clang++ \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+log "building (-j$JOBS)"
+cmake --build "$BUILD_DIR/build" -j"$JOBS" --target "${TARGETS[@]}"
+
+# Extra read-only seed folders per target (libFuzzer adds new inputs to the
+# first corpus folder only).
+extra_seeds() {
+  case "$1" in
+    fuzz_scenario) echo "$ROOT/config/scenarios" ;;
+    fuzz_scene_yaml) echo "$ROOT/config/scenes" ;;
+  esac
+}
+
+export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+failed=0
+summary=()
+for target in "${TARGETS[@]}"; do
+  corpus="$BUILD_DIR/corpus/$target"
+  artifacts="$BUILD_DIR/artifacts/$target"
+  mkdir -p "$corpus" "$artifacts"
+  seeds=("$ROOT/fuzz/corpus/$target")
+  extra="$(extra_seeds "$target")"
+  [[ -n $extra && -d $extra ]] && seeds+=("$extra")
+  log "running $target for ${SECONDS_PER_TARGET}s"
+  output="$BUILD_DIR/$target.log"
+  status=0
+  "$BUILD_DIR/build/$target" -max_total_time="$SECONDS_PER_TARGET" -timeout="$INPUT_TIMEOUT_S" \
+    -rss_limit_mb="$RSS_LIMIT_MB" -max_len="$MAX_INPUT_BYTES" -print_final_stats=1 \
+    -artifact_prefix="$artifacts/" "$corpus" "${seeds[@]}" >"$output" 2>&1 || status=$?
+  executions="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$output" | grep -o '[0-9]*$' | tail -1)"
+  # Only this run's reproducers count: older ones stay for inspection.
+  crashes="$(grep -c '^artifact_prefix=\|Test unit written to' "$output" || true)"
+  if [[ $status -ne 0 ]]; then
+    failed=1
+    tail -n 60 "$output" >&2
+    summary+=("$target: FAILED (exit $status), ${executions:-?} executions, ${crashes} crash input(s) in $artifacts")
+  else
+    summary+=("$target: ok, ${executions:-?} executions, 0 crashes, corpus $(find "$corpus" -type f | wc -l) inputs")
+  fi
+done
+
+printf '%s\n' "${summary[@]}"
+if [[ $failed -ne 0 ]]; then
+  log "FAILED: a target crashed (see the reproducers above)"
+  exit 1
+fi
+log "no crashes"

@@ -1,0 +1,220 @@
+// Extreme speeds (issue 7): bodies at 1e4 m/s do not tunnel with time of
+// impact on (ContactSolver::step and World with time_of_impact On or Auto),
+// the same World scene with it Off does tunnel (so the check can fail), and
+// spin at 1e4 rad/s stays finite without gaining energy.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "collision2d/contact_solver.h"
+#include "collision2d/scene.h"
+#include "collision2d/scenes/scene_parts.h"
+#include "collision2d/scenes/standard_scenes.h"
+#include "extremes_support.h"
+#include "solver_test_support.h"
+
+namespace collision2d
+{
+namespace
+{
+constexpr double kSpeed = 1e4;  // m/s
+constexpr double kSpin = 1e4;   // rad/s
+constexpr double kWallX = 5.0;  // m, centre of the thin wall
+constexpr double kWallThickness = 0.05;  // m
+constexpr double kBulletRadius = 0.05;   // m
+/// Allowed overlap at the time of impact: the touch tolerance (1e-9 of the
+/// pair's size) plus round-off of p + t v at |v| = 1e4 (m).
+constexpr double kTouchSlack = 1e-8;
+/// Velocities after an impact against the formula, relative to kSpeed.
+constexpr double kVelocityRelativeTol = 1e-9;
+
+double wall_face() { return kWallX - 0.5 * kWallThickness; }
+
+/// Largest x any point of `b` reaches.
+double front(const Body& b)
+{
+  if (b.shape() == Shape::Disk)
+  {
+    return b.position().x + b.radius();
+  }
+  double x = -1e300;
+  for (std::size_t i = 0; i < b.vertex_count(); ++i)
+  {
+    x = std::max(x, b.world_vertex(i).x);
+  }
+  return x;
+}
+
+std::vector<Body> bullet_and_wall(const Body& bullet)
+{
+  return {scenes::make_static_box(kWallThickness, 4.0, {kWallX, 0.0}), bullet};
+}
+
+/// Steps until the bullet has left; it must never pass the wall's face and
+/// must come back at e times its speed.
+void check_step_bounce(const Body& bullet, double e, const char* what)
+{
+  std::vector<Body> bodies = bullet_and_wall(bullet);
+  const ContactSolver solver(e, 0.0);
+  const SolveReport first = solver.step(bodies);
+  const double overshoot = front(bodies[1]) - wall_face();
+  EXPECT_GT(first.time_of_impact, 0.0) << what;
+  EXPECT_LT(first.time_of_impact, 1.0) << what;
+  EXPECT_LE(overshoot, kTouchSlack) << what;
+  EXPECT_NEAR(bodies[1].velocity().x, -e * kSpeed, kVelocityRelativeTol * kSpeed) << what;
+  for (int k = 0; k < 3; ++k)
+  {
+    solver.step(bodies);
+    EXPECT_LE(front(bodies[1]) - wall_face(), kTouchSlack) << what << ", step " << k + 2;
+  }
+  std::printf("%s, e = %.1f: toi %.9f, overshoot at impact %.3g m (bound %.1g), vx after %.6g m/s\n", what, e,
+              first.time_of_impact, overshoot, kTouchSlack, bodies[1].velocity().x);
+}
+
+TEST(ExtremesSpeed, StepDiskBulletDoesNotTunnel)
+{
+  for (double e : {0.0, 1.0})
+  {
+    check_step_bounce(Body(0.1, kBulletRadius, {0.0, 0.0}, {kSpeed, 0.0}), e, "disk at 1e4 m/s");
+  }
+}
+
+TEST(ExtremesSpeed, StepSliverBulletDoesNotTunnel)
+{
+  // Aspect 1000, turned so it meets the wall corner first.
+  const Body sliver(0.1, scenes::box_outline(0.5, 0.0005), {0.0, 0.0}, {kSpeed, 0.0}, 0.3);
+  for (double e : {0.0, 1.0})
+  {
+    std::vector<Body> bodies = bullet_and_wall(sliver);
+    ContactSolver(e, 0.0).step(bodies);
+    const double overshoot = front(bodies[1]) - wall_face();
+    EXPECT_LE(overshoot, kTouchSlack);
+    EXPECT_LT(bodies[1].velocity().x, kSpeed) << "the impact must take speed off";
+    EXPECT_TRUE(test::all_finite(bodies));
+    std::printf("sliver at 1e4 m/s, e = %.1f: overshoot %.3g m, v after (%.6g, %.6g), w %.6g\n", e, overshoot,
+                bodies[1].velocity().x, bodies[1].velocity().y, bodies[1].omega());
+  }
+}
+
+TEST(ExtremesSpeed, StepHeadOnDisksExchangeVelocities)
+{
+  // 100 m apart, each at 1e4 m/s: one unit step would carry them through
+  // each other many times over.
+  std::vector<Body> bodies = {Body(1.0, 0.5, {0.0, 0.0}, {kSpeed, 0.0}), Body(1.0, 0.5, {100.0, 0.0}, {-kSpeed, 0.0})};
+  const SolveReport report = ContactSolver(1.0, 0.0).step(bodies);
+  const double gap = bodies[1].position().x - bodies[0].position().x - 1.0;
+  EXPECT_NEAR(report.time_of_impact, 99.0 / (2.0 * kSpeed), 1e-12);
+  EXPECT_GE(gap, -kTouchSlack);
+  EXPECT_NEAR(bodies[0].velocity().x, -kSpeed, kVelocityRelativeTol * kSpeed);
+  EXPECT_NEAR(bodies[1].velocity().x, kSpeed, kVelocityRelativeTol * kSpeed);
+  std::printf("head-on at 2e4 m/s closing: toi %.12f, gap at impact %.3g m\n", report.time_of_impact, gap);
+}
+
+/// Frames of the bullet_wall scene at kSpeed; returns the largest overshoot
+/// of the bullet past the wall's face seen after any frame (m).
+double world_bullet_overshoot(Toggle toi)
+{
+  Scene scene = scenes::bullet_wall(kSpeed);
+  scene.settings.time_of_impact = toi;
+  World world = make_world(scene);
+  const BodyId bullet = 1;
+  double worst = -1e300;
+  constexpr int kFrames = 30;
+  for (int f = 0; f < kFrames; ++f)
+  {
+    world.step();
+    EXPECT_TRUE(test::all_finite(world));
+    worst = std::max(worst, front(world.body(bullet)) - wall_face());
+  }
+  return worst;
+}
+
+TEST(ExtremesSpeed, WorldBulletDoesNotTunnelWithTimeOfImpact)
+{
+  for (Toggle toi : {Toggle::On, Toggle::Auto})
+  {
+    const double overshoot = world_bullet_overshoot(toi);
+    // The world's position correction leaves up to its slop of overlap.
+    const double bound = WorldSettings().slop + kTouchSlack;
+    EXPECT_LE(overshoot, bound) << (toi == Toggle::On ? "On" : "Auto");
+    test::print_figure(std::string("world bullet 1e4 m/s, toi ") + (toi == Toggle::On ? "On" : "Auto") +
+                           ": overshoot (m)",
+                       overshoot, bound);
+  }
+}
+
+TEST(ExtremesSpeed, WorldBulletTunnelsWithTimeOfImpactOff)
+{
+  // The control: the scene really is one where discrete steps tunnel.
+  const double overshoot = world_bullet_overshoot(Toggle::Off);
+  EXPECT_GT(overshoot, kWallThickness);
+  std::printf("world bullet 1e4 m/s, toi Off: overshoot %.4g m (expected past the wall)\n", overshoot);
+}
+
+TEST(ExtremesSpeed, SpinningBoxOnGroundStaysFiniteAndLosesEnergy)
+{
+  // A 1 m box spinning at 1e4 rad/s dropped onto rough ground: the corners
+  // move at 7e3 m/s and turn 40 rad per substep.
+  Scene scene;
+  scenes::add_ground(scene, scenes::GroundParams{});
+  scene.bodies.push_back(
+      SceneBody{scenes::make_box(1.0, 1.0, 1.0, {0.0, 2.0}, 0.0, {0.0, 0.0}, kSpin), scenes::rough_material(), "box"});
+  World world = make_world(scene);
+  const BodyId box = 1;
+  const double g = -scene.settings.gravity.y;
+  auto total_energy = [&] {
+    const Body& b = world.body(box);
+    return b.kinetic_energy() + b.mass() * g * b.position().y;
+  };
+  const double start = total_energy();
+  const long frames = test::sized(600, 120, "spinning box frames");
+  double worst_rise = 0.0;
+  double lowest = 1e300;
+  for (long f = 0; f < frames; ++f)
+  {
+    world.step();
+    ASSERT_TRUE(test::all_finite(world)) << "frame " << f;
+    worst_rise = std::max(worst_rise, (total_energy() - start) / start);
+    lowest = std::min(lowest, world.body(box).position().y);
+  }
+  // Contacts only dissipate here (e = 0, friction); allow round-off.
+  constexpr double kEnergyRiseTol = 1e-9;
+  constexpr double kLowestCentre = 0.5 - 0.1;  // m: half the box, less a tenth of its size of sinking
+  EXPECT_LE(worst_rise, kEnergyRiseTol);
+  EXPECT_GE(lowest, kLowestCentre);
+  std::printf("box spinning at 1e4 rad/s on ground, %ld frames:\n", frames);
+  test::print_figure("largest rise of kinetic + potential energy (relative)", worst_rise, kEnergyRiseTol);
+  test::print_figure("lowest centre height (m), at least", lowest, kLowestCentre);
+  test::print_figure("spin at the end (rad/s)", world.body(box).omega(), kSpin);
+}
+
+TEST(ExtremesSpeed, SpinningBodiesInContactSolveFinite)
+{
+  // Two boxes spinning at +-1e4 rad/s, overlapping: one solve and one step.
+  for (double e : {0.0, 1.0})
+  {
+    std::vector<Body> bodies = {scenes::make_box(1.0, 1.0, 1.0, {0.0, 0.0}, 0.0, {}, kSpin),
+                                scenes::make_box(1.0, 1.0, 1.0, {0.99, 0.1}, 0.0, {}, -kSpin)};
+    const double before = test::total_kinetic_energy(bodies);
+    const Vec2 p_before = test::total_momentum(bodies);
+    const double l_before = test::total_angular_momentum(bodies);
+    // solve only: position correction moves bodies, which changes the
+    // angular momentum about the origin.
+    const SolveReport report = ContactSolver(e, 0.5).solve(bodies, ContactSolver::detect_contacts(bodies));
+    ASSERT_TRUE(test::all_finite(bodies));
+    const double scale = kSpin;  // momentum scale: I w ~ 1e4 / 6, m v ~ r w
+    EXPECT_LE(length(test::total_momentum(bodies) - p_before), 1e-12 * scale);
+    EXPECT_NEAR(test::total_angular_momentum(bodies), l_before, 1e-12 * scale);
+    EXPECT_LE(report.kinetic_energy_after, before * (1.0 + 1e-12)) << "e " << e;
+    std::printf("boxes spinning at +-1e4 rad/s, e = %.0f: energy %.6g -> %.6g J, %d sweeps, residual %.3g\n", e,
+                before, report.kinetic_energy_after, report.iterations, report.max_residual);
+    ContactSolver(e, 0.5).step(bodies);
+    EXPECT_TRUE(test::all_finite(bodies));
+  }
+}
+
+}  // namespace
+}  // namespace collision2d

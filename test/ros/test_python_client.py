@@ -2,16 +2,18 @@
 """A rospy client of the collision2d services, as a Python user would write it.
 
 Checks the physics on what comes back: momentum and the Newton target of a
-head-on impact, a bad request's message, and a step published on world_state.
+head-on impact, a bad request's message, a step published on world_state, and
+runtime tuning through dynamic_reconfigure.
 """
 import math
 import threading
 import unittest
 
+import dynamic_reconfigure.client
 import rospy
 import rostest
 from collision2d.msg import RigidBody, SolverSettings, WorldState
-from collision2d.srv import LoadScene, ResolveContacts, StepWorld
+from collision2d.srv import GetWorld, LoadScene, ResolveContacts, StepWorld
 
 SERVICE_WAIT_S = 30.0
 
@@ -32,7 +34,7 @@ class PythonClient(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node("test_python_client")
-        for name in ("resolve_contacts", "step_world", "load_scene"):
+        for name in ("resolve_contacts", "step_world", "load_scene", "get_world"):
             rospy.wait_for_service(name, timeout=SERVICE_WAIT_S)
         cls.resolve = rospy.ServiceProxy("resolve_contacts", ResolveContacts)
 
@@ -81,6 +83,28 @@ class PythonClient(unittest.TestCase):
             self.assertTrue(done.wait(SERVICE_WAIT_S), "world_state never showed frame 5: %s" % received)
         finally:
             subscriber.unregister()
+
+    def test_dynamic_reconfigure_tunes_solver_and_world(self):
+        reconfigure = dynamic_reconfigure.client.Client("world", timeout=SERVICE_WAIT_S)
+        loaded = rospy.ServiceProxy("load_scene", LoadScene)(scene="resting_box")
+        self.assertTrue(loaded.success, loaded.message)
+        # After a load the world group shows the scene's settings.
+        shown = reconfigure.get_configuration(timeout=SERVICE_WAIT_S)
+        self.assertEqual(shown["world_substeps"], loaded.state.settings.substeps)
+        self.assertAlmostEqual(shown["world_dt"], loaded.state.settings.dt, places=12)
+        original = shown["solver_restitution"]
+        try:
+            reconfigure.update_configuration({"solver_restitution": 1.0, "world_substeps": 7})
+            # ResolveContacts with the node's settings is now perfectly elastic.
+            request = SolverSettings(use_node_settings=True)
+            response = self.resolve(bodies=[disk(1, 0.0, 1.0), disk(2, 0.95, -1.0)], settings=request)
+            self.assertTrue(response.success, response.message)
+            v1, v2 = (b.twist.linear.x for b in response.bodies)
+            self.assertAlmostEqual(v2 - v1, 2.0, places=7)
+            world = rospy.ServiceProxy("get_world", GetWorld)()
+            self.assertEqual(world.state.settings.substeps, 7)
+        finally:
+            reconfigure.update_configuration({"solver_restitution": original})
 
 
 if __name__ == "__main__":

@@ -4,7 +4,6 @@
 #include "metrics.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -251,13 +250,17 @@ RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, cons
 {
   RunMetrics m;
   const int frames = frames_for(options.timing_seconds, scene.scene.settings.dt);
-  std::vector<double> ms;
+  std::vector<double> wall;
+  std::vector<double> cpu;
   for (int r = 0; r < options.repetitions; ++r)
   {
     std::unique_ptr<Engine> engine = make_engine(scene.scene, config);
-    ms.push_back(time_frames(*engine, frames));
+    const FrameTime t = time_frames(*engine, frames);
+    wall.push_back(t.wall_ms);
+    cpu.push_back(t.cpu_ms);
   }
-  m.ms_per_step = median(ms);
+  m.ms_per_step = median(wall);
+  m.cpu_ms_per_step = median(cpu);
   const double seconds = options.seconds > 0.0 ? options.seconds : scene.seconds;
   measure_accuracy(scene, config, seconds, options.settle_seconds, m);
   return m;

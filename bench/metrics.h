@@ -10,7 +10,7 @@ namespace bench
 {
 struct RunOptions
 {
-  double timing_seconds = 1.0;  ///< simulated time of each timed repetition (s)
+  double timing_seconds = 0.5;  ///< simulated time of each timed repetition (s)
   int repetitions = 5;          ///< timed repetitions; the median is reported
   double settle_seconds = 1.0;  ///< Resting: drift is measured from this time on (s)
   double seconds = 0.0;         ///< accuracy run length; 0 takes the scene's own (s)
@@ -19,6 +19,7 @@ struct RunOptions
 struct RunMetrics
 {
   double ms_per_step = 0.0;      ///< median wall time of one frame (ms)
+  double cpu_ms_per_step = 0.0;  ///< median thread CPU time of one frame (ms)
   double max_penetration = 0.0;  ///< largest overlap any pair showed at a frame end (m)
   double drift = NAN;            ///< Resting: largest move of a dynamic body after settling (m)
   double sink = NAN;             ///< Resting: largest move while settling (m)

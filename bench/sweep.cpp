@@ -13,6 +13,7 @@ namespace
 {
 constexpr double kStandSeconds = 60.0;       // the target: stacks stand for a minute (s)
 constexpr double kQuickStandSeconds = 20.0;  // s
+constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an exact failure falls back to
 
 /// SFINAE: true when WorldSettings has a `solver_mode` field (issue 6 adds
 /// it); the benchmark then sweeps it without needing a code change.
@@ -186,7 +187,12 @@ std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick)
     add_substeps(base, {16}, runs);
     return runs;
   }
-  add_iterations(base, quick ? std::vector<int>{1, 8, 64} : std::vector<int>{1, 4, 8, 16, 32, 64, 128, 256}, runs);
+  // Every pass over the pyramid's ~800 contact points costs: 64 iterations
+  // already take ~30 ms a frame, so the pyramid stops there to keep the whole
+  // report within its time budget on two shared cores.
+  const std::vector<int> full_iterations = scene.name == "pyramid" ? std::vector<int>{1, 2, 4, 8, 16, 64}
+                                                                   : std::vector<int>{1, 2, 4, 8, 16, 64, 256};
+  add_iterations(base, quick ? std::vector<int>{1, 8, 32} : full_iterations, runs);
   add_substeps(base, quick ? std::vector<int>{1, 16} : std::vector<int>{1, 2, 8, 16}, runs);
   add_toggles(base, &WorldSettings::warm_starting, "warm_starting", {Toggle::On, Toggle::Off}, runs);
   if (is_headline(scene))
@@ -195,7 +201,7 @@ std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick)
     add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
     if (!quick)
     {
-      add_grid(base, {1, 2, 8}, {1, 4, 16}, runs);
+      add_grid(base, {1, 2, 8}, {1, 8}, runs);
     }
   }
   return runs;
@@ -230,9 +236,11 @@ std::vector<RunSpec> peer_runs(const BenchScene& scene, bool quick)
 std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
 {
   const double seconds = quick ? kQuickStandSeconds : kStandSeconds;
+  // A 60 s pyramid costs 3600 frames of several ms each: two settings only.
+  const bool pyramid = scene.name == "pyramid";
   const std::vector<std::pair<int, int>> points =
-      quick ? std::vector<std::pair<int, int>>{{4, 2}, {8, 8}}
-            : std::vector<std::pair<int, int>>{{4, 2}, {4, 8}, {8, 8}, {16, 16}};
+      quick || pyramid ? std::vector<std::pair<int, int>>{{4, 2}, {8, 4}}
+                       : std::vector<std::pair<int, int>>{{4, 2}, {4, 8}, {8, 8}, {16, 16}};
   std::vector<RunSpec> runs;
   for (const auto& point : points)
   {
@@ -261,8 +269,9 @@ std::vector<SolverSweepPoint> solver_points(bool quick)
     }
     for (double tol : tolerances)
     {
-      // Pivoting ignores the iteration cap; tol only judges convergence.
-      points.push_back(SolverSweepPoint{SolverMode::Exact, 1, tol, ratio});
+      // Pivoting ignores the iteration cap (it only bounds the iterative
+      // fallback); tol only judges convergence.
+      points.push_back(SolverSweepPoint{SolverMode::Exact, kExactFallbackIterations, tol, ratio});
     }
   }
   return points;

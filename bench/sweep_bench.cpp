@@ -1,6 +1,7 @@
 // collision2d_sweep_bench: the speed/accuracy sweep of issue 6. Prints CSV.
 //
-//   collision2d_sweep_bench world|peers|stand [--quick] [--scene NAME]... [--reps N] [--out FILE]
+//   collision2d_sweep_bench PART... [--quick] [--scene NAME]... [--reps N] [--out FILE]
+//     with PART among world, peers, stand (one CSV, one header)
 //   collision2d_sweep_bench solver [--quick] [--scenes N] [--out FILE]
 //
 // CSV goes to FILE (default stdout): the packaged Chipmunk prints a banner
@@ -37,7 +38,7 @@ constexpr int kQuickRepetitions = 3;
 
 struct Arguments
 {
-  std::string part;
+  std::vector<std::string> parts;
   bool quick = false;
   std::vector<std::string> scenes;  ///< empty: all
   RunOptions options;
@@ -50,7 +51,7 @@ FILE* g_csv = stdout;
 [[noreturn]] void usage(const std::string& problem)
 {
   std::fprintf(stderr,
-               "%s\nusage: collision2d_sweep_bench world|peers|stand|solver [--quick] [--scene NAME]... "
+               "%s\nusage: collision2d_sweep_bench world|peers|stand...|solver [--quick] [--scene NAME]... "
                "[--reps N] [--scenes N] [--out FILE]\n",
                problem.c_str());
   std::exit(2);
@@ -58,19 +59,16 @@ FILE* g_csv = stdout;
 
 Arguments parse_arguments(int argc, char** argv)
 {
-  if (argc < 2)
-  {
-    usage("missing part");
-  }
   Arguments args;
-  args.part = argv[1];
   bool reps_given = false;
   bool scenes_given = false;
-  for (int i = 2; i < argc; ++i)
+  for (int i = 1; i < argc; ++i)
   {
     const std::string flag = argv[i];
     const bool has_value = i + 1 < argc;
-    if (flag == "--quick")
+    if (flag.compare(0, 2, "--") != 0)
+      args.parts.push_back(flag);
+    else if (flag == "--quick")
       args.quick = true;
     else if (flag == "--scene" && has_value)
       args.scenes.push_back(argv[++i]);
@@ -87,6 +85,8 @@ Arguments parse_arguments(int argc, char** argv)
     args.options.repetitions = kQuickRepetitions;
   if (args.quick && !scenes_given)
     args.solver_scenes = kQuickSolverScenes;
+  if (args.parts.empty())
+    usage("missing part");
   if (args.options.repetitions < 1 || args.solver_scenes < 1)
     usage("--reps and --scenes must be positive");
   return args;
@@ -94,12 +94,12 @@ Arguments parse_arguments(int argc, char** argv)
 
 void print_run_header()
 {
-  std::fprintf(g_csv, "scene,kind,engine,variant,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
-              "solver_mode,seconds,ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
+  std::fprintf(g_csv, "part,scene,kind,engine,variant,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
+              "solver_mode,seconds,ms_per_step,cpu_ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
               "incline_accel_error,tunnelled,error,error_name\n");
 }
 
-void print_run(const BenchScene& scene, const RunSpec& run, double seconds, const RunMetrics& m)
+void print_run(const std::string& part, const BenchScene& scene, const RunSpec& run, double seconds, const RunMetrics& m)
 {
   const WorldSettings& s = run.config.settings;
   const bool peer_defaults = run.config.kind != EngineKind::Collision2d && run.config.variant == PeerVariant::Defaults;
@@ -107,12 +107,12 @@ void print_run(const BenchScene& scene, const RunSpec& run, double seconds, cons
   // A peer's defaults use its own steps and iterations: leave ours out.
   const std::string substeps = peer_defaults ? "" : std::to_string(s.substeps);
   const std::string iterations = peer_defaults ? "" : std::to_string(s.velocity_iterations);
-  std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
-              scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
+  std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
+              part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
               variant_name(run.config.variant).c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
               iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
               ours ? toggle_name(s.time_of_impact).c_str() : "", ours ? world_mode_name(s).c_str() : "", seconds,
-              m.ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error, m.incline_error,
+              m.ms_per_step, m.cpu_ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error, m.incline_error,
               m.tunnelled, m.error, error_name(scene.kind).c_str());
   std::fflush(g_csv);
 }
@@ -126,21 +126,28 @@ std::vector<RunSpec> runs_for(const std::string& part, const BenchScene& scene, 
   return scene.name == "pyramid" || scene.name == "column" ? stand_runs(scene, quick) : std::vector<RunSpec>{};
 }
 
+void run_scene(const Arguments& args, const std::string& part, const BenchScene& scene)
+{
+  for (const RunSpec& run : runs_for(part, scene, args.quick))
+  {
+    RunOptions options = args.options;
+    options.seconds = run.seconds;
+    std::fprintf(stderr, "%s %s %s %s=%s\n", part.c_str(), scene.name.c_str(), engine_name(run.config.kind).c_str(),
+                 run.knob.c_str(), run.value.c_str());
+    const RunMetrics m = measure_run(scene, run.config, options);
+    print_run(part, scene, run, run.seconds > 0.0 ? run.seconds : scene.seconds, m);
+  }
+}
+
 void run_scenes(const Arguments& args)
 {
   const std::vector<std::string> names = args.scenes.empty() ? bench_scene_names() : args.scenes;
   print_run_header();
-  for (const std::string& name : names)
+  for (const std::string& part : args.parts)
   {
-    const BenchScene scene = make_bench_scene(name);
-    for (const RunSpec& run : runs_for(args.part, scene, args.quick))
+    for (const std::string& name : names)
     {
-      RunOptions options = args.options;
-      options.seconds = run.seconds;
-      std::fprintf(stderr, "%s %s %s %s=%s\n", args.part.c_str(), name.c_str(), engine_name(run.config.kind).c_str(),
-                   run.knob.c_str(), run.value.c_str());
-      const RunMetrics m = measure_run(scene, run.config, options);
-      print_run(scene, run, run.seconds > 0.0 ? run.seconds : scene.seconds, m);
+      run_scene(args, part, make_bench_scene(name));
     }
   }
 }
@@ -173,12 +180,16 @@ int main(int argc, char** argv)
   }
   try
   {
-    if (args.part == "solver")
+    for (const std::string& part : args.parts)
+    {
+      const bool known = part == "solver" || part == "world" || part == "peers" || part == "stand";
+      if (!known || (part == "solver" && args.parts.size() > 1))
+        usage("unknown part '" + part + "' (solver runs alone)");
+    }
+    if (args.parts.front() == "solver")
       run_solver(args);
-    else if (args.part == "world" || args.part == "peers" || args.part == "stand")
-      run_scenes(args);
     else
-      usage("unknown part '" + args.part + "'");
+      run_scenes(args);
   }
   catch (const std::exception& error)
   {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace collision2d
 {
@@ -12,7 +13,15 @@ namespace bench
 namespace
 {
 constexpr double kMillisecondsPerSecond = 1e3;
+
+double thread_cpu_seconds()
+{
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
+
+}  // namespace
 
 int frames_for(double seconds, double dt)
 {
@@ -26,15 +35,18 @@ double median(std::vector<double> values)
   return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
 }
 
-double time_frames(Engine& engine, int frames)
+FrameTime time_frames(Engine& engine, int frames)
 {
+  const double cpu_start = thread_cpu_seconds();
   const auto start = std::chrono::steady_clock::now();
   for (int f = 0; f < frames; ++f)
   {
     engine.step_frame();
   }
   const auto stop = std::chrono::steady_clock::now();
-  return std::chrono::duration<double>(stop - start).count() * kMillisecondsPerSecond / frames;
+  const double cpu_stop = thread_cpu_seconds();
+  const double wall = std::chrono::duration<double>(stop - start).count();
+  return FrameTime{wall * kMillisecondsPerSecond / frames, (cpu_stop - cpu_start) * kMillisecondsPerSecond / frames};
 }
 
 }  // namespace bench

@@ -13,8 +13,16 @@ namespace bench
 int frames_for(double seconds, double dt);
 /// Median of the values (the mean of the middle two for an even count).
 double median(std::vector<double> values);
-/// Mean wall time of one frame (ms) over `frames` frames, by steady_clock.
-double time_frames(Engine& engine, int frames);
+/// Mean time of one frame over a run of frames (ms).
+struct FrameTime
+{
+  double wall_ms = 0.0;  ///< steady_clock
+  /// This thread's CPU time: what the work costs when other processes share
+  /// the cores (wall time then also counts time spent preempted).
+  double cpu_ms = 0.0;
+};
+
+FrameTime time_frames(Engine& engine, int frames);
 
 }  // namespace bench
 }  // namespace collision2d

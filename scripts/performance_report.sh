@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Regenerates the performance report in one command: builds the benchmarks
+# (ROS-free, Release), runs the speed/accuracy sweep with the peers, the
+# solver residual sweep and the scaling runs (one process per size, for the
+# peak memory), then writes docs/perf/*.csv, docs/perf/*.png (gnuplot) and
+# docs/performance.md.
+#
+#   scripts/performance_report.sh [--quick] [--no-build]
+#
+# --quick thins every grid and shortens the long runs (a few minutes instead
+# of about fifteen on two cores). Environment: COLLISION2D_PERF_BUILD (build
+# folder, default .build/perf), COLLISION2D_JOBS (default 2).
+# Needs cmake, g++, Eigen, yaml-cpp, gnuplot and python3; Box2D
+# (libbox2d-dev) and Chipmunk (libchipmunk-dev) are measured when installed.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD="${COLLISION2D_PERF_BUILD:-$ROOT/.build/perf}"
+JOBS="${COLLISION2D_JOBS:-2}"
+OUT="$ROOT/docs/perf"
+QUICK=()
+BUILD_FIRST=1
+SCALING_SIZES=(100 1000 10000 100000)
+SCALING_ENGINES=(collision2d box2d chipmunk)
+
+for arg in "$@"; do
+  case "$arg" in
+    --quick) QUICK=(--quick) ;;
+    --no-build) BUILD_FIRST=0 ;;
+    *) echo "usage: $0 [--quick] [--no-build]" >&2; exit 2 ;;
+  esac
+done
+
+log() { printf '[performance] %s\n' "$*" >&2; }
+
+for tool in cmake gnuplot python3; do
+  command -v "$tool" > /dev/null || { log "error: $tool is required"; exit 1; }
+done
+
+if [[ $BUILD_FIRST == 1 ]]; then
+  log "building in $BUILD"
+  cmake -S "$ROOT" -B "$BUILD" -DCOLLISION2D_WITH_ROS=OFF -DCMAKE_BUILD_TYPE=Release > "$BUILD.cmake.log" 2>&1 ||
+    { mkdir -p "$BUILD"; cat "$BUILD.cmake.log" >&2; exit 1; }
+  cmake --build "$BUILD" -j"$JOBS" --target collision2d_sweep_bench collision2d_scaling_bench
+fi
+SWEEP="$BUILD/bench/collision2d_sweep_bench"
+SCALING="$BUILD/bench/collision2d_scaling_bench"
+mkdir -p "$OUT"
+START=$(date +%s)
+
+log "sweep: our knobs, the peers and the 60 s stacks (progress below)"
+"$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
+
+log "solver residuals on random clusters"
+"$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
+
+log "scaling: one process per engine and size"
+"$SCALING" --header > "$OUT/scaling.csv"
+for n in "${SCALING_SIZES[@]}"; do
+  for engine in "${SCALING_ENGINES[@]}"; do
+    # The packaged Chipmunk prints a banner on stdout: keep the CSV rows only.
+    "$SCALING" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" | grep "^$engine," >> "$OUT/scaling.csv" ||
+      log "scaling: $engine at $n bodies not measured (not built in?)"
+  done
+done
+
+ELAPSED=$(( $(date +%s) - START ))
+log "measured in ${ELAPSED} s; writing plots and docs/performance.md"
+python3 "$ROOT/scripts/performance_report.py" --perf-dir "$OUT" --doc "$ROOT/docs/performance.md" \
+  --elapsed "$ELAPSED" ${QUICK[@]+"${QUICK[@]}"}
+log "done: docs/performance.md"

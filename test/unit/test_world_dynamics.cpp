@@ -103,19 +103,29 @@ TEST(WorldDynamics, BoxOnInclineSlidesWithKineticFriction)
   EXPECT_NEAR(world.body(box).theta(), angle, 1e-6);  // slides flat, does not tip
 }
 
-TEST(WorldDynamics, ElasticFrictionlessGasKeepsItsEnergy)
+/// Relative change of the kinetic energy of a 300-disk elastic gas over 5 s.
+double gas_energy_change(int velocity_iterations)
 {
-  World world = make_world(scenes::elastic_gas(300, 11));
+  Scene gas = scenes::elastic_gas(300, 11);
+  gas.settings.velocity_iterations = velocity_iterations;
+  World world = make_world(gas);
   const double before = kinetic_energy(world);
   world.step(300);
   const double after = kinetic_energy(world);
-  const double drift = std::abs(after - before) / before;
-  // Position correction never touches velocities and every e = 1 impact is
-  // resolved against a fixed Newton target; what is left is the energy of
-  // contacts slower than the restitution threshold and of Gauss-Seidel
-  // coupling in simultaneous impacts.
-  std::printf("elastic gas: kinetic energy %.6g -> %.6g J (relative change %.3g)\n", before, after, drift);
-  EXPECT_LT(drift, 2e-3);  // measured 7.7e-4
+  std::printf("elastic gas, %d iterations: kinetic energy %.6g -> %.6g J (relative change %.3g)\n",
+              velocity_iterations, before, after, (after - before) / before);
+  return std::abs(after - before) / before;
+}
+
+TEST(WorldDynamics, ElasticFrictionlessGasKeepsItsEnergy)
+{
+  // Position correction never touches velocities and every e = 1 impact has
+  // a fixed Newton target, so the energy lost is that of simultaneous impacts
+  // (a disk hitting two others) left short of their targets by too few
+  // Gauss-Seidel passes: about 0.7% over 5 s with the default 2, nothing
+  // measurable with 10.
+  EXPECT_LT(gas_energy_change(WorldSettings().velocity_iterations), 0.02);
+  EXPECT_LT(gas_energy_change(10), 1e-6);
 }
 
 TEST(WorldDynamics, BulletDoesNotTunnelThroughThinWall)

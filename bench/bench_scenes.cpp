@@ -69,13 +69,21 @@ std::vector<std::string> bench_scene_names()
 BenchScene make_bench_scene(const std::string& name)
 {
   if (name == "pyramid")
+  {
     return BenchScene{name, scenes::pyramid(20), SceneKind::Resting, kPyramidSeconds};
+  }
   if (name == "column")
+  {
     return BenchScene{name, scenes::column(20), SceneKind::Resting, kStackSeconds};
+  }
   if (name == "elastic_gas")
+  {
     return BenchScene{name, scenes::elastic_gas(1000), SceneKind::Conservative, kGasSeconds};
+  }
   if (name == "newtons_cradle")
+  {
     return BenchScene{name, scenes::newtons_cradle(5), SceneKind::Conservative, kCradleSeconds};
+  }
   if (name == "bouncing_disks")
   {
     BenchScene s{name, scenes::bouncing_disks(5, kBounceRestitution), SceneKind::Bounce, kBounceSeconds};
@@ -83,9 +91,13 @@ BenchScene make_bench_scene(const std::string& name)
     return s;
   }
   if (name == "incline")
+  {
     return incline_scene(name, kRestingAngle, kRestingMuS, kRestingMuK);
+  }
   if (name == "incline_slide")
+  {
     return incline_scene(name, kSlidingAngle, kSlidingMu, kSlidingMu);
+  }
   if (name == "bullet_wall")
   {
     BenchScene s{name, scenes::bullet_wall(kBulletSpeed), SceneKind::Bullet, kBulletSeconds};

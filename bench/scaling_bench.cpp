@@ -65,20 +65,34 @@ Arguments parse_arguments(int argc, char** argv)
     const std::string flag = argv[i];
     const bool has_value = i + 1 < argc;
     if (flag == "--bodies" && has_value)
+    {
       args.bodies = std::atol(argv[++i]);
+    }
     else if (flag == "--engine" && has_value)
+    {
       args.engine = parse_engine(argv[++i]);
+    }
     else if (flag == "--reps" && has_value)
+    {
       args.repetitions = std::atoi(argv[++i]);
+    }
     else if (flag == "--header")
+    {
       args.header = true;
+    }
     else
+    {
       usage("unknown or incomplete argument: " + flag);
+    }
   }
   if (args.header)
+  {
     return args;
+  }
   if (args.bodies < 1 || args.repetitions < 1)
+  {
     usage("--bodies and --reps must be positive");
+  }
   return args;
 }
 

@@ -31,7 +31,7 @@ namespace
 using namespace collision2d;
 using namespace collision2d::bench;
 
-constexpr std::size_t kSolverScenes = 400;       // random clusters per solver point
+constexpr std::size_t kSolverScenes = 400;  // random clusters per solver point
 constexpr std::size_t kQuickSolverScenes = 100;
 constexpr std::uint64_t kSolverSeed = 20240601;  // the same draws for every point
 constexpr int kQuickRepetitions = 3;
@@ -67,39 +67,64 @@ Arguments parse_arguments(int argc, char** argv)
     const std::string flag = argv[i];
     const bool has_value = i + 1 < argc;
     if (flag.compare(0, 2, "--") != 0)
+    {
       args.parts.push_back(flag);
+    }
     else if (flag == "--quick")
+    {
       args.quick = true;
+    }
     else if (flag == "--scene" && has_value)
+    {
       args.scenes.push_back(argv[++i]);
+    }
     else if (flag == "--reps" && has_value)
+    {
       reps_given = (args.options.repetitions = std::atoi(argv[++i])) > 0;
+    }
     else if (flag == "--out" && has_value)
+    {
       args.out = argv[++i];
+    }
     else if (flag == "--scenes" && has_value)
+    {
       scenes_given = (args.solver_scenes = std::strtoul(argv[++i], nullptr, 10)) > 0;
+    }
     else
+    {
       usage("unknown or incomplete argument: " + flag);
+    }
   }
   if (args.quick && !reps_given)
+  {
     args.options.repetitions = kQuickRepetitions;
+  }
   if (args.quick && !scenes_given)
+  {
     args.solver_scenes = kQuickSolverScenes;
+  }
   if (args.parts.empty())
+  {
     usage("missing part");
+  }
   if (args.options.repetitions < 1 || args.solver_scenes < 1)
+  {
     usage("--reps and --scenes must be positive");
+  }
   return args;
 }
 
 void print_run_header()
 {
-  std::fprintf(g_csv, "part,scene,kind,engine,variant,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
-              "solver_mode,seconds,ms_per_step,cpu_ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
-              "incline_accel_error,tunnelled,error,error_name\n");
+  std::fprintf(
+      g_csv,
+      "part,scene,kind,engine,variant,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
+      "solver_mode,seconds,ms_per_step,cpu_ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
+      "incline_accel_error,tunnelled,error,error_name\n");
 }
 
-void print_run(const std::string& part, const BenchScene& scene, const RunSpec& run, double seconds, const RunMetrics& m)
+void print_run(const std::string& part, const BenchScene& scene, const RunSpec& run, double seconds,
+               const RunMetrics& m)
 {
   const WorldSettings& s = run.config.settings;
   const bool peer_defaults = run.config.kind != EngineKind::Collision2d && run.config.variant == PeerVariant::Defaults;
@@ -108,21 +133,25 @@ void print_run(const std::string& part, const BenchScene& scene, const RunSpec& 
   const std::string substeps = peer_defaults ? "" : std::to_string(s.substeps);
   const std::string iterations = peer_defaults ? "" : std::to_string(s.velocity_iterations);
   std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
-              part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
-              variant_name(run.config.variant).c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
-              iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
-              ours ? toggle_name(s.time_of_impact).c_str() : "", ours ? world_mode_name(s).c_str() : "", seconds,
-              m.ms_per_step, m.cpu_ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error, m.incline_error,
-              m.tunnelled, m.error, error_name(scene.kind).c_str());
+               part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
+               variant_name(run.config.variant).c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
+               iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
+               ours ? toggle_name(s.time_of_impact).c_str() : "", ours ? world_mode_name(s).c_str() : "", seconds,
+               m.ms_per_step, m.cpu_ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error,
+               m.incline_error, m.tunnelled, m.error, error_name(scene.kind).c_str());
   std::fflush(g_csv);
 }
 
 std::vector<RunSpec> runs_for(const std::string& part, const BenchScene& scene, bool quick)
 {
   if (part == "world")
+  {
     return world_runs(scene, quick);
+  }
   if (part == "peers")
+  {
     return peer_runs(scene, quick);
+  }
   return scene.name == "pyramid" || scene.name == "column" ? stand_runs(scene, quick) : std::vector<RunSpec>{};
 }
 
@@ -154,17 +183,18 @@ void run_scenes(const Arguments& args)
 
 void run_solver(const Arguments& args)
 {
-  std::fprintf(g_csv, "mode,iterations,tolerance,max_mass_ratio,scenes,contacts,us_per_solve,max_target_residual,"
-              "max_complementarity,mean_complementarity,max_coulomb_excess,converged_fraction,exact_fallbacks\n");
+  std::fprintf(g_csv,
+               "mode,iterations,tolerance,max_mass_ratio,scenes,contacts,us_per_solve,max_target_residual,"
+               "max_complementarity,mean_complementarity,max_coulomb_excess,converged_fraction,exact_fallbacks\n");
   for (const SolverSweepPoint& p : solver_points(args.quick))
   {
     std::fprintf(stderr, "solver %s it=%d tol=%g ratio=%g\n", mode_name(p.mode).c_str(), p.iterations, p.tolerance,
                  p.max_mass_ratio);
     const SolverMetrics m = measure_solver(p, args.solver_scenes, kSolverSeed);
-    std::fprintf(g_csv, "%s,%d,%g,%g,%zu,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%zu\n", mode_name(p.mode).c_str(), p.iterations,
-                p.tolerance, p.max_mass_ratio, m.scenes, m.contacts, m.us_per_solve, m.max_target_residual,
-                m.max_complementarity, m.mean_complementarity, m.max_coulomb_excess, m.converged_fraction,
-                m.exact_fallbacks);
+    std::fprintf(g_csv, "%s,%d,%g,%g,%zu,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,%zu\n", mode_name(p.mode).c_str(),
+                 p.iterations, p.tolerance, p.max_mass_ratio, m.scenes, m.contacts, m.us_per_solve,
+                 m.max_target_residual, m.max_complementarity, m.mean_complementarity, m.max_coulomb_excess,
+                 m.converged_fraction, m.exact_fallbacks);
     std::fflush(g_csv);
   }
 }
@@ -184,12 +214,18 @@ int main(int argc, char** argv)
     {
       const bool known = part == "solver" || part == "world" || part == "peers" || part == "stand";
       if (!known || (part == "solver" && args.parts.size() > 1))
+      {
         usage("unknown part '" + part + "' (solver runs alone)");
+      }
     }
     if (args.parts.front() == "solver")
+    {
       run_solver(args);
+    }
     else
+    {
       run_scenes(args);
+    }
   }
   catch (const std::exception& error)
   {

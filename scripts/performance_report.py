@@ -449,10 +449,11 @@ def guidance_section(runs, solver):
             line += f"; warm starting off lets the column fall ({fmt(warm_off['err'] * 1e3)} mm drift)"
         if stand:
             best = min(stand, key=lambda r: r["err"])
-            line += (f". Over 60 s the steadiest measured setting was {setting(best)} "
+            line += (f". Over {fmt(number(best['seconds']))} s the steadiest measured setting was {setting(best)} "
                      f"(drift {fmt(best['err'] * 1e3)} mm, {fmt(best['ms'])} ms a frame)")
         out.append(line + ". Let large resting scenes sleep (Auto sleeps worlds of 256+ bodies).")
-    toi_off, toi_on = find(runs, "bullet_wall", "time_of_impact", "off"), find(runs, "bullet_wall", "time_of_impact", "on")
+    toi_off = find(runs, "bullet_wall", "time_of_impact", "off")
+    toi_on = find(runs, "bullet_wall", "time_of_impact", "on")
     bounce = [r for r in ours(runs, "bouncing_disks") if r["part"] == "world"]
     line = "- **Impacts that must be exact.** "
     if toi_off and toi_on:

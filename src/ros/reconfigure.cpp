@@ -22,9 +22,9 @@ SolverSettings solver_settings_from_config(const Collision2dConfig& config)
   return msg;
 }
 
-WorldSettings world_settings_from_config(const Collision2dConfig& config, WorldSettings base)
+WorldSettings world_settings_from_config(const Collision2dConfig& config, const WorldSettings& base)
 {
-  WorldConfig msg;
+  WorldConfig msg = world_settings_to_msg(base);
   msg.gravity.x = config.world_gravity_x;
   msg.gravity.y = config.world_gravity_y;
   msg.dt = config.world_dt;
@@ -40,7 +40,12 @@ WorldSettings world_settings_from_config(const Collision2dConfig& config, WorldS
   msg.time_of_impact = static_cast<std::uint8_t>(config.world_time_of_impact);
   msg.warm_starting = static_cast<std::uint8_t>(config.world_warm_starting);
   msg.sleeping = static_cast<std::uint8_t>(config.world_sleeping);
-  return world_settings_from_msg(msg, base);
+  msg.warm_start_factor = config.world_warm_start_factor;
+  msg.warm_start_every_substep = config.world_warm_start_every_substep;
+  msg.sleep_linear_speed = config.world_sleep_linear_speed;
+  msg.sleep_angular_speed = config.world_sleep_angular_speed;
+  msg.sleep_time = config.world_sleep_time;
+  return world_settings_from_msg(msg);
 }
 
 void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& config)
@@ -61,6 +66,11 @@ void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& 
   config.world_time_of_impact = msg.time_of_impact;
   config.world_warm_starting = msg.warm_starting;
   config.world_sleeping = msg.sleeping;
+  config.world_warm_start_factor = msg.warm_start_factor;
+  config.world_warm_start_every_substep = msg.warm_start_every_substep;
+  config.world_sleep_linear_speed = msg.sleep_linear_speed;
+  config.world_sleep_angular_speed = msg.sleep_angular_speed;
+  config.world_sleep_time = msg.sleep_time;
 }
 
 }  // namespace ros_interface

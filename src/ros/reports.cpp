@@ -80,6 +80,11 @@ StepSummary step_summary_to_msg(const StepReport& report, const Totals& before, 
   msg.substeps = report.substeps;
   msg.contact_count = static_cast<std::uint32_t>(report.contact_count);
   msg.max_penetration = report.max_penetration;
+  msg.max_detected_penetration = report.max_detected_penetration;
+  msg.velocity_residual = report.velocity_residual;
+  msg.swept_bodies = static_cast<std::uint32_t>(report.swept_bodies);
+  msg.toi_clamps = static_cast<std::uint32_t>(report.toi_clamps);
+  msg.sleeping_bodies = static_cast<std::uint32_t>(report.sleeping_bodies);
   fill_totals(msg, before, after);
   msg.active = effects_to_msg(report.active);
   return msg;

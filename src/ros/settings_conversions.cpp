@@ -1,6 +1,8 @@
 // SolverSettings / WorldConfig <-> ContactSolver / WorldSettings.
 #include "collision2d/ros/settings_conversions.h"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -83,11 +85,11 @@ ContactSolver solver_from_msg(const SolverSettings& msg)
   }
 }
 
-WorldSettings world_settings_from_msg(const WorldConfig& msg, WorldSettings base)
+WorldSettings world_settings_from_msg(const WorldConfig& msg)
 {
   require_finite(msg.gravity.x, kSettings, "gravity.x");
   require_finite(msg.gravity.y, kSettings, "gravity.y");
-  WorldSettings settings = base;
+  WorldSettings settings;
   settings.gravity = Vec2{msg.gravity.x, msg.gravity.y};
   settings.dt = msg.dt;
   settings.substeps = msg.substeps;
@@ -102,6 +104,13 @@ WorldSettings world_settings_from_msg(const WorldConfig& msg, WorldSettings base
   settings.time_of_impact = toggle_from_msg(msg.time_of_impact, "time_of_impact");
   settings.warm_starting = toggle_from_msg(msg.warm_starting, "warm_starting");
   settings.sleeping = toggle_from_msg(msg.sleeping, "sleeping");
+  settings.warm_start_factor = msg.warm_start_factor;
+  settings.warm_start_every_substep = msg.warm_start_every_substep;
+  settings.toi_displacement_fraction = msg.toi_displacement_fraction;
+  settings.sleep_linear_speed = msg.sleep_linear_speed;
+  settings.sleep_angular_speed = msg.sleep_angular_speed;
+  settings.sleep_time = msg.sleep_time;
+  settings.sleep_auto_min_bodies = msg.sleep_auto_min_bodies;
   try
   {
     // The world's own ranges are the authority; its message names the field.
@@ -132,6 +141,14 @@ WorldConfig world_settings_to_msg(const WorldSettings& settings)
   msg.time_of_impact = toggle_to_msg(settings.time_of_impact);
   msg.warm_starting = toggle_to_msg(settings.warm_starting);
   msg.sleeping = toggle_to_msg(settings.sleeping);
+  msg.warm_start_factor = settings.warm_start_factor;
+  msg.warm_start_every_substep = settings.warm_start_every_substep;
+  msg.toi_displacement_fraction = settings.toi_displacement_fraction;
+  msg.sleep_linear_speed = settings.sleep_linear_speed;
+  msg.sleep_angular_speed = settings.sleep_angular_speed;
+  msg.sleep_time = settings.sleep_time;
+  msg.sleep_auto_min_bodies = static_cast<std::uint32_t>(
+      std::min<std::size_t>(settings.sleep_auto_min_bodies, std::numeric_limits<std::uint32_t>::max()));
   return msg;
 }
 

@@ -15,8 +15,9 @@ constexpr unsigned kSolverLevel = 1;
 constexpr unsigned kWorldLevel = 2;
 
 SolverSettings solver_settings_from_config(const Collision2dConfig& config);
-/// `base` with the fields the config carries replaced.
-WorldSettings world_settings_from_config(const Collision2dConfig& config, WorldSettings base);
+/// `base` with the fields the config carries replaced (the config leaves out
+/// the rarely tuned ones). Throws InvalidRequest naming the field.
+WorldSettings world_settings_from_config(const Collision2dConfig& config, const WorldSettings& base);
 /// Shows the world's settings in the config (its solver fields untouched).
 void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& config);
 

@@ -20,9 +20,8 @@ constexpr int kMaxSolverIterations = 100000;
 /// A solver configured as `msg` says (mode included). Throws InvalidRequest.
 ContactSolver solver_from_msg(const SolverSettings& msg);
 
-/// `base` with the fields `msg` carries replaced (the others keep their
-/// values). Throws InvalidRequest naming the field.
-WorldSettings world_settings_from_msg(const WorldConfig& msg, WorldSettings base = WorldSettings());
+/// Throws InvalidRequest naming the field.
+WorldSettings world_settings_from_msg(const WorldConfig& msg);
 WorldConfig world_settings_to_msg(const WorldSettings& settings);
 
 Effects effects_to_msg(const ActiveEffects& effects);

@@ -84,6 +84,18 @@ class PythonClient(unittest.TestCase):
         finally:
             subscriber.unregister()
 
+    def test_free_running_world_steps_by_itself(self):
+        # /free_run/world runs at ~rate 50 Hz: frames arrive without any step_world call.
+        first = rospy.wait_for_message("/free_run/world_state", WorldState, timeout=SERVICE_WAIT_S)
+        later = first
+        deadline = rospy.Time.now() + rospy.Duration(SERVICE_WAIT_S)
+        while later.frame_count < first.frame_count + 5 and rospy.Time.now() < deadline:
+            later = rospy.wait_for_message("/free_run/world_state", WorldState, timeout=SERVICE_WAIT_S)
+        self.assertGreaterEqual(later.frame_count, first.frame_count + 5)
+        # Each tick is one frame of the world's dt, whatever the wall time.
+        self.assertAlmostEqual(later.sim_time, later.frame_count * later.settings.dt, places=9)
+        self.assertEqual(later.scene, "bouncing_disks")
+
     def test_dynamic_reconfigure_tunes_solver_and_world(self):
         reconfigure = dynamic_reconfigure.client.Client("world", timeout=SERVICE_WAIT_S)
         loaded = rospy.ServiceProxy("load_scene", LoadScene)(scene="resting_box")

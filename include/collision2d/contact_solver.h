@@ -7,6 +7,7 @@
 
 #include "collision2d/body.h"
 #include "collision2d/contact.h"
+#include "collision2d/solver_mode.h"
 
 namespace collision2d
 {
@@ -23,15 +24,6 @@ struct SolveReport
   double kinetic_energy_after = 0.0;     ///< J
   double time_of_impact = 1.0;           ///< step(): the time moved to, in [0, 1]
   bool exact_fallback = false;           ///< exact mode: pivoting failed, iterative result used
-};
-
-/// Iterative: projected Gauss-Seidel on accumulated impulses, cluster by
-/// cluster, until the residual is below tol. Exact: each coupled cluster solved
-/// as a linear complementarity problem by pivoting.
-enum class SolverMode
-{
-  Iterative,
-  Exact
 };
 
 class ContactSolver

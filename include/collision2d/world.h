@@ -11,6 +11,7 @@
 #include "collision2d/broad_phase.h"
 #include "collision2d/collide.h"
 #include "collision2d/contact.h"
+#include "collision2d/solver_mode.h"
 #include "collision2d/vec2.h"
 
 namespace collision2d
@@ -73,6 +74,21 @@ struct WorldSettings
   /// dynamic bodies: smaller scenes gain little and keep exactly reproducible
   /// trajectories; without gravity nothing rests against anything.
   std::size_t sleep_auto_min_bodies = 256;
+  /// Velocity resolution. Iterative: velocity_iterations Gauss-Seidel passes.
+  /// Exact: each island's contacts (dynamic bodies linked by contacts) are
+  /// solved as one LCP by pivoting, with each contact's Newton target and
+  /// Coulomb cone, so mass ratios no number of passes can carry (a 1e6 kg box
+  /// on a 1 kg one) are resolved in one solve; an island whose pivoting fails
+  /// (or that has more unknowns than kMaxExactUnknowns) is solved by the
+  /// iterative passes instead and counted in StepReport::exact_fallbacks. The
+  /// position pass is the same in both modes. See world_exact.cpp.
+  SolverMode solver_mode = SolverMode::Iterative;
+  /// Exact mode only: also solve each island's penetration correction as one
+  /// LCP (true), instead of the Gauss-Seidel position pass of iterative mode
+  /// (false). A position pass barely moves the heavy body of an extreme mass
+  /// ratio, so with false a 1e6 kg box on a 1 kg box keeps each substep's
+  /// gravity sag and sinks steadily even though its velocities are exact.
+  bool exact_position_correction = true;
 };
 
 /// Which effects the last step actually modelled.
@@ -109,6 +125,11 @@ struct StepReport
   std::size_t swept_bodies = 0;     ///< body sweeps done for time of impact
   std::size_t toi_clamps = 0;       ///< sweeps that stopped a body at its time of impact
   std::size_t sleeping_bodies = 0;  ///< asleep after the step
+  /// Exact solver mode: island solves (velocity, and position with
+  /// exact_position_correction) done by pivoting, and those that failed and
+  /// were done by the Gauss-Seidel passes instead (summed over substeps).
+  std::size_t exact_islands = 0;
+  std::size_t exact_fallbacks = 0;
 };
 
 using BodyId = std::uint32_t;
@@ -145,7 +166,10 @@ namespace collision2d
 ///  - penetration is resolved with the depth left after the corrections
 ///    already made in the pass;
 ///  - the velocity is the integrated one, which equals the derived
-///    (pose - shifted previous pose) / h (world_step.cpp).
+///    (pose - shifted previous pose) / h (world_step.cpp);
+///  - WorldSettings::solver_mode Exact solves each island's velocities, and
+///    (exact_position_correction) its penetrations, as one LCP by pivoting
+///    (world_exact.cpp).
 class World
 {
 public:
@@ -208,6 +232,8 @@ private:
     double mu_k = 0.0;
     bool kinetic = false;         ///< slid in the previous substep: kinetic bound applies
     bool sliding = false;         ///< friction at its bound in this solve
+    bool exact = false;           ///< solved by its island's LCP: no warm start, no passes
+    bool position_solved = false; ///< penetration corrected by its island's LCP this substep
     ContactImpulse impulse;       ///< accumulated this substep (N s)
   };
 
@@ -251,15 +277,19 @@ private:
   double effective_inverse_mass(const ContactRow& row, Vec2 direction) const;
   Vec2 relative_velocity(const ContactRow& row) const;
   Vec2 relative_velocity_at(const ContactRow& row, Vec2 ra, Vec2 rb) const;
-  void correct_positions(double h, bool friction);
+  void correct_positions(double h, bool friction, StepReport& report);
   Vec2 integration_move(std::size_t i, Vec2 r) const;
   void hold_static_friction(const ContactRow& first, const ContactRow& second);
+  void hold_all_static_friction(bool friction);
   double current_depth(const ContactRow& row) const;
   void correct_point(const ContactRow& row, double depth, double softness);
   void displace(std::size_t i, double lambda, Vec2 n, Vec2 r, double inv_mass, double inv_inertia);
   void warm_start();
   void solve_velocities(bool friction);
   void solve_normal(ContactRow& row);
+  // world_exact.cpp
+  void solve_exact_islands(StepReport& report);
+  void solve_position_islands(double softness, StepReport& report);
   // world_block.cpp
   void solve_pair(ContactRow& first, ContactRow& second, bool rough);
   bool solve_stick_pair(ContactRow& first, ContactRow& second);

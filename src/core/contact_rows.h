@@ -42,6 +42,10 @@ struct ContactRow
   double target = 0.0;  ///< post-solve normal separation speed to reach (m/s)
   double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
   double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
+  /// Coulomb coefficient of this contact's cone. The exact solver gives every
+  /// row the same value; the World's exact mode gives each its materials' one.
+  double mu = 0.0;
+  bool sliding = false;  ///< exact solve: the contact slides (on its cone)
 };
 
 /// Rows [begin, end) of the solver's row list form one coupled cluster.

@@ -98,10 +98,10 @@ void assemble_frictionless(const std::vector<ContactRow>& rows, ClusterRange clu
 }
 
 void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange cluster,
-                         const std::vector<BodyVelocity>& state, double mu, ClusterLcp& lcp)
+                         const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
-  const Eigen::Index k = unknowns_per_contact(mu);
+  const Eigen::Index k = kFrictionalUnknowns;
   lcp.M.setZero(k * m, k * m);
   lcp.q.resize(k * m);
   for (Eigen::Index i = 0; i < m; ++i)
@@ -125,7 +125,7 @@ void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange clust
     // beta + vt >= 0 and beta - vt >= 0; mu lambda_n - lambda_t+ - lambda_t- >= 0.
     lcp.M(n_i + 1, n_i + 3) = 1.0;
     lcp.M(n_i + 2, n_i + 3) = 1.0;
-    lcp.M(n_i + 3, n_i) = mu;
+    lcp.M(n_i + 3, n_i) = row.mu;
     lcp.M(n_i + 3, n_i + 1) = -1.0;
     lcp.M(n_i + 3, n_i + 2) = -1.0;
 
@@ -139,20 +139,33 @@ void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange clust
 }
 }  // namespace
 
+bool cluster_has_friction(const std::vector<ContactRow>& rows, ClusterRange cluster)
+{
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    if (rows[r].mu > 0.0)
+      return true;
+  return false;
+}
+
+std::size_t cluster_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster)
+{
+  const int k = cluster_has_friction(rows, cluster) ? kFrictionalUnknowns : kFrictionlessUnknowns;
+  return (cluster.end - cluster.begin) * static_cast<std::size_t>(k);
+}
+
 void assemble_cluster_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
-                          const std::vector<BodyVelocity>& state, double mu, ClusterLcp& lcp)
+                          const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   assemble_delassus(rows, cluster, state, lcp);
-  if (mu > 0.0)
-    assemble_frictional(rows, cluster, state, mu, lcp);
+  if (cluster_has_friction(rows, cluster))
+    assemble_frictional(rows, cluster, state, lcp);
   else
     assemble_frictionless(rows, cluster, state, lcp);
 }
 
-void store_cluster_impulses(const Eigen::VectorXd& z, double mu, ClusterRange cluster,
-                            std::vector<ContactRow>& rows)
+void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std::vector<ContactRow>& rows)
 {
-  const int k = unknowns_per_contact(mu);
+  const int k = cluster_has_friction(rows, cluster) ? kFrictionalUnknowns : kFrictionlessUnknowns;
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
   {
     ContactRow& row = rows[r];
@@ -160,13 +173,14 @@ void store_cluster_impulses(const Eigen::VectorXd& z, double mu, ClusterRange cl
     const double s = 1.0 / std::sqrt(row.k_n);
     row.lambda_n = z(n_i) * s;
     row.lambda_t = 0.0;
+    row.sliding = false;
     if (k == 1)
       continue;
     const double t_plus = z(n_i + 1) * s;
     const double t_minus = z(n_i + 2) * s;
-    const bool sliding = z(n_i + 3) > 0.0;
-    if (sliding)
-      row.lambda_t = (t_plus >= t_minus ? 1.0 : -1.0) * mu * row.lambda_n;
+    row.sliding = z(n_i + 3) > 0.0;
+    if (row.sliding)
+      row.lambda_t = (t_plus >= t_minus ? 1.0 : -1.0) * row.mu * row.lambda_n;
     else
       row.lambda_t = t_plus - t_minus;
   }

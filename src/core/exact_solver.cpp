@@ -3,87 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collision2d/lcp.h"
 #include "contact_rows.h"
 #include "exact_cluster_lcp.h"
+#include "exact_cluster_solve.h"
 
 namespace collision2d
 {
 namespace
 {
-/// A second pivoting run after a failure, with tolerances that treat more
-/// near-zero tableau entries as zero: on clusters with many redundant
-/// contacts round-off can steer the first run into a false ray.
-LemkeSettings conservative_settings()
-{
-  LemkeSettings settings;
-  settings.pivot_tolerance = 1e-9;
-  settings.tie_tolerance = 1e-9;
-  return settings;
-}
-
-/// Solves one cluster's LCP (with one conservative retry) and stores the
-/// impulses in its rows. Returns false when pivoting failed or the cluster is
-/// too large; adds the pivots done to `pivots`.
-bool solve_cluster(std::vector<detail::ContactRow>& rows, detail::ClusterRange cluster,
-                   const std::vector<detail::BodyVelocity>& state, double mu, detail::ClusterLcp& lcp,
-                   int& pivots)
-{
-  const std::size_t unknowns = (cluster.end - cluster.begin) * detail::unknowns_per_contact(mu);
-  if (unknowns > kMaxExactUnknowns)
-    return false;
-  detail::assemble_cluster_lcp(rows, cluster, state, mu, lcp);
-  LcpResult result = LemkeSolver().solve(lcp.M, lcp.q);
-  pivots = result.pivots;
-  if (!result.solved())
-  {
-    result = LemkeSolver(conservative_settings()).solve(lcp.M, lcp.q);
-    pivots += result.pivots;
-  }
-  if (!result.solved())
-    return false;
-  detail::store_cluster_impulses(result.z, mu, cluster, rows);
-  return true;
-}
-
 double total_kinetic_energy(const std::vector<Body>& bodies)
 {
   double energy = 0.0;
   for (const Body& body : bodies)
     energy += body.kinetic_energy();
   return energy;
-}
-
-/// Largest contact speed (normal or tangential) in the cluster at `state`.
-double contact_speed_scale(const std::vector<detail::ContactRow>& rows, detail::ClusterRange cluster,
-                           const std::vector<detail::BodyVelocity>& state)
-{
-  double scale = 0.0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-  {
-    const Vec2 dv = detail::relative_velocity(rows[r], state);
-    scale = std::max({scale, std::abs(dot(dv, rows[r].normal)), std::abs(dot(dv, rows[r].tangent)),
-                      rows[r].target});
-  }
-  return scale;
-}
-
-/// Largest speed change an impulse of the cluster causes on its own contact.
-double impulse_speed_scale(const std::vector<detail::ContactRow>& rows, detail::ClusterRange cluster)
-{
-  double scale = 0.0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    scale = std::max({scale, rows[r].lambda_n * rows[r].k_n, std::abs(rows[r].lambda_t) * rows[r].k_t});
-  return scale;
-}
-
-double cluster_residual(const std::vector<detail::ContactRow>& rows, detail::ClusterRange cluster,
-                        const std::vector<detail::BodyVelocity>& state, double mu)
-{
-  double residual = 0.0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    residual = std::max(residual, detail::row_residual(rows[r], state, mu));
-  return residual;
 }
 
 void store_velocities(const std::vector<detail::BodyVelocity>& state, std::vector<Body>& bodies)
@@ -124,6 +57,8 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   std::vector<std::size_t> parent;
   detail::load_velocities(bodies, state);
   detail::build_rows(bodies, state, contacts, e, rows);
+  for (detail::ContactRow& row : rows)
+    row.mu = mu;
   detail::partition_clusters(state, rows, clusters, parent);
   report.cluster_count = clusters.size();
 
@@ -135,11 +70,11 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   for (std::size_t c = 0; c < clusters.size(); ++c)
   {
     int pivots = 0;
-    const bool solved = solve_cluster(rows, clusters[c], state, mu, lcp, pivots);
+    const bool solved = detail::solve_cluster(rows, clusters[c], state, lcp, pivots);
     report.iterations = std::max(report.iterations, pivots);
     if (!solved)
       return failed_report(report, contacts.size(), impulses);
-    speed_before[c] = contact_speed_scale(rows, clusters[c], state);
+    speed_before[c] = detail::contact_speed_scale(rows, clusters[c], state);
   }
 
   // Applied to the working copy only: the bodies change once all is checked.
@@ -153,9 +88,9 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
     // Judged against the speeds the cluster actually involves: at a 1e6 mass
     // ratio the light body's velocity is a difference of impulse effects a
     // million times larger, and double precision is relative to those.
-    const double scale = std::max({speed_before[c], contact_speed_scale(rows, clusters[c], state),
-                                   impulse_speed_scale(rows, clusters[c])});
-    const double residual = cluster_residual(rows, clusters[c], state, mu);
+    const double scale = std::max({speed_before[c], detail::contact_speed_scale(rows, clusters[c], state),
+                                   detail::impulse_speed_scale(rows, clusters[c])});
+    const double residual = detail::cluster_residual(rows, clusters[c], state);
     if (!(residual <= kTrustedResidual * scale))
       return failed_report(report, contacts.size(), impulses);
     report.max_residual = std::max(report.max_residual, residual);

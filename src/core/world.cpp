@@ -112,6 +112,10 @@ void World::validate(const WorldSettings& s)
   require_non_negative("sleep_linear_speed", s.sleep_linear_speed);
   require_non_negative("sleep_angular_speed", s.sleep_angular_speed);
   require_non_negative("sleep_time", s.sleep_time);
+  if (s.solver_mode != SolverMode::Iterative && s.solver_mode != SolverMode::Exact)
+  {
+    reject("WorldSettings.solver_mode", "Iterative or Exact", static_cast<double>(s.solver_mode));
+  }
 }
 
 void World::set_settings(const WorldSettings& settings)

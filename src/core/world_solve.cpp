@@ -84,15 +84,23 @@ Vec2 World::relative_velocity_at(const ContactRow& row, Vec2 ra, Vec2 rb) const
   return b.velocity() + cross(b.omega(), rb) - a.velocity() - cross(a.omega(), ra);
 }
 
-void World::correct_positions(double h, bool friction)
+void World::correct_positions(double h, bool friction, StepReport& report)
 {
   const double softness = settings_.compliance / (h * h);
   moved_.assign(bodies_.size(), Vec2{0.0, 0.0});
   turned_.assign(bodies_.size(), 0.0);
+  const bool exact = settings_.solver_mode == SolverMode::Exact && settings_.exact_position_correction;
+  if (exact)
+  {
+    // Every static-friction hold first, then the islands' penetrations at once
+    // (world_exact.cpp); a failed island is left to the pass below.
+    hold_all_static_friction(friction);
+    solve_position_islands(softness, report);
+  }
   for (std::size_t k = 0; k < rows_.size(); k += rows_[k].count == 2 ? 2 : 1)
   {
     ContactRow& row = rows_[k];
-    if (!row.active)
+    if (!row.active || row.position_solved)
     {
       continue;
     }
@@ -101,7 +109,7 @@ void World::correct_positions(double h, bool friction)
     // stack's correction travels up it in one pass instead of diffusing over
     // many substeps), and for both points of a pair before either moves (so
     // the first point's turn does not tilt the second).
-    if (friction && !row.kinetic && row.mu_s > 0.0)
+    if (!exact && friction && !row.kinetic && row.mu_s > 0.0)
     {
       hold_static_friction(row, pair ? rows_[k + 1] : row);
     }
@@ -111,6 +119,18 @@ void World::correct_positions(double h, bool friction)
     if (pair)
     {
       correct_point(rows_[k + 1], second, softness);
+    }
+  }
+}
+
+void World::hold_all_static_friction(bool friction)
+{
+  for (std::size_t k = 0; friction && k < rows_.size(); k += rows_[k].count == 2 ? 2 : 1)
+  {
+    const ContactRow& row = rows_[k];
+    if (row.active && !row.kinetic && row.mu_s > 0.0)
+    {
+      hold_static_friction(row, row.count == 2 ? rows_[k + 1] : row);
     }
   }
 }
@@ -195,7 +215,7 @@ void World::warm_start()
 {
   for (const ContactRow& row : rows_)
   {
-    if (row.active && (row.impulse.normal != 0.0 || row.impulse.tangent != 0.0))
+    if (row.active && !row.exact && (row.impulse.normal != 0.0 || row.impulse.tangent != 0.0))
     {
       apply_impulse(row, row.impulse.normal * row.normal + row.impulse.tangent * perp(row.normal));
     }
@@ -209,7 +229,7 @@ void World::solve_velocities(bool friction)
     for (std::size_t k = 0; k < rows_.size(); k += rows_[k].count == 2 ? 2 : 1)
     {
       ContactRow& row = rows_[k];
-      if (!row.active)
+      if (!row.active || row.exact)
       {
         continue;
       }

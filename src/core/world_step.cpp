@@ -92,7 +92,11 @@ void World::substep(FrameEffects& effects, double h, bool first, bool warm, Step
   prepare_rows(effects.flags);
   if (effects.flags.position_correction)
   {
-    correct_positions(h, effects.flags.friction);
+    correct_positions(h, effects.flags.friction, report);
+  }
+  if (settings_.solver_mode == SolverMode::Exact)
+  {
+    solve_exact_islands(report);
   }
   if (warm)
   {

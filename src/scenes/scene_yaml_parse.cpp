@@ -40,6 +40,42 @@ Toggle read_toggle(FieldReader& fields, const std::string& key, Toggle fallback)
   fields.fail_at(key, "must be auto, on or off (got '" + text + "')");
 }
 
+SolverMode read_solver_mode(FieldReader& fields, const std::string& key, SolverMode fallback)
+{
+  const std::string text = fields.text(key, "");
+  if (text.empty())
+  {
+    return fallback;
+  }
+  if (text == "iterative")
+  {
+    return SolverMode::Iterative;
+  }
+  if (text == "exact")
+  {
+    return SolverMode::Exact;
+  }
+  fields.fail_at(key, "must be iterative or exact (got '" + text + "')");
+}
+
+bool read_flag(FieldReader& fields, const std::string& key, bool fallback)
+{
+  const std::string text = fields.text(key, "");
+  if (text.empty())
+  {
+    return fallback;
+  }
+  if (text == "true")
+  {
+    return true;
+  }
+  if (text == "false")
+  {
+    return false;
+  }
+  fields.fail_at(key, "must be true or false (got '" + text + "')");
+}
+
 WorldSettings read_settings(const YAML::Node& node, const std::string& source, WorldSettings s)
 {
   FieldReader f(node, "settings", source);
@@ -66,6 +102,8 @@ WorldSettings read_settings(const YAML::Node& node, const std::string& source, W
   s.sleep_angular_speed = f.non_negative("sleep_angular_speed", s.sleep_angular_speed);
   s.sleep_time = f.non_negative("sleep_time", s.sleep_time);
   s.sleep_auto_min_bodies = f.unsigned_integer("sleep_auto_min_bodies", s.sleep_auto_min_bodies);
+  s.solver_mode = read_solver_mode(f, "solver_mode", s.solver_mode);
+  s.exact_position_correction = read_flag(f, "exact_position_correction", s.exact_position_correction);
   f.finish();
   return s;
 }

@@ -84,6 +84,13 @@ const char* toggle_name(Toggle toggle)
   }
 }
 
+const char* solver_mode_name(SolverMode mode)
+{
+  return mode == SolverMode::Exact ? "exact" : "iterative";
+}
+
+const char* flag_name(bool flag) { return flag ? "true" : "false"; }
+
 const char* type_name(BodyType type)
 {
   switch (type)
@@ -127,6 +134,8 @@ void write_settings(std::ostream& out, const WorldSettings& s)
   out << "  sleep_angular_speed: " << format_number(s.sleep_angular_speed) << "\n";
   out << "  sleep_time: " << format_number(s.sleep_time) << "\n";
   out << "  sleep_auto_min_bodies: " << s.sleep_auto_min_bodies << "\n";
+  out << "  solver_mode: " << solver_mode_name(s.solver_mode) << "\n";
+  out << "  exact_position_correction: " << flag_name(s.exact_position_correction) << "\n";
 }
 
 /// Distinct materials in order of first use; bodies refer to them by index.

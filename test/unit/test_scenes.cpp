@@ -136,6 +136,8 @@ void expect_same_settings(const WorldSettings& a, const WorldSettings& b)
   EXPECT_EQ(a.sleep_angular_speed, b.sleep_angular_speed);
   EXPECT_EQ(a.sleep_time, b.sleep_time);
   EXPECT_EQ(a.sleep_auto_min_bodies, b.sleep_auto_min_bodies);
+  EXPECT_EQ(a.solver_mode, b.solver_mode);
+  EXPECT_EQ(a.exact_position_correction, b.exact_position_correction);
 }
 
 void expect_same_scene(const Scene& a, const Scene& b, double vertex_tolerance = 0.0)
@@ -415,6 +417,8 @@ TEST(SceneFiles, SaveThenLoadKeepsEverySettingTypeAndAwkwardNumber)
   s.sleep_angular_speed = 0.02;
   s.sleep_time = 1.5;
   s.sleep_auto_min_bodies = 12345678901ULL;
+  s.solver_mode = SolverMode::Exact;
+  s.exact_position_correction = false;
   Body disk(0.7, 0.123456789, {1e-300, -2.0 / 7.0}, {1.0 / 3.0, 0.0}, -4.5);
   disk.set_theta(1.0 / 9.0);
   scene.bodies.push_back(SceneBody{disk, Material{0.3, 0.2, 0.1}, "disk: with colon"});
@@ -488,6 +492,8 @@ TEST(SceneFiles, EveryErrorNamesTheLineAndTheKey)
       {"settings:\n  dt: -1\n", 2, "settings.dt", "must be positive"},
       {"settings:\n  warm_start_factor: 1.5\n", 2, "settings.warm_start_factor", "[0, 1]"},
       {"settings:\n  gravity: [0, 1]\n", 2, "settings.gravity", "unknown key"},
+      {"settings:\n  solver_mode: pivoting\n", 2, "settings.solver_mode", "iterative or exact"},
+      {"settings:\n  exact_position_correction: yes\n", 2, "settings.exact_position_correction", "true or false"},
       {"materials:\n  a: {restitution: 2}\n", 2, "materials.a.restitution", "[0, 1]"},
       {"materials:\n  a: {restitutoin: 0.5}\n", 2, "materials.a.restitutoin", "unknown key"},
       {"bodies:\n  - {shape: disk, mass: 1, radius: 1}\n  - {shape: disk, mass: -1, radius: 1}\n", 3,

@@ -1,0 +1,83 @@
+#include "exact_cluster_solve.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "collision2d/exact_solver.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// A second pivoting run after a failure, with tolerances that treat more
+/// near-zero tableau entries as zero: on clusters with many redundant
+/// contacts round-off can steer the first run into a false ray.
+LemkeSettings conservative_settings()
+{
+  LemkeSettings settings;
+  settings.pivot_tolerance = 1e-9;
+  settings.tie_tolerance = 1e-9;
+  return settings;
+}
+}  // namespace
+
+LcpResult pivot_with_retry(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, int& pivots)
+{
+  LcpResult result = LemkeSolver().solve(M, q);
+  pivots = result.pivots;
+  if (!result.solved())
+  {
+    result = LemkeSolver(conservative_settings()).solve(M, q);
+    pivots += result.pivots;
+  }
+  return result;
+}
+
+bool solve_cluster(std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+                   ClusterLcp& lcp, int& pivots)
+{
+  pivots = 0;
+  if (cluster_unknowns(rows, cluster) > kMaxExactUnknowns)
+    return false;
+  assemble_cluster_lcp(rows, cluster, state, lcp);
+  const LcpResult result = pivot_with_retry(lcp.M, lcp.q, pivots);
+  if (!result.solved())
+    return false;
+  store_cluster_impulses(result.z, cluster, rows);
+  return true;
+}
+
+double contact_speed_scale(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                           const std::vector<BodyVelocity>& state)
+{
+  double scale = 0.0;
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    const Vec2 dv = relative_velocity(rows[r], state);
+    scale = std::max({scale, std::abs(dot(dv, rows[r].normal)), std::abs(dot(dv, rows[r].tangent)),
+                      rows[r].target});
+  }
+  return scale;
+}
+
+double impulse_speed_scale(const std::vector<ContactRow>& rows, ClusterRange cluster)
+{
+  double scale = 0.0;
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    scale = std::max({scale, rows[r].lambda_n * rows[r].k_n, std::abs(rows[r].lambda_t) * rows[r].k_t});
+  return scale;
+}
+
+double cluster_residual(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                        const std::vector<BodyVelocity>& state)
+{
+  double residual = 0.0;
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    residual = std::max(residual, row_residual(rows[r], state, rows[r].mu));
+  return residual;
+}
+
+}  // namespace detail
+}  // namespace collision2d

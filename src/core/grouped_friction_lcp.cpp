@@ -1,0 +1,239 @@
+#include "grouped_friction_lcp.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+constexpr int kDofPerBody = 3;  // vx, vy, omega
+
+/// A group slides only when its net friction |t+ - t-| reaches the cone to
+/// this relative precision. At a 1e6 mass ratio pivoting can return a
+/// sticking pair with t+ and t- both near half the cone and a sliding slack
+/// positive by round-off; projecting that onto the cone would throw the pair
+/// sideways at the full friction bound.
+constexpr double kConeReached = 1.0 - 1e-9;
+
+/// Unknown indices of the layout described at GroupedLcp.
+struct Layout
+{
+  Eigen::Index points;
+  Eigen::Index groups;
+  Eigen::Index t_plus(Eigen::Index g) const { return points + g; }
+  Eigen::Index t_minus(Eigen::Index g) const { return points + groups + g; }
+  Eigen::Index beta(Eigen::Index g) const { return points + 2 * groups + g; }
+  Eigen::Index size() const { return points + 3 * groups; }
+};
+
+Layout layout_of(ClusterRange cluster, const GroupedLcp& lcp)
+{
+  return Layout{static_cast<Eigen::Index>(cluster.end - cluster.begin), static_cast<Eigen::Index>(lcp.groups.size())};
+}
+
+void find_groups(const std::vector<ContactRow>& rows, ClusterRange cluster, GroupedLcp& lcp)
+{
+  lcp.groups.clear();
+  for (std::size_t r = cluster.begin; r < cluster.end;)
+  {
+    FrictionGroup g;
+    g.first = r;
+    g.count = r + 1 < cluster.end && rows[r + 1].a == rows[r].a && rows[r + 1].b == rows[r].b ? 2 : 1;
+    g.r_a = g.count == 2 ? 0.5 * (rows[r].r_a + rows[r + 1].r_a) : rows[r].r_a;
+    g.r_b = g.count == 2 ? 0.5 * (rows[r].r_b + rows[r + 1].r_b) : rows[r].r_b;
+    lcp.groups.push_back(g);
+    r += g.count;
+  }
+}
+
+int number_bodies(const std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+                  GroupedLcp& lcp)
+{
+  lcp.local_body.resize(state.size(), -1);
+  int count = 0;
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    for (std::size_t body : {rows[r].a, rows[r].b})
+      if (state[body].inv_mass > 0.0 && lcp.local_body[body] < 0)
+        lcp.local_body[body] = kDofPerBody * count++;
+  lcp.body_inverse_mass.resize(kDofPerBody * count);
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    for (std::size_t body : {rows[r].a, rows[r].b})
+      if (lcp.local_body[body] >= 0)
+        lcp.body_inverse_mass.segment<kDofPerBody>(lcp.local_body[body])
+            << state[body].inv_mass, state[body].inv_mass, state[body].inv_inertia;
+  return count;
+}
+
+void add_entry(GroupedLcp& lcp, Eigen::Index row, std::size_t body, double sign, Vec2 dir, Vec2 r)
+{
+  const int column = lcp.local_body[body];
+  if (column < 0)
+    return;  // static or kinematic: its velocity never changes
+  lcp.jacobian(row, column) = sign * dir.x;
+  lcp.jacobian(row, column + 1) = sign * dir.y;
+  lcp.jacobian(row, column + 2) = sign * cross(r, dir);
+}
+
+void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                       const std::vector<BodyVelocity>& state, GroupedLcp& lcp, Layout layout)
+{
+  const int bodies = number_bodies(rows, cluster, state, lcp);
+  lcp.jacobian.setZero(layout.points + layout.groups, kDofPerBody * bodies);
+  for (Eigen::Index i = 0; i < layout.points; ++i)
+  {
+    const ContactRow& row = rows[cluster.begin + i];
+    add_entry(lcp, i, row.b, 1.0, row.normal, row.r_b);
+    add_entry(lcp, i, row.a, -1.0, row.normal, row.r_a);
+  }
+  for (Eigen::Index g = 0; g < layout.groups; ++g)
+  {
+    const FrictionGroup& group = lcp.groups[g];
+    const ContactRow& row = rows[group.first];
+    add_entry(lcp, layout.points + g, row.b, 1.0, row.tangent, group.r_b);
+    add_entry(lcp, layout.points + g, row.a, -1.0, row.tangent, group.r_a);
+  }
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    lcp.local_body[rows[r].a] = -1;
+    lcp.local_body[rows[r].b] = -1;
+  }
+  lcp.delassus.noalias() = lcp.jacobian * lcp.body_inverse_mass.asDiagonal() * lcp.jacobian.transpose();
+}
+
+/// Unscaled M and q; beta couples with +1 into the tangent rows and the cone
+/// row reads mu sum(lambda_n) - lambda_t+ - lambda_t-.
+void fill_unscaled(const std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+                   GroupedLcp& lcp, Layout layout)
+{
+  const Eigen::Index points = layout.points;
+  const Eigen::Index groups = layout.groups;
+  const Eigen::Index delassus_size = points + groups;
+  lcp.M.setZero(layout.size(), layout.size());
+  lcp.q.setZero(layout.size());
+  // Columns of the impulses acting on velocities: normals, then t+ (as +t) and t- (as -t).
+  lcp.M.block(0, 0, delassus_size, delassus_size) = lcp.delassus;
+  lcp.M.block(0, points + groups, delassus_size, groups) = -lcp.delassus.block(0, points, delassus_size, groups);
+  lcp.M.block(points + groups, 0, groups, layout.size() - groups) =
+      -lcp.M.block(points, 0, groups, layout.size() - groups);
+  for (Eigen::Index i = 0; i < points; ++i)
+  {
+    const ContactRow& row = rows[cluster.begin + i];
+    lcp.q(i) = dot(relative_velocity(row, state), row.normal) - row.target;
+  }
+  for (Eigen::Index g = 0; g < groups; ++g)
+  {
+    const FrictionGroup& group = lcp.groups[g];
+    const ContactRow& row = rows[group.first];
+    const BodyVelocity& a = state[row.a];
+    const BodyVelocity& b = state[row.b];
+    const double vt = dot(b.v + cross(b.omega, group.r_b) - a.v - cross(a.omega, group.r_a), row.tangent);
+    lcp.q(layout.t_plus(g)) = vt;
+    lcp.q(layout.t_minus(g)) = -vt;
+    lcp.M(layout.t_plus(g), layout.beta(g)) = 1.0;
+    lcp.M(layout.t_minus(g), layout.beta(g)) = 1.0;
+    lcp.M(layout.beta(g), layout.t_plus(g)) = -1.0;
+    lcp.M(layout.beta(g), layout.t_minus(g)) = -1.0;
+    for (std::size_t k = 0; k < group.count; ++k)
+      lcp.M(layout.beta(g), static_cast<Eigen::Index>(group.first + k - cluster.begin)) = row.mu;
+  }
+}
+
+}  // namespace
+
+std::size_t grouped_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster)
+{
+  constexpr std::size_t kUnknownsPerGroup = 3;  // lambda_t+, lambda_t-, beta
+  std::size_t unknowns = 0;
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    const bool new_pair = r == cluster.begin || rows[r - 1].a != rows[r].a || rows[r - 1].b != rows[r].b;
+    unknowns += 1 + (new_pair ? kUnknownsPerGroup : 0);
+  }
+  return unknowns;
+}
+
+void assemble_grouped_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                          const std::vector<BodyVelocity>& state, GroupedLcp& lcp)
+{
+  find_groups(rows, cluster, lcp);
+  const Layout layout = layout_of(cluster, lcp);
+  assemble_delassus(rows, cluster, state, lcp, layout);
+  fill_unscaled(rows, cluster, state, lcp, layout);
+  lcp.scale.resize(layout.size());
+  for (Eigen::Index i = 0; i < layout.points + layout.groups; ++i)
+    lcp.scale(i) = 1.0 / std::sqrt(lcp.delassus(i, i));
+  lcp.scale.segment(layout.t_minus(0), layout.groups) = lcp.scale.segment(layout.t_plus(0), layout.groups);
+  lcp.scale.segment(layout.beta(0), layout.groups) = lcp.scale.segment(layout.t_plus(0), layout.groups).cwiseInverse();
+  lcp.M = lcp.scale.asDiagonal() * lcp.M * lcp.scale.asDiagonal();
+  lcp.q = lcp.scale.cwiseProduct(lcp.q);
+}
+
+void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, ClusterRange cluster,
+                            std::vector<ContactRow>& rows)
+{
+  const Layout layout = layout_of(cluster, lcp);
+  for (Eigen::Index i = 0; i < layout.points; ++i)
+    rows[cluster.begin + i].lambda_n = z(i) * lcp.scale(i);
+  for (Eigen::Index g = 0; g < layout.groups; ++g)
+  {
+    const FrictionGroup& group = lcp.groups[g];
+    double normal_sum = 0.0;
+    for (std::size_t k = 0; k < group.count; ++k)
+      normal_sum += rows[group.first + k].lambda_n;
+    const double t_plus = z(layout.t_plus(g)) * lcp.scale(layout.t_plus(g));
+    const double t_minus = z(layout.t_minus(g)) * lcp.scale(layout.t_minus(g));
+    const double bound = rows[group.first].mu * normal_sum;
+    const bool sliding = z(layout.beta(g)) > 0.0 && std::abs(t_plus - t_minus) >= kConeReached * bound;
+    // On the cone exactly when sliding (see store_cluster_impulses).
+    const double total =
+        sliding ? (t_plus >= t_minus ? 1.0 : -1.0) * bound : t_plus - t_minus;
+    for (std::size_t k = 0; k < group.count; ++k)
+    {
+      ContactRow& row = rows[group.first + k];
+      const double share = normal_sum > 0.0 ? row.lambda_n / normal_sum : 1.0 / group.count;
+      row.lambda_t = share * total;
+      row.sliding = sliding;
+    }
+  }
+}
+
+double grouped_residual(const std::vector<ContactRow>& rows, const GroupedLcp& lcp,
+                        const std::vector<BodyVelocity>& state)
+{
+  double residual = 0.0;
+  for (const FrictionGroup& group : lcp.groups)
+  {
+    double normal_sum = 0.0;
+    double tangent_sum = 0.0;
+    for (std::size_t k = 0; k < group.count; ++k)
+    {
+      const ContactRow& row = rows[group.first + k];
+      const double vn = dot(relative_velocity(row, state), row.normal);
+      residual = std::max(residual, row.lambda_n > 0.0 ? std::abs(vn - row.target) : std::max(0.0, row.target - vn));
+      normal_sum += row.lambda_n;
+      tangent_sum += row.lambda_t;
+    }
+    const ContactRow& row = rows[group.first];
+    const BodyVelocity& a = state[row.a];
+    const BodyVelocity& b = state[row.b];
+    const double vt = dot(b.v + cross(b.omega, group.r_b) - a.v - cross(a.omega, group.r_a), row.tangent);
+    const double bound = row.mu * normal_sum;
+    const double magnitude = std::abs(tangent_sum);
+    // The split into shares rounds, so the sliding flag (not |sum| == bound)
+    // says which side of the cone the group is on.
+    double friction = 0.0;
+    if (!row.sliding)
+      friction = std::abs(vt) + std::max(0.0, magnitude - bound) * row.k_t;  // sticks, inside the cone
+    else
+      friction = std::max(0.0, tangent_sum > 0.0 ? vt : (tangent_sum < 0.0 ? -vt : 0.0)) +
+                 std::abs(magnitude - bound) * row.k_t;  // slides against its impulse, on the cone
+    residual = std::max(residual, friction);
+  }
+  return residual;
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,76 @@
+// Internal to the core: a cluster's frictional LCP with one friction row per
+// body pair instead of one per contact point (the World's exact mode).
+//
+// The two points of a manifold lie on one face and share its tangent; two
+// friction rows there are one constraint twice. Their impulses may grow
+// equal and opposite without changing any velocity, and at a 1e6 mass ratio
+// that null space leaves pivoting with a singular basis and an answer whose
+// recomputed residual is 10% of its speeds (measured on the heavy-on-light
+// scene). One friction row at the pair's midpoint, against the cone of the
+// pair's summed normal impulse, removes it: the same model as the World's
+// iterative pair friction (world_solve.cpp, solve_friction_pair).
+#pragma once
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "contact_rows.h"
+#include "exact_cluster_lcp.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// A friction group: the rows [first, first + count) of one body pair (count
+/// 1 or 2, adjacent after partition_clusters), sharing one friction row at
+/// the midpoint of their contact points, with the first row's mu.
+struct FrictionGroup
+{
+  std::size_t first = 0;
+  std::size_t count = 1;
+  Vec2 r_a;  ///< midpoint lever arms
+  Vec2 r_b;
+};
+
+/// Work arrays of one cluster's grouped LCP.
+///
+/// Unknowns: every point's lambda_n, then per group lambda_t+, lambda_t- and
+/// the sliding-speed slack beta. Rows complementary to them: vn - target;
+/// beta + vt and beta - vt at the group's midpoint; mu sum(lambda_n) -
+/// lambda_t+ - lambda_t-. Impulses are scaled by the square root of their
+/// row's inverse effective mass and beta by its inverse (as in ClusterLcp),
+/// so the Delassus part has unit diagonal whatever the masses.
+struct GroupedLcp
+{
+  std::vector<FrictionGroup> groups;
+  Eigen::MatrixXd jacobian;  ///< point normal rows, then group tangent rows
+  Eigen::VectorXd body_inverse_mass;
+  Eigen::MatrixXd delassus;
+  Eigen::VectorXd scale;  ///< per unknown: impulse = scale * z (beta: speed = scale * z)
+  Eigen::MatrixXd M;
+  Eigen::VectorXd q;
+  std::vector<int> local_body;  ///< body index -> first jacobian column, -1 outside
+};
+
+/// Unknowns of the cluster's grouped LCP: one per point, three per body pair.
+std::size_t grouped_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster);
+
+/// Fills groups, M and q for rows [cluster.begin, cluster.end) at the
+/// pre-solve velocities in `state`.
+void assemble_grouped_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+                          const std::vector<BodyVelocity>& state, GroupedLcp& lcp);
+
+/// Writes solution z into the rows: lambda_n per point, the group's
+/// tangential impulse split in proportion to the normal impulses (each point
+/// inside its share of the cone), sliding when the group slides.
+void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, ClusterRange cluster,
+                            std::vector<ContactRow>& rows);
+
+/// Residual (m/s) of the solved cluster at `state` (the velocities after the
+/// impulses): per point the normal part of row_residual, per group its
+/// friction part at the midpoint against the group's summed impulses.
+double grouped_residual(const std::vector<ContactRow>& rows, const GroupedLcp& lcp,
+                        const std::vector<BodyVelocity>& state);
+
+}  // namespace detail
+}  // namespace collision2d

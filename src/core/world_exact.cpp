@@ -1,0 +1,230 @@
+// SolverMode::Exact: each island of the substep's contacts (dynamic bodies
+// linked by contacts; static and kinematic bodies do not link) is solved as
+// one linear complementarity problem by pivoting, with the machinery of the
+// exact ContactSolver mode (exact_cluster_solve.h).
+//
+// Velocities: the world's per-contact Newton targets and Coulomb cones. Which
+// friction coefficient: the LCP has one cone per contact, and the world's
+// friction is a state (world_solve.cpp, coulomb()): a contact that stuck in
+// the previous substep gets the static cone mu_s, one that slid gets the
+// kinetic cone mu_k. That is the rule of the iterative passes, so a box on an
+// incline sticks below tan(theta) = mu_s and slides at g (sin - mu_k cos) in
+// both modes; one mu_s cone for all would brake a sliding box at the static
+// bound, one mu_k cone would let a resting box slip between mu_k and mu_s.
+// The LCP's answer sets the state for the next substep (a contact on its cone
+// with a positive sliding slack slides). Exact rows carry the island's total
+// impulses, so they are neither warm started nor touched by the passes; an
+// island whose solve fails keeps its warm-start impulses and goes through the
+// passes as in iterative mode.
+//
+// Positions (WorldSettings::exact_position_correction): the same island's
+// penetrations beyond slop, linearised as in SPEC step 3 with compliance on
+// the diagonal, solved at once: K lambda + softness lambda >= depth - slop,
+// lambda >= 0, complementary. A Gauss-Seidel position pass moves the light
+// body of a 1e6 mass-ratio pair and almost never the heavy one, so without
+// this a heavy box on a light one keeps the gravity sag of every substep and
+// sinks steadily even with exact velocities.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "collision2d/exact_solver.h"
+#include "collision2d/world.h"
+#include "contact_rows.h"
+#include "exact_cluster_solve.h"
+#include "grouped_friction_lcp.h"
+
+namespace collision2d
+{
+namespace
+{
+/// One substep's islands in the exact solver's terms; built per call (one
+/// allocation per array, none per contact or pivot).
+struct ExactIslands
+{
+  std::vector<detail::BodyVelocity> state;
+  std::vector<detail::ContactRow> rows;
+  std::vector<detail::ClusterRange> clusters;
+  std::vector<std::size_t> parent;
+  detail::ClusterLcp lcp;
+  detail::GroupedLcp grouped;
+};
+
+/// The world's contact row `w` (row k of the substep) as a row of the exact
+/// solver. A template because the world's row type is private to World.
+template <class WorldRow>
+detail::ContactRow exact_row(const WorldRow& w, std::size_t k, bool friction)
+{
+  detail::ContactRow row;
+  row.contact = k;
+  row.a = w.a;
+  row.b = w.b;
+  row.normal = w.normal;
+  row.tangent = perp(w.normal);
+  row.r_a = w.ra;
+  row.r_b = w.rb;
+  row.k_n = 1.0 / w.normal_mass;
+  row.k_t = 1.0 / w.tangent_mass;
+  row.target = w.target;
+  row.mu = friction ? (w.kinetic ? w.mu_k : w.mu_s) : 0.0;
+  return row;
+}
+
+/// Rows of the active contacts, partitioned into islands. A body's inertia
+/// comes from its rows: a frictionless disk's rows drop it (prepare_rows), and
+/// so must its LCP.
+template <class WorldRow>
+void build_islands(const std::vector<Body>& bodies, const std::vector<WorldRow>& world_rows, bool friction,
+                   ExactIslands& out)
+{
+  out.state.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    out.state[i] = detail::BodyVelocity{bodies[i].velocity(), bodies[i].omega(), bodies[i].inv_mass(), 0.0};
+  }
+  out.rows.clear();
+  out.rows.reserve(world_rows.size());
+  for (std::size_t k = 0; k < world_rows.size(); ++k)
+  {
+    const WorldRow& w = world_rows[k];
+    if (w.active)
+    {
+      out.state[w.a].inv_inertia = std::max(out.state[w.a].inv_inertia, w.inv_inertia_a);
+      out.state[w.b].inv_inertia = std::max(out.state[w.b].inv_inertia, w.inv_inertia_b);
+      out.rows.push_back(exact_row(w, k, friction));
+    }
+  }
+  detail::partition_clusters(out.state, out.rows, out.clusters, out.parent);
+  out.lcp.local_body.assign(bodies.size(), -1);
+}
+
+/// Pivots the island's velocity LCP and stores the impulses in its rows;
+/// false when pivoting failed or the island is too large. With friction the
+/// grouped form is used (grouped_friction_lcp.h).
+bool pivot_velocity_island(ExactIslands& islands, detail::ClusterRange cluster)
+{
+  int pivots = 0;
+  if (!detail::cluster_has_friction(islands.rows, cluster))
+  {
+    return detail::solve_cluster(islands.rows, cluster, islands.state, islands.lcp, pivots);
+  }
+  if (detail::grouped_unknowns(islands.rows, cluster) > kMaxExactUnknowns)
+  {
+    return false;
+  }
+  detail::assemble_grouped_lcp(islands.rows, cluster, islands.state, islands.grouped);
+  const LcpResult result = detail::pivot_with_retry(islands.grouped.M, islands.grouped.q, pivots);
+  if (result.solved())
+  {
+    detail::store_grouped_impulses(result.z, islands.grouped, cluster, islands.rows);
+  }
+  return result.solved();
+}
+
+double island_residual(const ExactIslands& islands, detail::ClusterRange cluster)
+{
+  return detail::cluster_has_friction(islands.rows, cluster)
+             ? detail::grouped_residual(islands.rows, islands.grouped, islands.state)
+             : detail::cluster_residual(islands.rows, cluster, islands.state);
+}
+
+/// Velocity solve of one island: impulses in the rows and velocities in
+/// `state`, or false with the island's velocities back at the bodies' ones.
+/// The residual recomputed from the velocities must be round-off of the
+/// speeds involved, as in solve_exact.
+bool solve_velocity_island(const std::vector<Body>& bodies, ExactIslands& islands, detail::ClusterRange cluster)
+{
+  if (!pivot_velocity_island(islands, cluster))
+  {
+    return false;
+  }
+  const double speed_before = detail::contact_speed_scale(islands.rows, cluster, islands.state);
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    const detail::ContactRow& row = islands.rows[r];
+    detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent, islands.state);
+  }
+  const double scale = std::max({speed_before, detail::contact_speed_scale(islands.rows, cluster, islands.state),
+                                 detail::impulse_speed_scale(islands.rows, cluster)});
+  if (island_residual(islands, cluster) <= kTrustedResidual * scale)
+  {
+    return true;
+  }
+  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  {
+    for (std::size_t i : {islands.rows[r].a, islands.rows[r].b})
+    {
+      islands.state[i].v = bodies[i].velocity();
+      islands.state[i].omega = bodies[i].omega();
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+void World::solve_exact_islands(StepReport& report)
+{
+  ExactIslands islands;
+  build_islands(bodies_, rows_, true, islands);
+  for (const detail::ClusterRange& cluster : islands.clusters)
+  {
+    const bool solved = solve_velocity_island(bodies_, islands, cluster);
+    ++(solved ? report.exact_islands : report.exact_fallbacks);
+    for (std::size_t r = cluster.begin; solved && r < cluster.end; ++r)
+    {
+      const detail::ContactRow& row = islands.rows[r];
+      ContactRow& w = rows_[row.contact];
+      w.exact = true;
+      w.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
+      w.sliding = row.sliding;
+    }
+  }
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    if (bodies_[i].type() == BodyType::Dynamic)
+    {
+      bodies_[i].set_velocity(islands.state[i].v);
+      bodies_[i].set_omega(islands.state[i].omega);
+    }
+  }
+}
+
+void World::solve_position_islands(double softness, StepReport& report)
+{
+  ExactIslands islands;
+  build_islands(bodies_, rows_, false, islands);
+  detail::ClusterLcp& lcp = islands.lcp;
+  for (const detail::ClusterRange& cluster : islands.clusters)
+  {
+    if (detail::cluster_unknowns(islands.rows, cluster) > kMaxExactUnknowns)
+    {
+      ++report.exact_fallbacks;
+      continue;
+    }
+    // The frictionless velocity LCP's matrix is the position problem's too;
+    // only the right-hand side (depths left) and the compliance differ.
+    detail::assemble_cluster_lcp(islands.rows, cluster, islands.state, lcp);
+    for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    {
+      const Eigen::Index i = static_cast<Eigen::Index>(r - cluster.begin);
+      const double scale = 1.0 / std::sqrt(islands.rows[r].k_n);
+      lcp.q(i) = -(current_depth(rows_[islands.rows[r].contact]) - settings_.slop) * scale;
+      lcp.M(i, i) += softness * scale * scale;
+    }
+    int pivots = 0;
+    const LcpResult result = detail::pivot_with_retry(lcp.M, lcp.q, pivots);
+    ++(result.solved() ? report.exact_islands : report.exact_fallbacks);
+    for (std::size_t r = cluster.begin; result.solved() && r < cluster.end; ++r)
+    {
+      const Eigen::Index i = static_cast<Eigen::Index>(r - cluster.begin);
+      ContactRow& w = rows_[islands.rows[r].contact];
+      const double lambda = result.z(i) / std::sqrt(islands.rows[r].k_n);
+      displace(w.a, -lambda, w.normal, w.ra, w.inv_mass_a, w.inv_inertia_a);
+      displace(w.b, lambda, w.normal, w.rb, w.inv_mass_b, w.inv_inertia_b);
+      w.position_solved = true;
+    }
+  }
+}
+
+}  // namespace collision2d

@@ -272,7 +272,8 @@ def check_drawn(image, config):
     if area is None:
         return False, [], ["no rviz render area (background %s) in the screenshot: rviz is not up" % (background,)]
     left, top, right, bottom = area
-    probes = [(x, y) for y in range(top, bottom + 1, RENDER_SCAN_STEP) for x in range(left, right + 1, RENDER_SCAN_STEP)]
+    probes = [(x, y) for y in range(top, bottom + 1, RENDER_SCAN_STEP)
+              for x in range(left, right + 1, RENDER_SCAN_STEP)]
     coloured = sum(1 for x, y in probes if body_coloured(image.pixel(x, y), background))
     share = coloured / float(len(probes))
     return share >= MIN_DRAWN_SHARE, [], ["render area %s; %.1f%% of it body-coloured" % (area, 100.0 * share)]

@@ -60,10 +60,15 @@ cleanup() {
     kill -INT "$launch_pid" 2>/dev/null || true
     timeout 20 tail --pid="$launch_pid" -f /dev/null 2>/dev/null || kill -KILL "$launch_pid" 2>/dev/null || true
   fi
-  [[ -n $xvfb_pid ]] && kill "$xvfb_pid" 2>/dev/null || true
+  if [[ -n $xvfb_pid ]]; then
+    kill "$xvfb_pid" 2>/dev/null || true
+  fi
   rm -rf "$work"
 }
 trap cleanup EXIT
+# Make a terminating signal run the EXIT trap, so no Xvfb or rviz is left over.
+trap 'exit 143' TERM
+trap 'exit 130' INT
 
 free_port() {
   /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'
@@ -78,7 +83,8 @@ start_display() {
     ((waited++ < START_TIMEOUT_S * 10)) || die "Xvfb did not start: $(cat "$work/xvfb.log")"
     sleep 0.1
   done
-  export DISPLAY=":$(cat "$work/display")"
+  DISPLAY=":$(cat "$work/display")"
+  export DISPLAY
   log "virtual display $DISPLAY"
 }
 

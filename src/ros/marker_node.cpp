@@ -2,6 +2,9 @@
 // turns it into markers at most ~max_rate times per second.
 #include "collision2d/ros/marker_node.h"
 
+#include <cstdint>
+#include <string>
+
 #include <visualization_msgs/MarkerArray.h>
 
 namespace collision2d

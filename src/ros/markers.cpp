@@ -47,7 +47,6 @@ Marker make_marker(const std_msgs::Header& header, const char* ns, std::int32_t 
   marker.action = Marker::ADD;
   marker.pose.orientation.w = 1.0;
   marker.scale.x = marker.scale.y = marker.scale.z = 1.0;
-  marker.frame_locked = false;
   return marker;
 }
 

@@ -25,14 +25,17 @@ class RvizDrawsTheWorld(unittest.TestCase):
     def test_bodies_are_drawn_where_the_world_has_them(self):
         ros_home = os.environ.get("ROS_HOME", os.path.expanduser("~/.ros"))
         screenshot = os.path.join(ros_home, "collision2d_rviz_screenshot.png")
+        script = subprocess.Popen([SCRIPT, "--frames", str(FRAMES), screenshot], stdout=subprocess.PIPE,
+                                  stderr=subprocess.STDOUT, universal_newlines=True)
         try:
-            result = subprocess.run([SCRIPT, "--frames", str(FRAMES), screenshot], stdout=subprocess.PIPE,
-                                    stderr=subprocess.STDOUT, universal_newlines=True, timeout=TIMEOUT_S)
-        except subprocess.TimeoutExpired as e:
-            self.fail("rviz_screenshot.sh did not finish in %d s:\n%s" % (TIMEOUT_S, e.output))
-        sys.stdout.write(result.stdout)
-        self.assertEqual(result.returncode, 0,
-                         "rviz did not draw the world (screenshot %s):\n%s" % (screenshot, result.stdout))
+            output, _ = script.communicate(timeout=TIMEOUT_S)
+        except subprocess.TimeoutExpired:
+            script.terminate()  # the script stops its Xvfb, master and nodes on SIGTERM
+            output, _ = script.communicate()
+            self.fail("rviz_screenshot.sh did not finish in %d s:\n%s" % (TIMEOUT_S, output))
+        sys.stdout.write(output)
+        self.assertEqual(script.returncode, 0,
+                         "rviz did not draw the world (screenshot %s):\n%s" % (screenshot, output))
 
 
 if __name__ == "__main__":

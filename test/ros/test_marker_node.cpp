@@ -236,8 +236,9 @@ TEST_F(MarkerNodeTest, MarkersMatchTheSceneBodies)
   ASSERT_NE(radius, nullptr);
   ASSERT_EQ(radius->points.size(), 2U);
   const Point2 rim = test::to_world(*radius, radius->points[1]);
-  EXPECT_TRUE(near(rim, {kWheelX + kWheelRadius * std::cos(kWheelTheta), kWheelY + kWheelRadius * std::sin(kWheelTheta)}))
-      << "the radius line shows the wheel's angle";
+  const Point2 expected_rim{kWheelX + kWheelRadius * std::cos(kWheelTheta),
+                            kWheelY + kWheelRadius * std::sin(kWheelTheta)};
+  EXPECT_TRUE(near(rim, expected_rim)) << "the radius line shows the wheel's angle";
 
   const auto& floor_color = m.find(ns::kBodies, kFloor)->color;
   EXPECT_TRUE(floor_color.r == floor_color.g && floor_color.g == floor_color.b) << "static is grey";

@@ -101,6 +101,7 @@ void World::validate(const WorldSettings& s)
   require_positive("dt", s.dt);
   require_at_least_one("substeps", s.substeps);
   require_at_least_one("velocity_iterations", s.velocity_iterations);
+  require_at_least_one("position_iterations", s.position_iterations);
   require_non_negative("slop", s.slop);
   require_non_negative("compliance", s.compliance);
   require_non_negative("restitution_threshold", s.restitution_threshold);

@@ -52,7 +52,66 @@ bool solve3(const double k[3][3], const double rhs[3], double x[3])
   return true;
 }
 
+/// Solves the two-point LCP w = K y + q >= 0, y >= 0, y . w = 0 (K symmetric
+/// positive definite) exactly by trying its four cases: both points active,
+/// only the first, only the second, neither.
+void solve_lcp2(double k11, double k12, double k22, double q1, double q2, double& y1, double& y2)
+{
+  const double det = k11 * k22 - k12 * k12;
+  y1 = (k12 * q2 - k22 * q1) / det;
+  y2 = (k12 * q1 - k11 * q2) / det;
+  if (y1 >= 0.0 && y2 >= 0.0)
+  {
+    return;
+  }
+  y1 = std::max(0.0, -q1 / k11);
+  y2 = 0.0;
+  if (k12 * y1 + q2 >= 0.0)
+  {
+    return;
+  }
+  y1 = 0.0;
+  y2 = std::max(0.0, -q2 / k22);
+  if (!(k12 * y2 + q1 >= 0.0))
+  {
+    y2 = 0.0;
+  }
+}
+
 }  // namespace
+
+double World::pair_coupling(const ContactRow& first, const ContactRow& second) const
+{
+  // Off-diagonal of the pair's normal block: speed at one point per unit
+  // impulse at the other.
+  const Vec2 n = first.normal;
+  return first.inv_mass_a + first.inv_mass_b + first.inv_inertia_a * cross(first.ra, n) * cross(second.ra, n) +
+         first.inv_inertia_b * cross(first.rb, n) * cross(second.rb, n);
+}
+
+bool World::correct_pair(const ContactRow& first, const ContactRow& second, double depth1, double depth2,
+                         double softness)
+{
+  // The pair's two corrections solved together: each point alone would
+  // spend most of its correction turning the body (K_n of a box corner is
+  // 2.5 times its inverse mass), which the other point's turn undoes, so a
+  // flat box is lifted by only 40% of its excess depth per pass.
+  const double k11 = effective_inverse_mass(first, first.normal) + softness;
+  const double k22 = effective_inverse_mass(second, second.normal) + softness;
+  const double k12 = pair_coupling(first, second);
+  if (!(k11 * k22 - k12 * k12 > kBlockConditionLimit * k11 * k22))
+  {
+    return false;
+  }
+  double y1 = 0.0;
+  double y2 = 0.0;
+  solve_lcp2(k11, k12, k22, settings_.slop - depth1, settings_.slop - depth2, y1, y2);
+  displace(first.a, -y1, first.normal, first.ra, first.inv_mass_a, first.inv_inertia_a);
+  displace(first.b, y1, first.normal, first.rb, first.inv_mass_b, first.inv_inertia_b);
+  displace(second.a, -y2, second.normal, second.ra, second.inv_mass_a, second.inv_inertia_a);
+  displace(second.b, y2, second.normal, second.rb, second.inv_mass_b, second.inv_inertia_b);
+  return true;
+}
 
 void World::solve_pair(ContactRow& first, ContactRow& second, bool rough)
 {
@@ -125,18 +184,12 @@ bool World::solve_stick_pair(ContactRow& first, ContactRow& second)
 bool World::solve_normal_pair(ContactRow& first, ContactRow& second)
 {
   // Two-point LCP on the accumulated impulses x >= 0 with residual
-  // w = K x + q >= 0, x . w = 0, solved exactly by trying its four cases.
+  // w = K x + q >= 0, x . w = 0.
   const Vec2 n = first.normal;
-  const double arm_a1 = cross(first.ra, n);
-  const double arm_a2 = cross(second.ra, n);
-  const double arm_b1 = cross(first.rb, n);
-  const double arm_b2 = cross(second.rb, n);
   const double k11 = 1.0 / first.normal_mass;
   const double k22 = 1.0 / second.normal_mass;
-  const double k12 = first.inv_mass_a + first.inv_mass_b + first.inv_inertia_a * arm_a1 * arm_a2 +
-                     first.inv_inertia_b * arm_b1 * arm_b2;
-  const double det = k11 * k22 - k12 * k12;
-  if (!(det > kBlockConditionLimit * k11 * k22))
+  const double k12 = pair_coupling(first, second);
+  if (!(k11 * k22 - k12 * k12 > kBlockConditionLimit * k11 * k22))
   {
     return false;  // nearly dependent points (no rotation, or coincident arms)
   }
@@ -144,22 +197,9 @@ bool World::solve_normal_pair(ContactRow& first, ContactRow& second)
   const double x2 = second.impulse.normal;
   const double q1 = dot(relative_velocity(first), n) - first.target - (k11 * x1 + k12 * x2);
   const double q2 = dot(relative_velocity(second), n) - second.target - (k12 * x1 + k22 * x2);
-  double y1 = (k12 * q2 - k22 * q1) / det;
-  double y2 = (k12 * q1 - k11 * q2) / det;
-  if (!(y1 >= 0.0 && y2 >= 0.0))
-  {
-    y1 = std::max(0.0, -q1 / k11);
-    y2 = 0.0;
-    if (!(k12 * y1 + q2 >= 0.0))
-    {
-      y1 = 0.0;
-      y2 = std::max(0.0, -q2 / k22);
-      if (!(k12 * y2 + q1 >= 0.0))
-      {
-        y2 = 0.0;
-      }
-    }
-  }
+  double y1 = 0.0;
+  double y2 = 0.0;
+  solve_lcp2(k11, k12, k22, q1, q2, y1, y2);
   first.impulse.normal = y1;
   second.impulse.normal = y2;
   apply_impulse(first, (y1 - x1) * n);

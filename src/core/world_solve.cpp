@@ -93,10 +93,18 @@ void World::correct_positions(double h, bool friction, StepReport& report)
   if (exact)
   {
     // Every static-friction hold first, then the islands' penetrations at once
-    // (world_exact.cpp); a failed island is left to the pass below.
+    // (world_exact.cpp); a failed island is left to the passes below.
     hold_all_static_friction(friction);
     solve_position_islands(softness, report);
   }
+  for (int pass = 0; pass < settings_.position_iterations; ++pass)
+  {
+    correct_pass(softness, !exact && friction && pass == 0);
+  }
+}
+
+void World::correct_pass(double softness, bool hold)
+{
   for (std::size_t k = 0; k < rows_.size(); k += rows_[k].count == 2 ? 2 : 1)
   {
     ContactRow& row = rows_[k];
@@ -105,16 +113,20 @@ void World::correct_positions(double h, bool friction, StepReport& report)
       continue;
     }
     const bool pair = row.count == 2;
-    // Depths are taken after the corrections already made this pass (so a
-    // stack's correction travels up it in one pass instead of diffusing over
-    // many substeps), and for both points of a pair before either moves (so
-    // the first point's turn does not tilt the second).
-    if (!exact && friction && !row.kinetic && row.mu_s > 0.0)
+    // Depths are taken after the corrections already made (so a stack's
+    // correction travels up it in one pass instead of diffusing over many
+    // substeps), and for both points of a pair before either moves (so the
+    // first point's turn does not tilt the second).
+    if (hold && !row.kinetic && row.mu_s > 0.0)
     {
       hold_static_friction(row, pair ? rows_[k + 1] : row);
     }
     const double first = current_depth(row);
     const double second = pair ? current_depth(rows_[k + 1]) : 0.0;
+    if (pair && settings_.position_block && correct_pair(row, rows_[k + 1], first, second, softness))
+    {
+      continue;
+    }
     correct_point(row, first, softness);
     if (pair)
     {

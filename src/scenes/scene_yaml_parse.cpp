@@ -82,6 +82,8 @@ WorldSettings read_settings(const YAML::Node& node, const std::string& source, W
   s.dt = f.positive("dt", s.dt);
   s.substeps = f.integer("substeps", s.substeps, 1);
   s.velocity_iterations = f.integer("velocity_iterations", s.velocity_iterations, 1);
+  s.position_iterations = f.integer("position_iterations", s.position_iterations, 1);
+  s.position_block = read_flag(f, "position_block", s.position_block);
   s.slop = f.non_negative("slop", s.slop);
   s.compliance = f.non_negative("compliance", s.compliance);
   s.restitution_threshold = f.non_negative("restitution_threshold", s.restitution_threshold);

@@ -118,6 +118,8 @@ void write_settings(std::ostream& out, const WorldSettings& s)
   out << "  dt: " << format_number(s.dt) << "\n";
   out << "  substeps: " << s.substeps << "\n";
   out << "  velocity_iterations: " << s.velocity_iterations << "\n";
+  out << "  position_iterations: " << s.position_iterations << "\n";
+  out << "  position_block: " << flag_name(s.position_block) << "\n";
   out << "  slop: " << format_number(s.slop) << "\n";
   out << "  compliance: " << format_number(s.compliance) << "\n";
   out << "  restitution_threshold: " << format_number(s.restitution_threshold) << "\n";

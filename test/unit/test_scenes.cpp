@@ -136,6 +136,8 @@ void expect_same_settings(const WorldSettings& a, const WorldSettings& b)
   EXPECT_EQ(a.sleep_angular_speed, b.sleep_angular_speed);
   EXPECT_EQ(a.sleep_time, b.sleep_time);
   EXPECT_EQ(a.sleep_auto_min_bodies, b.sleep_auto_min_bodies);
+  EXPECT_EQ(a.position_iterations, b.position_iterations);
+  EXPECT_EQ(a.position_block, b.position_block);
   EXPECT_EQ(a.solver_mode, b.solver_mode);
   EXPECT_EQ(a.exact_position_correction, b.exact_position_correction);
 }
@@ -417,6 +419,8 @@ TEST(SceneFiles, SaveThenLoadKeepsEverySettingTypeAndAwkwardNumber)
   s.sleep_angular_speed = 0.02;
   s.sleep_time = 1.5;
   s.sleep_auto_min_bodies = 12345678901ULL;
+  s.position_iterations = 3;
+  s.position_block = !WorldSettings().position_block;
   s.solver_mode = SolverMode::Exact;
   s.exact_position_correction = false;
   Body disk(0.7, 0.123456789, {1e-300, -2.0 / 7.0}, {1.0 / 3.0, 0.0}, -4.5);
@@ -492,6 +496,7 @@ TEST(SceneFiles, EveryErrorNamesTheLineAndTheKey)
       {"settings:\n  dt: -1\n", 2, "settings.dt", "must be positive"},
       {"settings:\n  warm_start_factor: 1.5\n", 2, "settings.warm_start_factor", "[0, 1]"},
       {"settings:\n  gravity: [0, 1]\n", 2, "settings.gravity", "unknown key"},
+      {"settings:\n  position_iterations: 0\n", 2, "settings.position_iterations", "at least 1"},
       {"settings:\n  solver_mode: pivoting\n", 2, "settings.solver_mode", "iterative or exact"},
       {"settings:\n  exact_position_correction: yes\n", 2, "settings.exact_position_correction", "true or false"},
       {"materials:\n  a: {restitution: 2}\n", 2, "materials.a.restitution", "[0, 1]"},

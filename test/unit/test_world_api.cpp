@@ -89,6 +89,9 @@ TEST(WorldApi, RejectsBadSettingsNamingTheField)
   s.velocity_iterations = 0;
   expect_rejected(s, "velocity_iterations");
   s = WorldSettings();
+  s.position_iterations = 0;
+  expect_rejected(s, "position_iterations");
+  s = WorldSettings();
   s.slop = -1e-3;
   expect_rejected(s, "slop");
   s = WorldSettings();

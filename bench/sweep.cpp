@@ -174,7 +174,12 @@ std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick)
 {
   const WorldSettings& base = scene.scene.settings;
   std::vector<RunSpec> runs{RunSpec{"baseline", steps_text(base.substeps, base.velocity_iterations), ours(base)}};
-  add_modes(base, runs);
+  // The pyramid is one cluster of 210 boxes (~2400 complementarity rows):
+  // pivoting it did not finish 30 frames in several minutes, so it is left out.
+  if (scene.name != "pyramid")
+  {
+    add_modes(base, runs);
+  }
   if (scene.kind == SceneKind::Bullet)
   {
     add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);

@@ -33,8 +33,8 @@ constexpr double kLabelZ = 0.15;
 // Arrow head diameter and length as multiples of the shaft diameter.
 constexpr double kArrowHeadWidthFactor = 2.5;
 constexpr double kArrowHeadLengthFactor = 3.0;
-// Polygon outlines are drawn darker than their fill, so touching bodies of one
-// colour stay distinguishable.
+// Lines (polygon outlines, disk radii) are drawn darker than the fill, so
+// touching bodies of one colour stay distinguishable.
 constexpr float kLineShade = 0.45F;
 
 Marker make_marker(const std_msgs::Header& header, const char* ns, std::int32_t id, std::int32_t type)

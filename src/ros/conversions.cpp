@@ -1,4 +1,4 @@
-// RigidBody / ContactPoint <-> core Body / Contact.
+// BodyMsg / ContactMsg <-> core Body / Contact.
 #include "collision2d/ros/conversions.h"
 
 #include <stdexcept>
@@ -12,7 +12,7 @@ namespace
 {
 constexpr double kMaxRestitution = 1.0;
 
-void check_pose_and_twist(const RigidBody& msg, const std::string& where)
+void check_pose_and_twist(const BodyMsg& msg, const std::string& where)
 {
   require_finite(msg.pose.x, where, "pose.x");
   require_finite(msg.pose.y, where, "pose.y");
@@ -26,18 +26,18 @@ BodyType body_type_from_msg(std::uint8_t type, const std::string& where)
 {
   switch (type)
   {
-    case RigidBody::DYNAMIC:
+    case BodyMsg::DYNAMIC:
       return BodyType::Dynamic;
-    case RigidBody::STATIC:
+    case BodyMsg::STATIC:
       return BodyType::Static;
-    case RigidBody::KINEMATIC:
+    case BodyMsg::KINEMATIC:
       return BodyType::Kinematic;
     default:
       reject(where, "type = " + std::to_string(type) + " is not DYNAMIC (0), STATIC (1) or KINEMATIC (2)");
   }
 }
 
-std::vector<Vec2> outline_from_msg(const RigidBody& msg, const std::string& where)
+std::vector<Vec2> outline_from_msg(const BodyMsg& msg, const std::string& where)
 {
   std::vector<Vec2> outline;
   outline.reserve(msg.vertices.size());
@@ -54,14 +54,14 @@ std::vector<Vec2> outline_from_msg(const RigidBody& msg, const std::string& wher
 
 /// Fields are checked before the core sees them, so what reaches the core is
 /// valid; anything the core still refuses is reported for this body too.
-Body build_body(const RigidBody& msg, const std::string& where)
+Body build_body(const BodyMsg& msg, const std::string& where)
 {
   const Vec2 position{msg.pose.x, msg.pose.y};
   const Vec2 velocity{msg.twist.linear.x, msg.twist.linear.y};
   const double omega = msg.twist.angular.z;
   switch (msg.shape)
   {
-    case RigidBody::DISK:
+    case BodyMsg::DISK:
     {
       require_positive(msg.radius, where, "radius");
       if (!msg.vertices.empty())
@@ -72,7 +72,7 @@ Body build_body(const RigidBody& msg, const std::string& where)
       body.set_theta(msg.pose.theta);
       return body;
     }
-    case RigidBody::POLYGON:
+    case BodyMsg::POLYGON:
       return Body(msg.mass, outline_from_msg(msg, where), position, velocity, msg.pose.theta, omega);
     default:
       reject(where, "shape = " + std::to_string(msg.shape) + " is not DISK (0) or POLYGON (1)");
@@ -98,7 +98,7 @@ BodyMaterial material_to_msg(const Material& material)
   return msg;
 }
 
-SceneBody scene_body_from_msg(const RigidBody& msg, const std::string& where)
+SceneBody scene_body_from_msg(const BodyMsg& msg, const std::string& where)
 {
   require_positive(msg.mass, where, "mass");
   check_pose_and_twist(msg, where);
@@ -120,7 +120,7 @@ SceneBody scene_body_from_msg(const RigidBody& msg, const std::string& where)
   }
 }
 
-std::vector<SceneBody> scene_bodies_from_msgs(const std::vector<RigidBody>& msgs, std::size_t max_bodies)
+std::vector<SceneBody> scene_bodies_from_msgs(const std::vector<BodyMsg>& msgs, std::size_t max_bodies)
 {
   if (msgs.size() > max_bodies)
   {
@@ -143,7 +143,7 @@ std::vector<SceneBody> scene_bodies_from_msgs(const std::vector<RigidBody>& msgs
   return bodies;
 }
 
-std::vector<Body> bodies_from_msgs(const std::vector<RigidBody>& msgs, std::size_t max_bodies)
+std::vector<Body> bodies_from_msgs(const std::vector<BodyMsg>& msgs, std::size_t max_bodies)
 {
   std::vector<SceneBody> scene_bodies = scene_bodies_from_msgs(msgs, max_bodies);
   std::unordered_map<std::uint32_t, std::size_t> first_with_id;
@@ -165,21 +165,21 @@ std::vector<Body> bodies_from_msgs(const std::vector<RigidBody>& msgs, std::size
   return bodies;
 }
 
-RigidBody body_to_msg(const Body& body, std::uint32_t id, const Material& material)
+BodyMsg body_to_msg(const Body& body, std::uint32_t id, const Material& material)
 {
-  RigidBody msg;
+  BodyMsg msg;
   msg.id = id;
-  msg.shape = body.shape() == Shape::Disk ? RigidBody::DISK : RigidBody::POLYGON;
+  msg.shape = body.shape() == Shape::Disk ? BodyMsg::DISK : BodyMsg::POLYGON;
   switch (body.type())
   {
     case BodyType::Dynamic:
-      msg.type = RigidBody::DYNAMIC;
+      msg.type = BodyMsg::DYNAMIC;
       break;
     case BodyType::Static:
-      msg.type = RigidBody::STATIC;
+      msg.type = BodyMsg::STATIC;
       break;
     case BodyType::Kinematic:
-      msg.type = RigidBody::KINEMATIC;
+      msg.type = BodyMsg::KINEMATIC;
       break;
   }
   msg.mass = body.mass();
@@ -200,10 +200,10 @@ RigidBody body_to_msg(const Body& body, std::uint32_t id, const Material& materi
   return msg;
 }
 
-ContactPoint contact_to_msg(const Contact& contact, const ContactImpulse& impulse, std::uint32_t id_a,
+ContactMsg contact_to_msg(const Contact& contact, const ContactImpulse& impulse, std::uint32_t id_a,
                             std::uint32_t id_b)
 {
-  ContactPoint msg;
+  ContactMsg msg;
   msg.body_a = id_a;
   msg.body_b = id_b;
   msg.point.x = contact.point.x;

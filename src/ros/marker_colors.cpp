@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 
 namespace collision2d
 {

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/ros/reconfigure.h"
 #include "collision2d/ros/resolve_contacts.h"

@@ -7,9 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include <collision2d/RigidBody.h>
-#include <collision2d/SolverSettings.h>
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/vec2.h"
 
@@ -17,13 +15,13 @@ namespace collision2d
 {
 namespace ros_test
 {
-inline RigidBody disk_msg(std::uint32_t id, Vec2 position, Vec2 velocity = Vec2{}, double radius = 0.5,
+inline BodyMsg disk_msg(std::uint32_t id, Vec2 position, Vec2 velocity = Vec2{}, double radius = 0.5,
                           double mass = 1.0)
 {
-  RigidBody msg;
+  BodyMsg msg;
   msg.id = id;
-  msg.shape = RigidBody::DISK;
-  msg.type = RigidBody::DYNAMIC;
+  msg.shape = BodyMsg::DISK;
+  msg.type = BodyMsg::DYNAMIC;
   msg.mass = mass;
   msg.radius = radius;
   msg.pose.x = position.x;
@@ -33,10 +31,10 @@ inline RigidBody disk_msg(std::uint32_t id, Vec2 position, Vec2 velocity = Vec2{
   return msg;
 }
 
-inline RigidBody box_msg(std::uint32_t id, double width, double height, Vec2 position, double mass = 1.0)
+inline BodyMsg box_msg(std::uint32_t id, double width, double height, Vec2 position, double mass = 1.0)
 {
-  RigidBody msg = disk_msg(id, position, Vec2{}, 0.0, mass);
-  msg.shape = RigidBody::POLYGON;
+  BodyMsg msg = disk_msg(id, position, Vec2{}, 0.0, mass);
+  msg.shape = BodyMsg::POLYGON;
   const double hx = 0.5 * width;
   const double hy = 0.5 * height;
   for (const Vec2& corner : {Vec2{-hx, -hy}, Vec2{hx, -hy}, Vec2{hx, hy}, Vec2{-hx, hy}})

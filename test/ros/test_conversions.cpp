@@ -23,12 +23,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::size_t kManyBodies = 1000;
 
-RigidBody disk(std::uint32_t id, double x, double y, double radius = 0.5, double mass = 1.0)
+BodyMsg disk(std::uint32_t id, double x, double y, double radius = 0.5, double mass = 1.0)
 {
-  RigidBody msg;
+  BodyMsg msg;
   msg.id = id;
-  msg.shape = RigidBody::DISK;
-  msg.type = RigidBody::DYNAMIC;
+  msg.shape = BodyMsg::DISK;
+  msg.type = BodyMsg::DYNAMIC;
   msg.mass = mass;
   msg.radius = radius;
   msg.pose.x = x;
@@ -36,10 +36,10 @@ RigidBody disk(std::uint32_t id, double x, double y, double radius = 0.5, double
   return msg;
 }
 
-RigidBody polygon(std::uint32_t id, const std::vector<Vec2>& outline, double x = 0.0, double y = 0.0)
+BodyMsg polygon(std::uint32_t id, const std::vector<Vec2>& outline, double x = 0.0, double y = 0.0)
 {
-  RigidBody msg = disk(id, x, y);
-  msg.shape = RigidBody::POLYGON;
+  BodyMsg msg = disk(id, x, y);
+  msg.shape = BodyMsg::POLYGON;
   msg.radius = 0.0;
   for (const Vec2& v : outline)
   {
@@ -54,7 +54,7 @@ RigidBody polygon(std::uint32_t id, const std::vector<Vec2>& outline, double x =
 const std::vector<Vec2> kUnitSquare{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 /// The message of the InvalidRequest that converting `bodies` throws ("" if none).
-std::string rejection(const std::vector<RigidBody>& bodies)
+std::string rejection(const std::vector<BodyMsg>& bodies)
 {
   try
   {
@@ -69,9 +69,9 @@ std::string rejection(const std::vector<RigidBody>& bodies)
 
 /// A second body at index 1 with id 7 carries the defect, so the message
 /// must name index and id rather than just "a body".
-std::string rejection_of_second(const RigidBody& bad)
+std::string rejection_of_second(const BodyMsg& bad)
 {
-  RigidBody second = bad;
+  BodyMsg second = bad;
   second.id = 7;
   return rejection({disk(3, -10.0, 0.0), second});
 }
@@ -84,12 +84,12 @@ void expect_names(const std::string& message, const std::string& field)
 
 TEST(BodyFromMsg, DiskCarriesPoseTwistAndType)
 {
-  RigidBody msg = disk(4, 1.0, 2.0, 0.25, 3.0);
+  BodyMsg msg = disk(4, 1.0, 2.0, 0.25, 3.0);
   msg.pose.theta = 0.3;
   msg.twist.linear.x = -1.0;
   msg.twist.linear.y = 0.5;
   msg.twist.angular.z = 2.0;
-  msg.type = RigidBody::KINEMATIC;
+  msg.type = BodyMsg::KINEMATIC;
   const Body body = scene_body_from_msg(msg, "b").body;
   EXPECT_EQ(body.shape(), Shape::Disk);
   EXPECT_EQ(body.type(), BodyType::Kinematic);
@@ -117,15 +117,15 @@ TEST(BodyFromMsg, PolygonIsRecentredOnItsCentroid)
 
 TEST(BodyToMsg, RoundTripKeepsEveryField)
 {
-  RigidBody msg = polygon(9, {{-1, -0.5}, {1, -0.5}, {1, 0.5}, {-1, 0.5}}, 2.0, -1.0);
-  msg.type = RigidBody::STATIC;
+  BodyMsg msg = polygon(9, {{-1, -0.5}, {1, -0.5}, {1, 0.5}, {-1, 0.5}}, 2.0, -1.0);
+  msg.type = BodyMsg::STATIC;
   msg.pose.theta = 0.7;
   msg.twist.angular.z = 0.0;
   msg.material.restitution = 0.4;
   msg.material.static_friction = 0.6;
   msg.material.kinetic_friction = 0.5;
   const SceneBody converted = scene_body_from_msg(msg, "b");
-  const RigidBody back = body_to_msg(converted.body, msg.id, converted.material);
+  const BodyMsg back = body_to_msg(converted.body, msg.id, converted.material);
   EXPECT_EQ(back.id, msg.id);
   EXPECT_EQ(back.shape, msg.shape);
   EXPECT_EQ(back.type, msg.type);
@@ -144,7 +144,7 @@ TEST(BodyToMsg, RoundTripKeepsEveryField)
 
 TEST(BodyFromMsg, NonFiniteNumbersNameTheField)
 {
-  RigidBody bad = disk(0, 0, 0);
+  BodyMsg bad = disk(0, 0, 0);
   bad.mass = kNaN;
   expect_names(rejection_of_second(bad), "mass = nan is not finite");
   bad = disk(0, 0, 0);
@@ -189,21 +189,21 @@ TEST(BodyFromMsg, BadOutlines)
 
 TEST(BodyFromMsg, UnknownShapeOrTypeAndStrayVertices)
 {
-  RigidBody bad = disk(0, 0, 0);
+  BodyMsg bad = disk(0, 0, 0);
   bad.shape = 5;
   expect_names(rejection_of_second(bad), "shape = 5 is not DISK (0) or POLYGON (1)");
   bad = disk(0, 0, 0);
   bad.type = 9;
   expect_names(rejection_of_second(bad), "type = 9");
   bad = polygon(0, kUnitSquare);
-  bad.shape = RigidBody::DISK;
+  bad.shape = BodyMsg::DISK;
   bad.radius = 1.0;
   expect_names(rejection_of_second(bad), "a DISK takes none (4 given)");
 }
 
 TEST(BodyFromMsg, MaterialOutOfRange)
 {
-  RigidBody bad = disk(0, 0, 0);
+  BodyMsg bad = disk(0, 0, 0);
   bad.material.restitution = 1.5;
   expect_names(rejection_of_second(bad), "material.restitution = 1.5 must be in [0, 1]");
   bad = disk(0, 0, 0);
@@ -222,7 +222,7 @@ TEST(BodiesFromMsgs, CoincidentCentresNameBothBodies)
 
 TEST(BodiesFromMsgs, LimitAndDuplicateIds)
 {
-  std::vector<RigidBody> bodies;
+  std::vector<BodyMsg> bodies;
   for (std::uint32_t i = 0; i < 4; ++i)
   {
     bodies.push_back(disk(i, 2.0 * i, 0));

@@ -16,9 +16,7 @@
 #include <std_srvs/Trigger.h>
 #include <visualization_msgs/MarkerArray.h>
 
-#include <collision2d/AddBody.h>
-#include <collision2d/GetWorld.h>
-#include <collision2d/RemoveBody.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/ros/markers.h"
 #include "marker_model.h"

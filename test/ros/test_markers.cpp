@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/ros/marker_colors.h"
 #include "collision2d/ros/markers.h"

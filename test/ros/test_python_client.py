@@ -12,14 +12,14 @@ import unittest
 import dynamic_reconfigure.client
 import rospy
 import rostest
-from collision2d.msg import RigidBody, SolverSettings, WorldState
+from collision2d.msg import Body, SolverSettings, WorldState
 from collision2d.srv import GetWorld, LoadScene, ResolveContacts, StepWorld
 
 SERVICE_WAIT_S = 30.0
 
 
 def disk(body_id, x, vx, mass=1.0, radius=0.5):
-    body = RigidBody(id=body_id, shape=RigidBody.DISK, type=RigidBody.DYNAMIC, mass=mass, radius=radius)
+    body = Body(id=body_id, shape=Body.DISK, type=Body.DYNAMIC, mass=mass, radius=radius)
     body.pose.x = x
     body.twist.linear.x = vx
     return body

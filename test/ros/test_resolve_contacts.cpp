@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 #include <ros/ros.h>
 
-#include <collision2d/ResolveContacts.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/contact_solver.h"
 #include "collision2d/ros/conversions.h"
@@ -48,14 +48,14 @@ Vec2 to_vec(const geometry_msgs::Point& p) { return {p.x, p.y}; }
 Vec2 to_vec(const geometry_msgs::Vector3& v) { return {v.x, v.y}; }
 
 /// Velocity of the material point of `body` at p, with the body centred at `centre`.
-Vec2 point_velocity(const RigidBody& body, Vec2 centre, Vec2 p)
+Vec2 point_velocity(const BodyMsg& body, Vec2 centre, Vec2 p)
 {
   return Vec2{body.twist.linear.x, body.twist.linear.y} + cross(body.twist.angular.z, p - centre);
 }
 
 /// Core bodies with the request's poses and the given message's velocities:
 /// the state the velocity solve ended in, before position correction.
-std::vector<Body> solved_state(const std::vector<RigidBody>& request, const std::vector<RigidBody>& velocities)
+std::vector<Body> solved_state(const std::vector<BodyMsg>& request, const std::vector<BodyMsg>& velocities)
 {
   std::vector<Body> bodies = ros_interface::bodies_from_msgs(request, request.size());
   for (std::size_t i = 0; i < bodies.size(); ++i)
@@ -66,10 +66,10 @@ std::vector<Body> solved_state(const std::vector<RigidBody>& request, const std:
   return bodies;
 }
 
-double scale_of(const std::vector<RigidBody>& bodies)
+double scale_of(const std::vector<BodyMsg>& bodies)
 {
   double scale = 1.0;
-  for (const RigidBody& b : bodies)
+  for (const BodyMsg& b : bodies)
   {
     scale += b.mass * (std::abs(b.twist.linear.x) + std::abs(b.twist.linear.y) + std::abs(b.twist.angular.z)) *
              (1.0 + std::abs(b.pose.x) + std::abs(b.pose.y));
@@ -118,12 +118,12 @@ bool expect_contact_laws(const ResolveContacts& srv)
   const double e = srv.request.settings.restitution;
   const double mu = srv.request.settings.friction;
   bool energy_guaranteed = true;
-  for (const ContactPoint& c : srv.response.contacts)
+  for (const ContactMsg& c : srv.response.contacts)
   {
     const std::size_t a = index.at(c.body_a);
     const std::size_t b = index.at(c.body_b);
-    const RigidBody& a0 = srv.request.bodies[a];
-    const RigidBody& b0 = srv.request.bodies[b];
+    const BodyMsg& a0 = srv.request.bodies[a];
+    const BodyMsg& b0 = srv.request.bodies[b];
     const Vec2 ca{a0.pose.x, a0.pose.y};
     const Vec2 cb{b0.pose.x, b0.pose.y};
     const Vec2 p = to_vec(c.point);
@@ -168,7 +168,7 @@ void expect_impulses_explain_velocities(const ResolveContacts& srv)
   }
   std::vector<Vec2> linear(before.size());
   std::vector<double> angular(before.size(), 0.0);
-  for (const ContactPoint& c : srv.response.contacts)
+  for (const ContactMsg& c : srv.response.contacts)
   {
     const Vec2 n = to_vec(c.normal);
     const Vec2 impulse = c.normal_impulse * n + c.tangent_impulse * perp(n);
@@ -182,7 +182,7 @@ void expect_impulses_explain_velocities(const ResolveContacts& srv)
   }
   for (std::size_t i = 0; i < before.size(); ++i)
   {
-    const RigidBody& after = srv.response.bodies[i];
+    const BodyMsg& after = srv.response.bodies[i];
     const double tol = kRelativeTolerance * (1.0 + length(linear[i]) + std::abs(angular[i]));
     EXPECT_NEAR(before[i].mass() * (after.twist.linear.x - before[i].velocity().x), linear[i].x, tol) << "body " << i;
     EXPECT_NEAR(before[i].mass() * (after.twist.linear.y - before[i].velocity().y), linear[i].y, tol) << "body " << i;
@@ -201,7 +201,7 @@ void expect_equals_core(const ResolveContacts& srv)
   ASSERT_EQ(srv.response.bodies.size(), core.size());
   for (std::size_t i = 0; i < core.size(); ++i)
   {
-    const RigidBody& got = srv.response.bodies[i];
+    const BodyMsg& got = srv.response.bodies[i];
     EXPECT_EQ(got.id, srv.request.bodies[i].id);
     EXPECT_EQ(got.pose.x, core[i].position().x) << "body " << i;
     EXPECT_EQ(got.pose.y, core[i].position().y) << "body " << i;
@@ -285,8 +285,8 @@ TEST(ResolveContacts, SweepFindsTheImpactOfAFastDisk)
   // A 5 cm disk at 500 m/s toward a thin static wall 2 m away: without the
   // sweep it would pass through in one unit step.
   ResolveContacts::Request request;
-  RigidBody wall = ros_test::box_msg(7, 0.05, 4.0, {2.0, 0.0});
-  wall.type = RigidBody::STATIC;
+  BodyMsg wall = ros_test::box_msg(7, 0.05, 4.0, {2.0, 0.0});
+  wall.type = BodyMsg::STATIC;
   request.bodies = {disk_msg(4, {0.0, 0.0}, {500.0, 0.0}, 0.05), wall};
   request.settings = solver_settings(1.0, 0.0);
   request.settings.use_time_of_impact = true;

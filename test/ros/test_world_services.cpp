@@ -14,13 +14,7 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 
-#include <collision2d/AddBody.h>
-#include <collision2d/GetWorld.h>
-#include <collision2d/LoadScene.h>
-#include <collision2d/RemoveBody.h>
-#include <collision2d/ResolveContacts.h>
-#include <collision2d/SetWorld.h>
-#include <collision2d/StepWorld.h>
+#include "collision2d/ros/messages.h"
 
 #include "ros_test_helpers.h"
 
@@ -75,9 +69,9 @@ StepWorld::Response step(std::uint32_t frames, double dt = 0.0)
   return srv.response;
 }
 
-const RigidBody* find_body(const WorldState& state, std::uint32_t id)
+const BodyMsg* find_body(const WorldState& state, std::uint32_t id)
 {
-  for (const RigidBody& body : state.bodies)
+  for (const BodyMsg& body : state.bodies)
   {
     if (body.id == id)
     {
@@ -109,7 +103,7 @@ protected:
   }
 
   /// SetWorld with a valid first body and `bad` second (index 1, id 7).
-  SetWorld::Response set_with_bad_second(RigidBody bad)
+  SetWorld::Response set_with_bad_second(BodyMsg bad)
   {
     bad.id = 7;
     SetWorld::Request request;
@@ -149,8 +143,8 @@ TEST_F(WorldServices, RestingStackStays)
   constexpr double kSink = 0.2;      // m
   for (std::size_t i = 0; i < start.bodies.size(); ++i)
   {
-    const RigidBody& a = start.bodies[i];
-    const RigidBody& b = response.state.bodies[i];
+    const BodyMsg& a = start.bodies[i];
+    const BodyMsg& b = response.state.bodies[i];
     EXPECT_NEAR(b.pose.x, a.pose.x, kLateral) << "body " << a.id;
     EXPECT_NEAR(b.pose.theta, a.pose.theta, kTilt) << "body " << a.id;
     EXPECT_LE(a.pose.y - b.pose.y, kSink) << "body " << a.id;
@@ -166,10 +160,10 @@ TEST_F(WorldServices, DroppedDiskBounces)
   constexpr double kRestitution = 0.8;
   SetWorld::Request request;
   request.keep_settings = true;
-  RigidBody ground = box_msg(0, 40.0, 1.0, {0.0, -0.5});
-  ground.type = RigidBody::STATIC;
+  BodyMsg ground = box_msg(0, 40.0, 1.0, {0.0, -0.5});
+  ground.type = BodyMsg::STATIC;
   ground.material.restitution = 1.0;
-  RigidBody ball = disk_msg(1, {0.0, kHeight + 0.25}, {}, 0.25);
+  BodyMsg ball = disk_msg(1, {0.0, kHeight + 0.25}, {}, 0.25);
   ball.material.restitution = kRestitution;
   request.bodies = {ground, ball};
   const SetWorld set = call<SetWorld>("set_world", request);
@@ -181,7 +175,7 @@ TEST_F(WorldServices, DroppedDiskBounces)
   bool bounced = false;
   for (int frame = 0; frame < 150; ++frame)
   {
-    const RigidBody* disk = find_body(step(1).state, set.response.state.bodies[1].id);
+    const BodyMsg* disk = find_body(step(1).state, set.response.state.bodies[1].id);
     ASSERT_NE(disk, nullptr);
     const double height = disk->pose.y - 0.25;
     lowest = std::min(lowest, height);
@@ -276,7 +270,7 @@ TEST_F(WorldServices, SetWorldRoundTripsGetWorld)
 
 TEST_F(WorldServices, NonFiniteNumbers)
 {
-  RigidBody bad = disk_msg(0, {0.0, 0.0});
+  BodyMsg bad = disk_msg(0, {0.0, 0.0});
   bad.pose.x = kNaN;
   expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): pose.x = nan is not finite");
   bad = disk_msg(0, {0.0, 0.0});
@@ -297,7 +291,7 @@ TEST_F(WorldServices, NonPositiveMassOrRadius)
 
 TEST_F(WorldServices, BadOutlines)
 {
-  RigidBody bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
+  BodyMsg bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
   bad.vertices.resize(2);
   expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices: 2 given, a POLYGON needs at least 3");
   bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
@@ -319,7 +313,7 @@ TEST_F(WorldServices, BadOutlines)
 
 TEST_F(WorldServices, UnknownShapeType)
 {
-  RigidBody bad = disk_msg(0, {0.0, 0.0});
+  BodyMsg bad = disk_msg(0, {0.0, 0.0});
   bad.shape = 2;
   expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): shape = 2 is not DISK (0) or POLYGON (1)");
 }

@@ -9,9 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <collision2d/BodyMaterial.h>
-#include <collision2d/ContactPoint.h>
-#include <collision2d/RigidBody.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/body.h"
 #include "collision2d/contact.h"
@@ -27,17 +25,17 @@ Material material_from_msg(const BodyMaterial& msg, const std::string& where);
 BodyMaterial material_to_msg(const Material& material);
 
 /// The body and material `msg` describes; `where` names it in error messages.
-SceneBody scene_body_from_msg(const RigidBody& msg, const std::string& where);
+SceneBody scene_body_from_msg(const BodyMsg& msg, const std::string& where);
 /// Every body of a request, in order: at most `max_bodies` of them, each
 /// valid, and no two sharing a centre.
-std::vector<SceneBody> scene_bodies_from_msgs(const std::vector<RigidBody>& msgs, std::size_t max_bodies);
+std::vector<SceneBody> scene_bodies_from_msgs(const std::vector<BodyMsg>& msgs, std::size_t max_bodies);
 /// As above, bodies only, and the ids must also be distinct (responses refer
 /// to bodies by id).
-std::vector<Body> bodies_from_msgs(const std::vector<RigidBody>& msgs, std::size_t max_bodies);
+std::vector<Body> bodies_from_msgs(const std::vector<BodyMsg>& msgs, std::size_t max_bodies);
 
-RigidBody body_to_msg(const Body& body, std::uint32_t id, const Material& material = Material());
+BodyMsg body_to_msg(const Body& body, std::uint32_t id, const Material& material = Material());
 /// `id_a` and `id_b` are the ids of bodies contact.a and contact.b.
-ContactPoint contact_to_msg(const Contact& contact, const ContactImpulse& impulse, std::uint32_t id_a,
+ContactMsg contact_to_msg(const Contact& contact, const ContactImpulse& impulse, std::uint32_t id_a,
                             std::uint32_t id_b);
 
 }  // namespace ros_interface

@@ -4,7 +4,7 @@
 
 #include <ros/ros.h>
 
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/ros/markers.h"
 

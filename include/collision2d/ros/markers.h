@@ -23,7 +23,7 @@
 #include <set>
 #include <string>
 
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 #include <visualization_msgs/MarkerArray.h>
 
 namespace collision2d

@@ -2,7 +2,7 @@
 #pragma once
 
 #include <collision2d/Collision2dConfig.h>
-#include <collision2d/SolverSettings.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/world.h"
 

@@ -5,9 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <collision2d/SolverReport.h>
-#include <collision2d/StepSummary.h>
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/body.h"
 #include "collision2d/contact_solver.h"

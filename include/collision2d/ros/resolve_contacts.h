@@ -4,8 +4,7 @@
 
 #include <cstddef>
 
-#include <collision2d/ResolveContacts.h>
-#include <collision2d/SolverSettings.h>
+#include "collision2d/ros/messages.h"
 
 namespace collision2d
 {

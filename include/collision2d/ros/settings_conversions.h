@@ -2,9 +2,7 @@
 // name the field ("settings: iterations = 0 must be in [1, 100000]").
 #pragma once
 
-#include <collision2d/Effects.h>
-#include <collision2d/SolverSettings.h>
-#include <collision2d/WorldConfig.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/contact_solver.h"
 #include "collision2d/world.h"

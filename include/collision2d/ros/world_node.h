@@ -18,7 +18,7 @@
 #include <ros/ros.h>
 
 #include <collision2d/Collision2dConfig.h>
-#include <collision2d/SolverSettings.h>
+#include "collision2d/ros/messages.h"
 
 #include "collision2d/ros/world_service.h"
 

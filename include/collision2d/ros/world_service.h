@@ -11,13 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <collision2d/AddBody.h>
-#include <collision2d/GetWorld.h>
-#include <collision2d/LoadScene.h>
-#include <collision2d/RemoveBody.h>
-#include <collision2d/SetWorld.h>
-#include <collision2d/StepWorld.h>
-#include <collision2d/WorldState.h>
+#include "collision2d/ros/messages.h"
 #include <std_srvs/Trigger.h>
 
 #include "collision2d/scene.h"

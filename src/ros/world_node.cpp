@@ -1,6 +1,9 @@
 // Parameters, advertising and dynamic_reconfigure for the world node.
 #include "collision2d/ros/world_node.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include "collision2d/ros/messages.h"
@@ -19,6 +22,7 @@ namespace
 constexpr int kDefaultThreads = 4;
 constexpr int kDefaultMaxBodies = 5000;
 constexpr int kDefaultMaxFramesPerCall = 10000;
+constexpr int kDefaultAutosavePeriod = 0;  ///< frames; 0 = off
 
 template <typename T>
 T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fallback)
@@ -33,6 +37,34 @@ T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fal
   return value;
 }
 
+/// $ROS_HOME/collision2d/<node name>.snapshot.yaml ($ROS_HOME defaults to
+/// ~/.ros, as for roslaunch's logs): one file per node name, so two worlds
+/// never restore each other's snapshot.
+std::string default_snapshot_path()
+{
+  const char* ros_home = std::getenv("ROS_HOME");
+  const char* home = std::getenv("HOME");
+  const std::filesystem::path base = ros_home != nullptr ? std::filesystem::path(ros_home) :
+                                     home != nullptr     ? std::filesystem::path(home) / ".ros" :
+                                                           std::filesystem::path(".");
+  std::string name = ::ros::this_node::getName();
+  std::replace(name.begin(), name.end(), '/', '_');
+  name.erase(0, name.find_first_not_of('_'));
+  return (base / "collision2d" / (name + ".snapshot.yaml")).string();
+}
+
+std::uint32_t autosave_period_param(const ::ros::NodeHandle& handle)
+{
+  int period = kDefaultAutosavePeriod;
+  handle.param("autosave_period", period, kDefaultAutosavePeriod);
+  if (period < 0)
+  {
+    ROS_WARN("~autosave_period must be >= 0 frames; autosave off");
+    return 0;
+  }
+  return static_cast<std::uint32_t>(period);
+}
+
 WorldServiceOptions options_from_params(const ::ros::NodeHandle& handle)
 {
   WorldServiceOptions options;
@@ -41,6 +73,8 @@ WorldServiceOptions options_from_params(const ::ros::NodeHandle& handle)
       static_cast<std::uint32_t>(positive_param(handle, "max_frames_per_call", kDefaultMaxFramesPerCall));
   handle.param<std::string>("scenes_dir", options.scenes_dir, COLLISION2D_DEFAULT_SCENES_DIR);
   handle.param<std::string>("frame_id", options.frame_id, "map");
+  handle.param<std::string>("snapshot_path", options.snapshot_path, default_snapshot_path());
+  options.autosave_period = autosave_period_param(handle);
   return options;
 }
 
@@ -70,22 +104,55 @@ WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHand
   state_publisher_ = node_handle_.advertise<WorldState>("world_state", 1, /*latch=*/true);
   world_.set_change_listener([this](const WorldState& state) { state_publisher_.publish(state); });
 
-  std::string scene;
-  private_handle_.param<std::string>("scene", scene, "");
-  if (!scene.empty())
+  if (!restore_snapshot())
   {
-    try
-    {
-      world_.load(scene);
-    }
-    catch (const std::exception& e)
-    {
-      ROS_ERROR("initial scene not loaded, starting with an empty world: %s", e.what());
-    }
+    load_initial_scene();
   }
   advertise_services();
   start_reconfigure();
   start_timer();
+}
+
+bool WorldNode::restore_snapshot()
+{
+  bool restore = world_.options().autosave_period > 0;
+  private_handle_.param("restore_on_start", restore, restore);
+  const std::string& path = world_.options().snapshot_path;
+  std::error_code ignored;
+  if (!restore || !std::filesystem::exists(path, ignored))
+  {
+    return false;
+  }
+  try
+  {
+    world_.load_snapshot(path);
+    ROS_INFO("restored the world at frame %lu from %s", static_cast<unsigned long>(world_.state().frame_count),
+             path.c_str());
+    return true;
+  }
+  catch (const std::exception& e)
+  {
+    ROS_ERROR("snapshot not restored, loading ~scene instead: %s", e.what());
+    return false;
+  }
+}
+
+void WorldNode::load_initial_scene()
+{
+  std::string scene;
+  private_handle_.param<std::string>("scene", scene, "");
+  if (scene.empty())
+  {
+    return;
+  }
+  try
+  {
+    world_.load(scene);
+  }
+  catch (const std::exception& e)
+  {
+    ROS_ERROR("initial scene not loaded, starting with an empty world: %s", e.what());
+  }
 }
 
 void WorldNode::spin()
@@ -121,6 +188,12 @@ void WorldNode::advertise_services()
   }));
   services_.push_back(advertise<std_srvs::Trigger>(nh, "reset_world", [this](auto&, auto& response) {
     world_.reset(response);
+    show_world_settings();
+  }));
+  services_.push_back(advertise<SaveWorld>(
+      nh, "save_world", [this](auto& request, auto& response) { world_.save_world(request, response); }));
+  services_.push_back(advertise<LoadWorld>(nh, "load_world", [this](auto& request, auto& response) {
+    world_.load_world(request, response);
     show_world_settings();
   }));
 }

@@ -1,5 +1,5 @@
 // The node's world: validated changes built on a copy, installed under one
-// mutex only when they succeed.
+// mutex only when they succeed; snapshots and the autosave.
 #include "collision2d/ros/world_service.h"
 
 #include <algorithm>
@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include <ros/console.h>
 #include <ros/time.h>
 
 #include "collision2d/ros/conversions.h"
@@ -22,6 +23,9 @@ namespace ros_interface
 {
 namespace
 {
+/// Autosave failures (a full disk) repeat every frame; log them at most this often.
+constexpr double kAutosaveErrorLogPeriod = 10.0;  ///< s
+
 bool ends_with(const std::string& text, const std::string& suffix)
 {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -150,7 +154,8 @@ void WorldService::set_world(const SetWorld::Request& request, SetWorld::Respons
     }
     World world = make_world(scene);
     active_ = ActiveEffects{};
-    commit(std::move(world), "", true);
+    origin_ = WorldClock{};
+    commit(std::move(world), "", Change::NewWorld);
     response.state = state_locked();
     response.success = true;
     response.message = "world set with " + std::to_string(scene.bodies.size()) + " bodies";
@@ -185,7 +190,7 @@ void WorldService::add_body(const AddBody::Request& request, AddBody::Response& 
     }
     World next = world_;
     response.id = next.add_body(added.body, added.material);
-    commit(std::move(next), scene_, false);
+    commit(std::move(next), scene_, Change::Edit);
     response.success = true;
     response.message = "added body id " + std::to_string(response.id);
   });
@@ -201,7 +206,7 @@ void WorldService::remove_body(const RemoveBody::Request& request, RemoveBody::R
     }
     World next = world_;
     next.remove_body(request.id);
-    commit(std::move(next), scene_, false);
+    commit(std::move(next), scene_, Change::Edit);
     response.success = true;
     response.message = "removed body id " + std::to_string(request.id);
   });
@@ -211,7 +216,8 @@ void WorldService::reset(std_srvs::Trigger::Response& response)
 {
   Lock lock(mutex_);
   active_ = ActiveEffects{};
-  commit(World(reset_world_), reset_scene_, false);
+  origin_ = reset_origin_;
+  commit(World(reset_world_), reset_scene_, Change::Edit);
   response.success = true;
   response.message = "reset to " + (reset_scene_.empty() ? std::string("the last world set") :
                                                            "scene '" + reset_scene_ + "'");
@@ -235,7 +241,7 @@ void WorldService::set_settings(const WorldSettings& settings)
   {
     reject("settings", e.what());
   }
-  commit(std::move(next), scene_, false);
+  commit(std::move(next), scene_, Change::Edit);
 }
 
 WorldSettings WorldService::settings() const
@@ -310,7 +316,65 @@ void WorldService::load(const std::string& name)
   }
   Lock lock(mutex_);
   active_ = ActiveEffects{};
-  commit(std::move(world), scene.name, true);
+  origin_ = WorldClock{};
+  commit(std::move(world), scene.name, Change::NewWorld);
+}
+
+void WorldService::save_world(const SaveWorld::Request& request, SaveWorld::Response& response)
+{
+  serve(response, "save", [&] {
+    response.path = snapshot_path_or_default(request.path);
+    response.frame_count = save_snapshot(response.path);
+    response.success = true;
+    response.message = "saved frame " + std::to_string(response.frame_count) + " to " + response.path;
+  });
+}
+
+void WorldService::load_world(const LoadWorld::Request& request, LoadWorld::Response& response)
+{
+  serve(response, "load", [&] {
+    const std::string path = snapshot_path_or_default(request.path);
+    load_snapshot(path);
+    response.state = state();
+    response.success = true;
+    response.message = "restored frame " + std::to_string(response.state.frame_count) + " with " +
+                       std::to_string(response.state.bodies.size()) + " bodies from " + path;
+  });
+}
+
+std::uint64_t WorldService::save_snapshot(const std::string& path)
+{
+  const std::string file = snapshot_path_or_default(path);
+  Lock lock(mutex_);
+  return save_snapshot_locked(file);
+}
+
+void WorldService::load_snapshot(const std::string& path)
+{
+  const std::string file = snapshot_path_or_default(path);
+  WorldSnapshot snapshot;
+  try
+  {
+    snapshot = load_snapshot_file(file);
+  }
+  catch (const std::exception& e)
+  {
+    reject("snapshot", e.what());
+  }
+  check_bodies(snapshot.scene);
+  World world;
+  try
+  {
+    world = restore_world(snapshot);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    reject("snapshot '" + file + "'", e.what());
+  }
+  Lock lock(mutex_);
+  active_ = ActiveEffects{};
+  origin_ = snapshot.clock;
+  commit(std::move(world), snapshot.scene.name, Change::NewWorld);
 }
 
 void WorldService::check_bodies(const Scene& scene) const
@@ -332,19 +396,21 @@ void WorldService::check_bodies(const Scene& scene) const
   check_distinct_centres(centres, labels);
 }
 
-void WorldService::commit(World&& world, const std::string& scene, bool as_reset_point)
+void WorldService::commit(World&& world, const std::string& scene, Change change)
 {
   world_ = std::move(world);
   scene_ = scene;
-  if (as_reset_point)
+  if (change == Change::NewWorld)
   {
     reset_world_ = world_;
     reset_scene_ = scene_;
+    reset_origin_ = origin_;
   }
   if (listener_)
   {
     listener_(state_locked());
   }
+  autosave_locked(change);
 }
 
 StepReport WorldService::step_locked(int frames, double dt)
@@ -372,16 +438,73 @@ StepReport WorldService::step_locked(int frames, double dt)
     next.set_settings(settings);
   }
   active_ = report.active;
-  commit(std::move(next), scene_, false);
+  commit(std::move(next), scene_, Change::Step);
   return report;
 }
 
 WorldState WorldService::state_locked() const
 {
   WorldState msg = world_state_to_msg(world_, active_, scene_);
+  const WorldClock clock = clock_locked();
+  msg.frame_count = clock.frames;
+  msg.sim_time = clock.time;
   msg.header.stamp = ::ros::Time::now();
   msg.header.frame_id = options_.frame_id;
   return msg;
+}
+
+WorldClock WorldService::clock_locked() const
+{
+  return WorldClock{origin_.frames + world_.frame_count(), origin_.time + world_.time()};
+}
+
+std::string WorldService::snapshot_path_or_default(const std::string& path) const
+{
+  if (!path.empty())
+  {
+    return path;
+  }
+  if (options_.snapshot_path.empty())
+  {
+    reject("path", "no path given and no default (parameter ~snapshot_path)");
+  }
+  return options_.snapshot_path;
+}
+
+std::uint64_t WorldService::save_snapshot_locked(const std::string& path) const
+{
+  const WorldSnapshot snapshot = take_snapshot(world_, scene_, clock_locked());
+  try
+  {
+    save_snapshot_file(snapshot, path);
+  }
+  catch (const std::exception& e)
+  {
+    reject("snapshot", e.what());
+  }
+  return snapshot.clock.frames;
+}
+
+void WorldService::autosave_locked(Change change)
+{
+  const std::uint64_t period = options_.autosave_period;
+  if (period == 0 || options_.snapshot_path.empty())
+  {
+    return;
+  }
+  const std::uint64_t frame = clock_locked().frames;
+  if (change == Change::Step && frame / period == last_autosave_frame_ / period)
+  {
+    return;  // no multiple of the period completed by this step
+  }
+  try
+  {
+    last_autosave_frame_ = save_snapshot_locked(options_.snapshot_path);
+  }
+  catch (const std::exception& e)
+  {
+    ROS_ERROR_THROTTLE(kAutosaveErrorLogPeriod, "autosave failed: %s", e.what());
+  }
 }
 
 }  // namespace ros_interface

@@ -29,13 +29,18 @@ namespace ros_interface
 class WorldNode
 {
 public:
-  /// Reads the parameters, loads ~scene and starts serving (once spun).
+  /// Reads the parameters, restores the snapshot (~restore_on_start) or
+  /// loads ~scene, and starts serving (once spun).
   WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHandle& private_handle);
 
   /// Serves with ~threads threads until ROS shuts down.
   void spin();
 
 private:
+  /// True when ~snapshot_path was restored; false (logged) when there is
+  /// none, restoring is off, or the file is unreadable.
+  bool restore_snapshot();
+  void load_initial_scene();
   void advertise_services();
   void start_reconfigure();
   void start_timer();

@@ -2,6 +2,11 @@
 // copy (World is a value type) that replaces the world only on success, so a
 // failed request leaves the world exactly as it was. Uses the message types
 // but no node handle, so it is unit-testable without a master.
+//
+// Snapshots: SaveWorld/LoadWorld write and read world_snapshot.h files, and
+// with an autosave period the service saves after every change and after
+// each step that completes a multiple of the period, so a restarted node
+// that restores the file loses at most the frames since that save.
 #pragma once
 
 #include <cstddef>
@@ -12,8 +17,12 @@
 #include <vector>
 
 #include "collision2d/ros/messages.h"
+// After messages.h: these reach Body only through WorldState, already read.
+#include <collision2d/LoadWorld.h>
+#include <collision2d/SaveWorld.h>
 #include <std_srvs/Trigger.h>
 
+#include "collision2d/ros/world_snapshot.h"
 #include "collision2d/scene.h"
 #include "collision2d/world.h"
 
@@ -27,6 +36,8 @@ struct WorldServiceOptions
   std::uint32_t max_frames_per_call = 10000;  ///< largest StepWorld.frames
   std::string scenes_dir;                    ///< where LoadScene looks up names
   std::string frame_id = "map";              ///< WorldState.header.frame_id
+  std::string snapshot_path;                 ///< SaveWorld/LoadWorld default, autosave file
+  std::uint32_t autosave_period = 0;         ///< frames between autosaves; 0 = off
 };
 
 class WorldService
@@ -49,8 +60,10 @@ public:
   void get_world(GetWorld::Response& response) const;
   void add_body(const AddBody::Request& request, AddBody::Response& response);
   void remove_body(const RemoveBody::Request& request, RemoveBody::Response& response);
-  /// Back to the world as the last LoadScene or SetWorld (or the start) made it.
+  /// Back to the world as the last LoadScene, SetWorld or LoadWorld (or the start) made it.
   void reset(std_srvs::Trigger::Response& response);
+  void save_world(const SaveWorld::Request& request, SaveWorld::Response& response);
+  void load_world(const LoadWorld::Request& request, LoadWorld::Response& response);
 
   /// One frame of the world's dt (the free-running timer). Throws on failure.
   void step_frame();
@@ -65,16 +78,37 @@ public:
   Scene find_scene(const std::string& scene) const;
   /// Loads a scene as the current and reset world. Throws InvalidRequest.
   void load(const std::string& scene);
+  /// Writes the world to `path` ("" = options().snapshot_path) and returns
+  /// the frame count saved. Throws InvalidRequest naming the file.
+  std::uint64_t save_snapshot(const std::string& path);
+  /// Replaces the world by the snapshot (or YAML scene) at `path` ("" =
+  /// options().snapshot_path), clock and ids included. Throws InvalidRequest;
+  /// the world is unchanged then.
+  void load_snapshot(const std::string& path);
 
 private:
   using Lock = std::lock_guard<std::mutex>;
 
+  enum class Change
+  {
+    Step,      ///< frames advanced: autosaves when a period completes
+    Edit,      ///< same world edited (bodies, settings, reset): autosaves
+    NewWorld,  ///< replaced (load, set, restore): also the new reset point; autosaves
+  };
+
   /// Checks a world about to replace the current one.
   void check_bodies(const Scene& scene) const;
-  /// Installs `world` (the caller holds the lock) and tells the listener.
-  void commit(World&& world, const std::string& scene, bool as_reset_point);
+  /// Installs `world` (the caller holds the lock and has set origin_), tells
+  /// the listener and autosaves.
+  void commit(World&& world, const std::string& scene, Change change);
   StepReport step_locked(int frames, double dt);
   WorldState state_locked() const;
+  /// Frames and time since the scene was loaded, across restores.
+  WorldClock clock_locked() const;
+  std::string snapshot_path_or_default(const std::string& path) const;
+  std::uint64_t save_snapshot_locked(const std::string& path) const;
+  /// Failures are logged, never thrown: a full disk must not stop the world.
+  void autosave_locked(Change change);
 
   WorldServiceOptions options_;
   ChangeListener listener_;
@@ -82,8 +116,13 @@ private:
   World world_;
   std::string scene_;
   ActiveEffects active_;
+  /// The clock of the saved world world_ was restored from (zero for a
+  /// loaded scene); world_ counts its own frames and time on top of it.
+  WorldClock origin_;
   World reset_world_;
   std::string reset_scene_;
+  WorldClock reset_origin_;
+  std::uint64_t last_autosave_frame_ = 0;
 };
 
 }  // namespace ros_interface

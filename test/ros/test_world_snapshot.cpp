@@ -1,0 +1,408 @@
+// World snapshots without a master: the file keeps bodies, ids, settings and
+// the clock exactly; it still loads as a plain scene; bad files are refused
+// with a reason; a writer killed mid-save never leaves a torn file; and the
+// world service's SaveWorld, LoadWorld and autosave restore the saved frame.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ros/time.h>
+
+#include "collision2d/ros/world_service.h"
+#include "collision2d/ros/world_snapshot.h"
+#include "collision2d/scenes/scene_file.h"
+
+namespace collision2d
+{
+namespace ros_interface
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+constexpr int kFramesBeforeSave = 7;
+/// Tests run in the package folder (WORKING_DIRECTORY in CMakeLists.txt).
+const char* const kScenesDir = "config/scenes";
+
+/// A folder of its own under the system temp folder, removed afterwards.
+class TempFolder
+{
+public:
+  TempFolder()
+  {
+    std::string name = (fs::temp_directory_path() / "collision2d_snapshot_XXXXXX").string();
+    if (::mkdtemp(name.data()) == nullptr)
+    {
+      throw std::runtime_error("mkdtemp failed");
+    }
+    path_ = name;
+  }
+  ~TempFolder()
+  {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+  const fs::path& path() const { return path_; }
+
+private:
+  fs::path path_;
+};
+
+std::string read_text(const std::string& path)
+{
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_text(const std::string& path, const std::string& text)
+{
+  std::ofstream(path) << text;
+}
+
+/// Disks and polygons of every type with distinct materials and non-default
+/// settings, stepped a few frames, with body 1 removed (an id gap) and the
+/// last body removed too (a next id beyond every remaining id).
+World busy_world()
+{
+  WorldSettings settings;
+  settings.dt = 1.0 / 120.0;
+  settings.substeps = 3;
+  settings.gravity = Vec2{0.5, -9.0};
+  World world(settings);
+  const std::vector<Vec2> box{{-2.0, -0.25}, {2.0, -0.25}, {2.0, 0.25}, {-2.0, 0.25}};
+  const std::vector<Vec2> triangle{{0.0, 0.0}, {0.6, 0.1}, {0.2, 0.5}};
+  Body ground(1.0, box, Vec2{0.0, -0.25}, Vec2{});
+  ground.set_type(BodyType::Static);
+  world.add_body(ground, Material{0.1, 0.8, 0.6});
+  world.add_body(Body(2.0, 0.3, Vec2{-1.0, 2.0}, Vec2{0.3, 0.0}), Material{0.5, 0.2, 0.1});
+  world.add_body(Body(1.5, 0.25, Vec2{0.5, 0.3}, Vec2{-0.2, 0.0}, 0.4), Material{0.9, 0.0, 0.0});
+  world.add_body(Body(0.7, triangle, Vec2{1.2, 1.0}, Vec2{0.0, -1.0}, 0.3, 2.0), Material{0.2, 0.5, 0.4});
+  world.add_body(Body(3.0, 0.4, Vec2{-1.5, 0.5}, Vec2{}), Material{});
+  world.step(kFramesBeforeSave);
+  world.remove_body(1);
+  world.remove_body(4);
+  return world;
+}
+
+/// Exactly equal scenes have exactly equal YAML (doubles at max_digits10).
+std::string scene_text(const World& world) { return scenes::scene_to_yaml(to_scene(world)); }
+
+BodyId next_id_of(World world) { return world.add_body(Body(1.0, 0.1, Vec2{50.0, 50.0}, Vec2{})); }
+
+TEST(WorldSnapshotFile, RoundTripKeepsBodiesIdsSettingsAndClock)
+{
+  const World world = busy_world();
+  const WorldClock clock{1234567890123ULL, 0.1 + 0.2};  // a time with no short decimal form
+  const WorldSnapshot saved = take_snapshot(world, "busy", clock);
+  const WorldSnapshot read = parse_snapshot_yaml(snapshot_to_yaml(saved));
+  EXPECT_EQ(read.clock.frames, clock.frames);
+  EXPECT_EQ(read.clock.time, clock.time);
+  EXPECT_EQ(read.scene.name, "busy");
+  EXPECT_EQ(read.ids, (std::vector<BodyId>{0, 2, 3}));
+  EXPECT_EQ(read.next_id, 5u);
+
+  const World restored = restore_world(read);
+  EXPECT_EQ(restored.body_ids(), world.body_ids());
+  EXPECT_EQ(scene_text(restored), scene_text(world));
+  EXPECT_EQ(next_id_of(restored), next_id_of(world)) << "a removed body's id would be reused";
+}
+
+TEST(WorldSnapshotFile, IsStillAPlainSceneFileAndAPlainSceneIsASnapshot)
+{
+  TempFolder folder;
+  const World world = busy_world();
+  const std::string snapshot_path = folder.file("world.snapshot.yaml");
+  save_snapshot_file(take_snapshot(world, "busy", WorldClock{42, 0.7}), snapshot_path);
+  // The scene loader reads the first document and ignores the clock.
+  EXPECT_EQ(scenes::scene_to_yaml(scenes::load_scene_file(snapshot_path)),
+            scenes::scene_to_yaml(to_scene(world, "busy")));
+
+  const std::string scene_path = folder.file("plain.yaml");
+  scenes::save_scene_file(to_scene(world, "plain"), scene_path);
+  const WorldSnapshot plain = load_snapshot_file(scene_path);
+  EXPECT_EQ(plain.clock.frames, 0u);
+  EXPECT_EQ(plain.clock.time, 0.0);
+  EXPECT_EQ(plain.ids, (std::vector<BodyId>{0, 1, 2}));
+  EXPECT_EQ(plain.next_id, 3u);
+}
+
+/// The reason parse_snapshot_yaml gives for a snapshot whose clock document
+/// is `clock` ("" if it is accepted).
+std::string rejection(const std::string& clock)
+{
+  const std::string scene = snapshot_to_yaml(take_snapshot(busy_world(), "busy", WorldClock{}));
+  const std::string text = scene.substr(0, scene.find("---\n")) + "---\n" + clock;
+  try
+  {
+    parse_snapshot_yaml(text, "bad.yaml");
+  }
+  catch (const std::runtime_error& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(WorldSnapshotFile, InconsistentClockDocumentsAreRefusedWithAReason)
+{
+  const std::string good = "collision2d_snapshot: 1\nframe_count: 5\nsim_time: 0.5\n";
+  ASSERT_EQ(rejection(good + "ids: [0, 2, 3]\nnext_id: 5\n"), "");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {good + "ids: [0, 2]\nnext_id: 5\n", "2 ids for 3 bodies"},
+      {good + "ids: [0, 3, 2]\nnext_id: 5\n", "ids must be strictly ascending"},
+      {good + "ids: [0, 2, 3]\nnext_id: 3\n", "next_id = 3 must exceed every id"},
+      {good + "ids: [0, 2, 3]\nnext_id: 4000000000\n", "skipped ids"},
+      {good + "ids: [0, 2, 3]\n", "missing 'next_id'"},
+      {good + "ids: [0, 2, 3]\nnext_id: 5\nframes: 3\n", "unknown key 'frames'"},
+      {"collision2d_snapshot: 2\nframe_count: 5\nsim_time: 0.5\nids: [0, 2, 3]\nnext_id: 5\n", "version"},
+      {"collision2d_snapshot: 1\nframe_count: -5\nsim_time: 0.5\nids: [0, 2, 3]\nnext_id: 5\n", "frame_count"},
+      {"collision2d_snapshot: 1\nframe_count: 5\nsim_time: .nan\nids: [0, 2, 3]\nnext_id: 5\n", "sim_time"},
+      {good + "ids: [0, 2, 3]\nnext_id: 5\n---\nextra: 1\n", "more than two YAML documents"},
+      {"[1, 2]\n", "must be a map"},
+  };
+  for (const auto& [clock, reason] : cases)
+  {
+    const std::string message = rejection(clock);
+    EXPECT_NE(message.find("bad.yaml: snapshot: "), std::string::npos) << clock << " -> '" << message << "'";
+    EXPECT_NE(message.find(reason), std::string::npos) << clock << " -> '" << message << "'";
+  }
+}
+
+TEST(WorldSnapshotFile, SavingCreatesFoldersReplacesWholeAndLeavesNoTemporaries)
+{
+  TempFolder folder;
+  const std::string path = folder.file("deep/er/world.snapshot.yaml");
+  save_snapshot_file(take_snapshot(busy_world(), "first", WorldClock{1, 0.1}), path);
+  save_snapshot_file(take_snapshot(World(), "second", WorldClock{2, 0.2}), path);
+  const WorldSnapshot read = load_snapshot_file(path);
+  EXPECT_EQ(read.scene.name, "second");
+  EXPECT_TRUE(read.scene.bodies.empty());
+  EXPECT_EQ(std::distance(fs::directory_iterator(fs::path(path).parent_path()), fs::directory_iterator()), 1);
+
+  // A folder in the way: the save fails naming the path and cleans up.
+  const std::string blocked = folder.file("blocked");
+  fs::create_directories(fs::path(blocked) / "inside");
+  try
+  {
+    save_snapshot_file(take_snapshot(World(), "x", WorldClock{}), blocked);
+    FAIL() << "saved over a folder";
+  }
+  catch (const std::runtime_error& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(blocked), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(folder.path()), fs::directory_iterator()), 2) << "temporary left";
+}
+
+/// A child process saves two different large snapshots in turns as fast as
+/// it can and is killed with SIGKILL at an arbitrary moment; the file must
+/// then hold one of the two whole. A writer that wrote the file in place
+/// would leave it torn at most of these moments.
+TEST(WorldSnapshotFile, AWriterKilledMidSaveNeverLeavesATornFile)
+{
+  constexpr int kKills = 6;
+  constexpr int kBodies = 1000;  // ~170 kB per snapshot: a save takes milliseconds
+  constexpr int kFirstSaveWaitS = 20;
+  TempFolder folder;
+  const std::string path = folder.file("world.snapshot.yaml");
+  World big;
+  for (int i = 0; i < kBodies; ++i)
+  {
+    big.add_body(Body(1.0, 0.4, Vec2{1.0 * i, 0.0}, Vec2{0.1 * i, 0.0}));
+  }
+  const std::vector<WorldSnapshot> versions = {take_snapshot(big, "even", WorldClock{2, 0.2}),
+                                               take_snapshot(big, "odd", WorldClock{3, 0.3})};
+  for (int kill = 0; kill < kKills; ++kill)
+  {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0)
+    {
+      for (unsigned i = 0;; ++i)
+      {
+        save_snapshot_file(versions[i % 2], path);
+      }
+    }
+    // Kill only after a first whole save, at a different moment each time.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kFirstSaveWaitS);
+    while (!fs::exists(path) && std::chrono::steady_clock::now() < deadline)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(3 + 7 * kill));
+    ASSERT_EQ(::kill(child, SIGKILL), 0);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(fs::exists(path)) << "no save finished within " << kFirstSaveWaitS << " s";
+    const WorldSnapshot read = load_snapshot_file(path);
+    ASSERT_EQ(read.scene.bodies.size(), static_cast<std::size_t>(kBodies));
+    EXPECT_EQ(read.clock.frames, read.scene.name == "even" ? 2u : 3u) << "clock of one save, scene of another";
+  }
+}
+
+class WorldServiceSnapshotTest : public ::testing::Test
+{
+protected:
+  static void SetUpTestCase() { ::ros::Time::init(); }
+
+  WorldServiceOptions options(std::uint32_t autosave_period) const
+  {
+    WorldServiceOptions out;
+    out.scenes_dir = kScenesDir;
+    out.snapshot_path = folder_.file("world.snapshot.yaml");
+    out.autosave_period = autosave_period;
+    return out;
+  }
+
+  static void load_demo(WorldService& service)
+  {
+    LoadScene::Request request;
+    request.scene = "bouncing_disks";
+    LoadScene::Response response;
+    service.load_scene(request, response);
+    ASSERT_TRUE(response.success) << response.message;
+  }
+
+  static WorldState step(WorldService& service, std::uint32_t frames)
+  {
+    StepWorld::Request request;
+    request.frames = frames;
+    StepWorld::Response response;
+    service.step(request, response);
+    EXPECT_TRUE(response.success) << response.message;
+    return response.state;
+  }
+
+  /// A restored world has not stepped yet, so no contacts or effects: the
+  /// rest of the state must be exactly the saved one.
+  static void expect_restored(const WorldState& saved, const WorldState& restored)
+  {
+    EXPECT_EQ(restored.frame_count, saved.frame_count);
+    EXPECT_EQ(restored.sim_time, saved.sim_time);
+    EXPECT_EQ(restored.scene, saved.scene);
+    EXPECT_EQ(restored.settings, saved.settings);
+    ASSERT_EQ(restored.bodies.size(), saved.bodies.size());
+    for (std::size_t i = 0; i < saved.bodies.size(); ++i)
+    {
+      EXPECT_TRUE(restored.bodies[i] == saved.bodies[i]) << "body " << saved.bodies[i].id << " differs";
+    }
+  }
+
+  TempFolder folder_;
+};
+
+TEST_F(WorldServiceSnapshotTest, SaveThenLoadBringsBackTheSavedFrame)
+{
+  WorldService service(options(0));
+  load_demo(service);
+  const WorldState saved = step(service, 10);
+  SaveWorld::Request save;
+  SaveWorld::Response saved_response;
+  service.save_world(save, saved_response);
+  ASSERT_TRUE(saved_response.success) << saved_response.message;
+  EXPECT_EQ(saved_response.frame_count, 10u);
+  EXPECT_EQ(saved_response.path, options(0).snapshot_path);
+
+  const WorldState later = step(service, 5);
+  ASSERT_EQ(later.frame_count, 15u);
+  LoadWorld::Request load;
+  LoadWorld::Response loaded;
+  service.load_world(load, loaded);
+  ASSERT_TRUE(loaded.success) << loaded.message;
+  expect_restored(saved, loaded.state);
+
+  // The clock runs on from the saved frame, and reset returns to it.
+  const WorldState resumed = step(service, 3);
+  EXPECT_EQ(resumed.frame_count, 13u);
+  EXPECT_NEAR(resumed.sim_time, saved.sim_time + 3 * saved.settings.dt, 1e-12);
+  std_srvs::Trigger::Response reset;
+  service.reset(reset);
+  expect_restored(saved, service.state());
+}
+
+TEST_F(WorldServiceSnapshotTest, FailedLoadsLeaveTheWorldAsItWas)
+{
+  WorldService service(options(0));
+  load_demo(service);
+  step(service, 4);
+  const WorldState before = service.state();
+
+  LoadWorld::Request load;
+  LoadWorld::Response response;
+  service.load_world(load, response);  // default path, nothing saved yet
+  EXPECT_FALSE(response.success);
+  EXPECT_NE(response.message.find("cannot open snapshot file"), std::string::npos) << response.message;
+
+  load.path = folder_.file("torn.yaml");
+  write_text(load.path, read_text(std::string(kScenesDir) + "/bouncing_disks.yaml") + "---\nframe_count: [");
+  service.load_world(load, response);
+  EXPECT_FALSE(response.success);
+  EXPECT_NE(response.message.find("torn.yaml"), std::string::npos) << response.message;
+
+  WorldService no_default(WorldServiceOptions{});
+  SaveWorld::Response save_response;
+  no_default.save_world(SaveWorld::Request(), save_response);
+  EXPECT_FALSE(save_response.success);
+  EXPECT_NE(save_response.message.find("~snapshot_path"), std::string::npos) << save_response.message;
+
+  WorldState after = service.state();
+  after.header = before.header;
+  EXPECT_TRUE(after == before) << "a failed load changed the world";
+}
+
+TEST_F(WorldServiceSnapshotTest, AutosaveKeepsTheLastCompletedPeriodAndEveryEdit)
+{
+  constexpr std::uint32_t kPeriod = 5;
+  WorldService service(options(kPeriod));
+  load_demo(service);
+  const std::string path = options(kPeriod).snapshot_path;
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 0u) << "a new world is saved at once";
+
+  WorldState at_five;
+  for (std::uint32_t frame = 1; frame <= 7; ++frame)
+  {
+    const WorldState state = step(service, 1);
+    if (frame == kPeriod)
+    {
+      at_five = state;
+    }
+  }
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 5u);
+  WorldService reader(options(0));
+  reader.load_snapshot(path);
+  expect_restored(at_five, reader.state());
+  step(service, 12);  // 7 -> 19 passes 10 and 15: saved at the end of the call
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 19u);
+
+  RemoveBody::Request remove;
+  remove.id = 0;
+  RemoveBody::Response removed;
+  service.remove_body(remove, removed);
+  ASSERT_TRUE(removed.success) << removed.message;
+  const WorldState edited = service.state();
+  EXPECT_EQ(load_snapshot_file(path).ids.front(), 1u) << "an edit is saved at once";
+
+  // A new node on the same file (a respawn) restores the last save.
+  WorldService respawned(options(kPeriod));
+  respawned.load_snapshot("");
+  expect_restored(edited, respawned.state());
+  step(respawned, 1);
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 20u) << "the period counts on from the restored frame";
+}
+
+}  // namespace
+}  // namespace ros_interface
+}  // namespace collision2d

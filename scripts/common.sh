@@ -118,6 +118,11 @@ setup_ros_environment() {
 # edits in the clone are built without copying).
 prepare_workspace() {
   mkdir -p "$COLLISION2D_WS/src"
+  # catkin caches the test environment (build/catkin_generated/setup_cached.sh,
+  # used by run_tests) at the first configure, and leaves the devel python
+  # folder out of PYTHONPATH if it does not exist yet: rostest python nodes
+  # would then not import the generated collision2d messages.
+  mkdir -p "$COLLISION2D_WS/devel/lib/python3/dist-packages"
   ln -sfn "$COLLISION2D_ROOT" "$COLLISION2D_WS/src/collision2d"
   # A clone that moved leaves a CMake cache pointing at the old place.
   local cache="$COLLISION2D_WS/build/CMakeCache.txt"

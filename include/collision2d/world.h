@@ -80,8 +80,9 @@ struct WorldSettings
   /// contact above it: one pass leaves part of every substep's gravity sag in
   /// each contact, so a tall stack rests deeper than slop (the 20-box column
   /// 0.15 m after 10 s with one pass, 0.054 m with four; the base-20 pyramid
-  /// 0.056 m and 0.029 m; measured in test_world_stacking.cpp). Passes are
-  /// cheap next to detection. >= 1.
+  /// 0.056 m and 0.029 m; measured in test_world_stacking.cpp). The passes
+  /// after the first skip impacts (contacts with a Newton target), which
+  /// separate in the velocity solve. >= 1.
   int position_iterations = 4;
   /// A two-point manifold's penetration solved as one 2x2 block (true)
   /// instead of SPEC's per-point lambda = (d - slop) / (count K_n) (false).
@@ -296,7 +297,7 @@ private:
   Vec2 relative_velocity(const ContactRow& row) const;
   Vec2 relative_velocity_at(const ContactRow& row, Vec2 ra, Vec2 rb) const;
   void correct_positions(double h, bool friction, StepReport& report);
-  void correct_pass(double softness, bool hold);
+  void correct_pass(double softness, bool hold, bool resting_only);
   Vec2 integration_move(std::size_t i, Vec2 r) const;
   void hold_static_friction(const ContactRow& first, const ContactRow& second);
   void hold_all_static_friction(bool friction);

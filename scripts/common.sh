@@ -16,14 +16,18 @@ APT_LOCK_TIMEOUT_S=600
 
 # ---------------------------------------------------------------------------
 # Packages: the one place to add a dependency.
-# Needed on every system (not ROS packages).
-SYSTEM_PACKAGES=(cmake g++ libeigen3-dev libgtest-dev libyaml-cpp-dev)
+# Needed on every system (not ROS packages). xvfb, imagemagick and Mesa's
+# software GL let the rviz test draw and capture a screen on a headless machine.
+SYSTEM_PACKAGES=(
+  cmake g++ libeigen3-dev libgtest-dev libyaml-cpp-dev
+  xvfb imagemagick libgl1-mesa-dri)
 # ROS from Debian's own archive (Debian 12 and similar: ROS lives in /usr).
 DEBIAN_ROS_PACKAGES=(
   catkin ros-core-dev ros-message-generation ros-message-runtime
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
-  python3-rospy python3-rosservice python3-rostest librostest-dev catkin-lint)
+  python3-rospy python3-rosservice python3-rostest librostest-dev rviz
+  catkin-lint)
 # The same for ROS Noetic in /opt/ros/noetic, used when rosdep cannot resolve
 # package.xml (rosdep missing or never initialised).
 NOETIC_ROS_PACKAGES=(
@@ -31,7 +35,7 @@ NOETIC_ROS_PACKAGES=(
   ros-noetic-message-runtime ros-noetic-std-msgs ros-noetic-std-srvs
   ros-noetic-geometry-msgs ros-noetic-visualization-msgs
   ros-noetic-dynamic-reconfigure ros-noetic-rospy ros-noetic-rosservice
-  ros-noetic-rostest python3-catkin-lint)
+  ros-noetic-rostest ros-noetic-rviz python3-catkin-lint)
 
 # ---------------------------------------------------------------------------
 log() { printf '[collision2d] %s\n' "$*" >&2; }

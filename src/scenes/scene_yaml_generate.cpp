@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "collision2d/scenes/scene_file.h"
 #include "collision2d/scenes/scene_parts.h"
 #include "scene_yaml_internal.h"
 
@@ -42,10 +43,20 @@ void container(FieldReader& f, const ParseContext& context, Scene& scene)
   add_container(scene, p);
 }
 
+/// Fails before building when `count` more bodies would pass the scene limit.
+void reserve_bodies(const FieldReader& f, const std::string& key, const Scene& scene, long long count)
+{
+  if (static_cast<long long>(scene.bodies.size()) + count > kMaxSceneBodies)
+  {
+    f.fail_at(key, "would make the scene larger than " + std::to_string(kMaxSceneBodies) + " bodies");
+  }
+}
+
 void pyramid(FieldReader& f, const ParseContext& context, Scene& scene)
 {
   PyramidParams p;
   p.base = f.integer("base", p.base, 1);
+  reserve_bodies(f, "base", scene, static_cast<long long>(p.base) * (p.base + 1) / 2);
   p.box = f.positive("box", p.box);
   p.mass = f.positive("mass", p.mass);
   p.at = f.vec2("at", p.at);
@@ -58,6 +69,7 @@ void column(FieldReader& f, const ParseContext& context, Scene& scene)
 {
   ColumnParams p;
   p.count = f.integer("count", p.count, 1);
+  reserve_bodies(f, "count", scene, p.count);
   p.box = f.positive("box", p.box);
   p.mass = f.positive("mass", p.mass);
   p.at = f.vec2("at", p.at);
@@ -70,6 +82,7 @@ void cradle(FieldReader& f, const ParseContext& context, Scene& scene)
 {
   CradleParams p;
   p.count = f.integer("count", p.count, 1);
+  reserve_bodies(f, "count", scene, p.count);
   p.radius = f.positive("radius", p.radius);
   p.mass = f.positive("mass", p.mass);
   p.speed = f.number("speed", p.speed);
@@ -83,6 +96,7 @@ void disk_row(FieldReader& f, const ParseContext& context, Scene& scene)
 {
   DiskRowParams p;
   p.count = f.integer("count", p.count, 1);
+  reserve_bodies(f, "count", scene, p.count);
   p.radius = f.positive("radius", p.radius);
   p.mass = f.positive("mass", p.mass);
   p.at = f.vec2("at", p.at);
@@ -97,6 +111,7 @@ void gas(FieldReader& f, const ParseContext& context, Scene& scene)
 {
   GasParams p;
   p.count = f.integer("count", p.count, 1);
+  reserve_bodies(f, "count", scene, p.count);
   p.seed = f.unsigned_integer("seed", p.seed);
   p.radius = f.positive("radius", p.radius);
   p.mass = f.positive("mass", p.mass);

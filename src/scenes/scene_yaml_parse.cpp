@@ -80,9 +80,9 @@ WorldSettings read_settings(const YAML::Node& node, const std::string& source, W
 {
   FieldReader f(node, "settings", source);
   s.dt = f.positive("dt", s.dt);
-  s.substeps = f.integer("substeps", s.substeps, 1);
-  s.velocity_iterations = f.integer("velocity_iterations", s.velocity_iterations, 1);
-  s.position_iterations = f.integer("position_iterations", s.position_iterations, 1);
+  s.substeps = f.integer("substeps", s.substeps, 1, kMaxSceneSubsteps);
+  s.velocity_iterations = f.integer("velocity_iterations", s.velocity_iterations, 1, kMaxSceneIterations);
+  s.position_iterations = f.integer("position_iterations", s.position_iterations, 1, kMaxSceneIterations);
   s.position_block = read_flag(f, "position_block", s.position_block);
   s.slop = f.non_negative("slop", s.slop);
   s.compliance = f.non_negative("compliance", s.compliance);
@@ -259,6 +259,10 @@ Scene read_scene(const YAML::Node& root, const std::string& source)
   if (top.has("bodies"))
   {
     for_each_item(top.node("bodies"), "bodies", source, [&](const YAML::Node& item, const std::string& path) {
+      if (scene.bodies.size() >= static_cast<std::size_t>(kMaxSceneBodies))
+      {
+        fail(source, line_of(item), path, "more than " + std::to_string(kMaxSceneBodies) + " bodies");
+      }
       scene.bodies.push_back(read_body(item, path, context));
     });
   }

@@ -132,7 +132,7 @@ double FieldReader::non_negative(const std::string& key, double fallback)
   return value;
 }
 
-int FieldReader::integer(const std::string& key, int fallback, int minimum)
+int FieldReader::integer(const std::string& key, int fallback, int minimum, int maximum)
 {
   const YAML::Node value = node(key);
   if (!value)
@@ -147,6 +147,10 @@ int FieldReader::integer(const std::string& key, int fallback, int minimum)
   if (result < minimum)
   {
     fail_at(key, "must be at least " + std::to_string(minimum));
+  }
+  if (result > maximum)
+  {
+    fail_at(key, "must be at most " + std::to_string(maximum));
   }
   return result;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <set>
+#include <limits>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -39,8 +40,9 @@ public:
   double number(const std::string& key, double fallback);
   double positive(const std::string& key, double fallback);
   double non_negative(const std::string& key, double fallback);
-  /// An integer >= minimum.
-  int integer(const std::string& key, int fallback, int minimum);
+  /// An integer in [minimum, maximum].
+  int integer(const std::string& key, int fallback, int minimum,
+              int maximum = std::numeric_limits<int>::max());
   std::uint64_t unsigned_integer(const std::string& key, std::uint64_t fallback);
   Vec2 vec2(const std::string& key, Vec2 fallback);
   std::string text(const std::string& key, const std::string& fallback);

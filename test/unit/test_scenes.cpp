@@ -520,6 +520,11 @@ TEST(SceneFiles, EveryErrorNamesTheLineAndTheKey)
       {"generate:\n  - pyramid: {bsae: 3}\n", 2, "generate[0].pyramid.bsae", "unknown key"},
       {"generate:\n  - gas: {count: 100, radius: 5}\n", 2, "generate[0].gas", "do not fit"},
       {"generate:\n  - gas: {seed: -1}\n", 2, "generate[0].gas.seed", "non-negative integer"},
+      // Limits: a few bytes must not ask for billions of bodies or substeps.
+      {"generate:\n  - pyramid: {base: 100000}\n", 2, "generate[0].pyramid.base", "larger than"},
+      {"generate:\n  - gas: {count: 2000000}\n", 2, "generate[0].gas.count", "larger than"},
+      {"settings:\n  substeps: 1000000000\n", 2, "settings.substeps", "at most"},
+      {"settings:\n  velocity_iterations: 1000000\n", 2, "settings.velocity_iterations", "at most"},
       {"bodies: {shape: disk}\n", 1, "bodies", "must be a list"},
       {"name: x\nbodies: [1, 2\n", 3, "", "YAML syntax"},
   };

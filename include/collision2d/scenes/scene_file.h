@@ -31,6 +31,12 @@ namespace collision2d
 {
 namespace scenes
 {
+/// Limits a scene file may ask for, so a few bytes of YAML cannot make the
+/// reader build billions of bodies or a world that never finishes a frame.
+constexpr int kMaxSceneBodies = 1000000;
+constexpr int kMaxSceneSubsteps = 1000;
+constexpr int kMaxSceneIterations = 10000;
+
 Scene parse_scene_yaml(const std::string& text, const std::string& source_name = "<yaml>");
 /// .yaml/.yml as YAML; .collision via parse_scenario (its restitution and
 /// friction become every body's material, gravity zero).

@@ -1,8 +1,9 @@
-// Broad phase: candidate pairs whose bounding boxes overlap, below O(n^2) for
-// scattered scenes.
+// Broad phase: candidate pairs whose bounding boxes overlap, in time linear in
+// the bodies plus the pairs for scattered scenes.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -12,24 +13,66 @@ namespace collision2d
 {
 using BodyPair = std::pair<std::size_t, std::size_t>;
 
-/// Sort-and-sweep along the axis of largest spread. Keeps its scratch buffers
-/// between calls, so a world that calls it every substep allocates nothing once
-/// warmed up.
+/// Uniform grid (spatial hash) sized from the boxes themselves, with the few
+/// boxes much larger than a cell (a ground slab, container walls) kept out of
+/// the grid and queried against it. Keeps its scratch buffers between calls,
+/// so a world that calls it every substep allocates nothing once warmed up.
 class BroadPhase
 {
 public:
-  /// Replaces `pairs` with every (i, j), i < j, whose boxes overlap, sorted by
-  /// (i, j) so results do not depend on the sweep order.
+  /// Replaces `pairs` with every (i, j), i < j, whose boxes overlap
+  /// (Aabb::overlaps, touching counts), sorted by (i, j) and unique. A box with
+  /// a non-finite coordinate or with lo > hi on an axis is empty: it pairs with
+  /// nothing.
   void find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
 
 private:
-  struct Endpoint
+  /// Inclusive range of grid cells a box covers.
+  struct CellRange
   {
-    double lo;
-    double hi;
-    std::size_t index;
+    std::int32_t x0;
+    std::int32_t y0;
+    std::int32_t x1;
+    std::int32_t y1;
   };
-  std::vector<Endpoint> sorted_;
+  /// One (cell, box) incidence; entries_ holds them grouped by hash bucket.
+  struct Entry
+  {
+    std::int32_t cx;
+    std::int32_t cy;
+    std::size_t box;
+  };
+
+  void choose_cell_size(const std::vector<Aabb>& boxes);
+  CellRange cells_of(const Aabb& box) const;
+  void classify(const std::vector<Aabb>& boxes);
+  void fill_grid();
+  std::size_t bucket_of(std::int32_t cx, std::int32_t cy) const;
+  bool owns(std::int32_t cx, std::int32_t cy, std::size_t a, std::size_t b) const;
+
+  void pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
+  void pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
+                       std::vector<BodyPair>& pairs);
+  void pairs_of_large(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
+  void large_against_grid(const std::vector<Aabb>& boxes, std::size_t large, std::vector<BodyPair>& pairs) const;
+  void sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs);
+
+  // Grid geometry of the current call.
+  double cell_ = 1.0;
+  double origin_x_ = 0.0;
+  double origin_y_ = 0.0;
+  CellRange occupied_{0, 0, -1, -1};  // bounding range of the grid boxes' cells
+  std::size_t bucket_mask_ = 0;
+
+  // Scratch kept between calls.
+  std::vector<double> extents_;          // box sizes, for the percentile
+  std::vector<CellRange> ranges_;        // per box
+  std::vector<std::size_t> grid_boxes_;  // boxes stored in the grid
+  std::vector<std::size_t> large_;       // boxes too large for the grid
+  std::vector<std::size_t> bucket_start_;
+  std::vector<Entry> entries_;
+  std::vector<std::size_t> pair_start_;
+  std::vector<BodyPair> sorted_pairs_;
 };
 
 }  // namespace collision2d

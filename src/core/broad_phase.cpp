@@ -1,103 +1,58 @@
-// Broad phase by sort and sweep (SPEC section 2 "Detection"): boxes are
-// sorted by their low end along the axis where the box centres spread most,
-// and each box is only compared with the boxes that start before it ends.
-// For scattered scenes this is O(n log n + pairs), not O(n^2).
+// Broad phase on a uniform grid (SPEC section 2 "Detection"). Each box is
+// entered in the cells it covers and only boxes sharing a cell are compared,
+// so a scattered scene costs O(n + pairs) instead of the O(n^1.5) a sweep
+// along one axis costs when the bodies fill a square.
 //
-// The sorted order is kept between calls: a scene that moves a little between
-// calls is nearly sorted already and an insertion sort restores it in O(n).
-// When the order changed a lot (first call, axis switch, teleports) the
-// insertion sort gives up after a bounded number of moves and a full sort
-// takes over, so the worst case stays O(n log n).
+// The cell is a high percentile of the box sizes, so most boxes cover at most
+// 2 x 2 cells whatever the scene's scale. The few boxes spanning many cells (a
+// ground slab, container walls) would each fill a whole row of cells: they are
+// kept out of the grid, swept against each other and looked up in the grid
+// cells they cover instead (broad_phase_grid.cpp).
 #include "collision2d/broad_phase.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 
 namespace collision2d
 {
 namespace
 {
-/// Element moves allowed per box before the insertion sort hands over to a
-/// full sort.
-constexpr std::size_t kInsertionMovesPerBox = 8;
+/// Share of boxes no larger than one cell: high enough that a scene of two
+/// body sizes gets cells of the larger (many small boxes per cell are swept
+/// within it) rather than sending the larger half out of the grid.
+constexpr double kCellPercentile = 0.75;
+/// Cell side over that percentile size. Cells twice a box's size are
+/// covered 1.5 x 1.5 times on average, against 2 x 2 for cells of one size:
+/// fewer grid entries to write and scatter, for a few more boxes per cell.
+constexpr double kCellsPerSize = 2.0;
+/// Boxes covering more cells than this along an axis are not stored in the
+/// grid: with the percentile above they are at most a quarter of the boxes,
+/// and in practice the few static slabs and walls.
+constexpr std::int32_t kMaxCellsPerSide = 4;
+/// Cell indices are clamped to this magnitude so that ranges and areas stay
+/// integer-exact; clamping is monotone, so the grid only gets coarser far out.
+constexpr double kCellIndexLimit = 536870912.0;  // 2^29 cells
+/// Cell size when the boxes are points spread over nothing (all identical).
+constexpr double kFallbackCell = 1.0;  // m
 
-enum class Axis
+bool is_usable(const Aabb& box)
 {
-  X,
-  Y
-};
-
-double along(Vec2 v, Axis axis)
-{
-  return axis == Axis::X ? v.x : v.y;
+  return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.hi.x) &&
+         std::isfinite(box.hi.y) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y;
 }
 
-Vec2 centre(const Aabb& box)
+std::int32_t cell_index(double v, double origin, double cell)
 {
-  return 0.5 * (box.lo + box.hi);
+  // v - origin may overflow to +inf for huge finite coordinates: the clamp
+  // takes it back into range.
+  const double c = std::floor((v - origin) / cell);
+  return static_cast<std::int32_t>(std::clamp(c, -kCellIndexLimit, kCellIndexLimit));
 }
 
-/// Axis with the larger variance of box centres. Centres are taken relative to
-/// the first one so that scenes far from the origin keep their precision.
-Axis axis_of_largest_spread(const std::vector<Aabb>& boxes)
+bool positive_finite(double v)
 {
-  if (boxes.empty())
-  {
-    return Axis::X;
-  }
-  const Vec2 origin = centre(boxes.front());
-  Vec2 sum;
-  Vec2 sum_sq;
-  for (const Aabb& box : boxes)
-  {
-    const Vec2 c = centre(box) - origin;
-    sum += c;
-    sum_sq += Vec2{c.x * c.x, c.y * c.y};
-  }
-  const double n = static_cast<double>(boxes.size());
-  const double var_x = sum_sq.x / n - (sum.x / n) * (sum.x / n);
-  const double var_y = sum_sq.y / n - (sum.y / n) * (sum.y / n);
-  return var_y > var_x ? Axis::Y : Axis::X;
-}
-
-/// A NaN end would break the strict weak order std::sort relies on; such a
-/// box is sent to the far end, where it starts after everything and so pairs
-/// with nothing.
-double sortable(double v)
-{
-  return std::isnan(v) ? std::numeric_limits<double>::infinity() : v;
-}
-
-template <class Endpoint>
-bool lower_start(const Endpoint& p, const Endpoint& q)
-{
-  return p.lo < q.lo;
-}
-
-/// Insertion sort that stops after `budget` element moves; returns whether it
-/// finished.
-template <class Endpoint>
-bool insertion_sort(std::vector<Endpoint>& v, std::size_t budget)
-{
-  std::size_t moves = 0;
-  for (std::size_t i = 1; i < v.size(); ++i)
-  {
-    const Endpoint item = v[i];
-    std::size_t j = i;
-    for (; j > 0 && lower_start(item, v[j - 1]); --j)
-    {
-      v[j] = v[j - 1];
-      if (++moves > budget)
-      {
-        v[j - 1] = item;  // keep the vector a permutation before giving up
-        return false;
-      }
-    }
-    v[j] = item;
-  }
-  return true;
+  return std::isfinite(v) && v > 0.0;
 }
 
 }  // namespace
@@ -105,39 +60,134 @@ bool insertion_sort(std::vector<Endpoint>& v, std::size_t budget)
 void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
 {
   pairs.clear();
-  const Axis axis = axis_of_largest_spread(boxes);
-  // Same count: refresh the ends in the previous order (a permutation of the
-  // indices), which is nearly sorted for a coherent scene.
-  if (sorted_.size() != boxes.size())
+  choose_cell_size(boxes);
+  classify(boxes);
+  fill_grid();
+  pairs_in_grid(boxes, pairs);
+  pairs_of_large(boxes, pairs);
+  sort_pairs(boxes.size(), pairs);
+}
+
+void BroadPhase::choose_cell_size(const std::vector<Aabb>& boxes)
+{
+  extents_.clear();
+  // Cell indices are taken from the lowest corner so that scenes far from the
+  // world origin keep their precision.
+  double lo_x = 0.0;
+  double lo_y = 0.0;
+  double top_lo_x = 0.0;  // highest low corner: with lo_x, the spread of boxes
+  double top_lo_y = 0.0;
+  for (const Aabb& box : boxes)
   {
-    sorted_.resize(boxes.size());
-    for (std::size_t i = 0; i < boxes.size(); ++i)
+    if (!is_usable(box))
     {
-      sorted_[i].index = i;
+      continue;
     }
+    const bool first = extents_.empty();
+    lo_x = first ? box.lo.x : std::min(lo_x, box.lo.x);
+    lo_y = first ? box.lo.y : std::min(lo_y, box.lo.y);
+    top_lo_x = first ? box.lo.x : std::max(top_lo_x, box.lo.x);
+    top_lo_y = first ? box.lo.y : std::max(top_lo_y, box.lo.y);
+    extents_.push_back(std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y));
   }
-  for (Endpoint& e : sorted_)
+  origin_x_ = lo_x;
+  origin_y_ = lo_y;
+  if (extents_.empty())
   {
-    e.lo = sortable(along(boxes[e.index].lo, axis));
-    e.hi = along(boxes[e.index].hi, axis);
+    cell_ = kFallbackCell;
+    return;
   }
-  if (!insertion_sort(sorted_, kInsertionMovesPerBox * sorted_.size()))
+  const auto rank = static_cast<std::size_t>(kCellPercentile * static_cast<double>(extents_.size() - 1));
+  std::nth_element(extents_.begin(), extents_.begin() + static_cast<std::ptrdiff_t>(rank), extents_.end());
+  cell_ = kCellsPerSize * extents_[rank];
+  if (!positive_finite(cell_))
   {
-    std::sort(sorted_.begin(), sorted_.end(), lower_start<Endpoint>);
+    // Mostly points: one cell per body on average over the occupied square.
+    const double spread = std::max(top_lo_x - lo_x, top_lo_y - lo_y);
+    cell_ = spread / std::sqrt(static_cast<double>(extents_.size()));
   }
-  for (std::size_t i = 0; i < sorted_.size(); ++i)
+  if (!positive_finite(cell_))
   {
-    const Endpoint& e = sorted_[i];
-    for (std::size_t j = i + 1; j < sorted_.size() && sorted_[j].lo <= e.hi; ++j)
+    cell_ = kFallbackCell;
+  }
+}
+
+BroadPhase::CellRange BroadPhase::cells_of(const Aabb& box) const
+{
+  return {cell_index(box.lo.x, origin_x_, cell_), cell_index(box.lo.y, origin_y_, cell_),
+          cell_index(box.hi.x, origin_x_, cell_), cell_index(box.hi.y, origin_y_, cell_)};
+}
+
+void BroadPhase::classify(const std::vector<Aabb>& boxes)
+{
+  ranges_.resize(boxes.size());
+  grid_boxes_.clear();
+  large_.clear();
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+  {
+    if (!is_usable(boxes[i]))
     {
-      const std::size_t other = sorted_[j].index;
-      if (boxes[e.index].overlaps(boxes[other]))
+      continue;
+    }
+    const CellRange r = cells_of(boxes[i]);
+    ranges_[i] = r;
+    const bool large = r.x1 - r.x0 >= kMaxCellsPerSide || r.y1 - r.y0 >= kMaxCellsPerSide;
+    (large ? large_ : grid_boxes_).push_back(i);
+  }
+}
+
+bool BroadPhase::owns(std::int32_t cx, std::int32_t cy, std::size_t a, std::size_t b) const
+{
+  // Two overlapping boxes share every cell of their intersection; the one
+  // holding its low corner reports the pair, so it is reported once.
+  return std::max(ranges_[a].x0, ranges_[b].x0) == cx && std::max(ranges_[a].y0, ranges_[b].y0) == cy;
+}
+
+void BroadPhase::pairs_of_large(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
+{
+  // Large boxes among themselves: a sweep along x, they are few.
+  std::sort(large_.begin(), large_.end(),
+            [&boxes](std::size_t a, std::size_t b) { return boxes[a].lo.x < boxes[b].lo.x; });
+  for (std::size_t k = 0; k < large_.size(); ++k)
+  {
+    const Aabb& box = boxes[large_[k]];
+    for (std::size_t m = k + 1; m < large_.size() && boxes[large_[m]].lo.x <= box.hi.x; ++m)
+    {
+      if (box.overlaps(boxes[large_[m]]))
       {
-        pairs.emplace_back(std::min(e.index, other), std::max(e.index, other));
+        pairs.emplace_back(std::min(large_[k], large_[m]), std::max(large_[k], large_[m]));
       }
     }
+    large_against_grid(boxes, large_[k], pairs);
   }
-  std::sort(pairs.begin(), pairs.end());
+}
+
+void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs)
+{
+  // Counting sort on the first index, then each body's few partners sorted:
+  // O(n + pairs) where a full sort would be O(pairs log pairs).
+  pair_start_.assign(box_count + 1, 0);
+  for (const BodyPair& p : pairs)
+  {
+    ++pair_start_[p.first];
+  }
+  std::size_t end = 0;
+  for (std::size_t& start : pair_start_)
+  {
+    end += start;
+    start = end;  // one past the group's end, decremented while scattering
+  }
+  sorted_pairs_.resize(pairs.size());
+  for (const BodyPair& p : pairs)
+  {
+    sorted_pairs_[--pair_start_[p.first]] = p;
+  }
+  for (std::size_t i = 0; i < box_count; ++i)
+  {
+    std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
+              sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i + 1]));
+  }
+  pairs.assign(sorted_pairs_.begin(), sorted_pairs_.end());
 }
 
 }  // namespace collision2d

@@ -1,0 +1,196 @@
+// The grid of the broad phase as a spatial hash laid out by counting sort:
+// cells map to buckets of a power-of-two table, the (cell, box) entries are
+// counted per bucket, the counts turned into offsets and the entries written
+// into one flat array. No per-cell containers, so a warmed-up broad phase
+// allocates nothing, and a scene's extent does not matter (only occupied cells
+// cost anything). Distinct cells may share a bucket; entries carry their cell
+// so that only boxes of the same cell are compared.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <tuple>
+
+#include "collision2d/broad_phase.h"
+
+namespace collision2d
+{
+namespace
+{
+/// Buckets up to this size are compared all pairs; larger ones (a cluster in
+/// one cell) are sorted and swept along x.
+constexpr std::size_t kAllPairsBucket = 16;
+
+/// Multiplicative hash constants (odd, with well-mixed bits).
+constexpr std::uint64_t kHashX = 0x9E3779B97F4A7C15ull;
+constexpr std::uint64_t kHashY = 0xC2B2AE3D27D4EB4Full;
+constexpr unsigned kHashFold = 32;  // bits folded down so the mask sees the high bits
+
+std::int64_t area(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1)
+{
+  return (static_cast<std::int64_t>(x1) - x0 + 1) * (static_cast<std::int64_t>(y1) - y0 + 1);
+}
+
+std::size_t power_of_two_at_least(std::size_t n)
+{
+  std::size_t p = 1;
+  while (p < n)
+  {
+    p <<= 1;
+  }
+  return p;
+}
+
+}  // namespace
+
+std::size_t BroadPhase::bucket_of(std::int32_t cx, std::int32_t cy) const
+{
+  std::uint64_t h = static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) * kHashX ^
+                    static_cast<std::uint64_t>(static_cast<std::uint32_t>(cy)) * kHashY;
+  h ^= h >> kHashFold;
+  return static_cast<std::size_t>(h) & bucket_mask_;
+}
+
+void BroadPhase::fill_grid()
+{
+  std::size_t entry_count = 0;
+  occupied_ = {0, 0, -1, -1};
+  for (std::size_t k = 0; k < grid_boxes_.size(); ++k)
+  {
+    const CellRange& r = ranges_[grid_boxes_[k]];
+    entry_count += static_cast<std::size_t>(area(r.x0, r.y0, r.x1, r.y1));
+    occupied_ = k == 0 ? r
+                       : CellRange{std::min(occupied_.x0, r.x0), std::min(occupied_.y0, r.y0),
+                                   std::max(occupied_.x1, r.x1), std::max(occupied_.y1, r.y1)};
+  }
+  // About one bucket per entry keeps the chance of two cells sharing one low.
+  const std::size_t bucket_count = power_of_two_at_least(std::max<std::size_t>(entry_count, 1));
+  bucket_mask_ = bucket_count - 1;
+  bucket_start_.assign(bucket_count + 1, 0);
+  for (std::size_t box : grid_boxes_)
+  {
+    const CellRange& r = ranges_[box];
+    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
+    {
+      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
+      {
+        ++bucket_start_[bucket_of(cx, cy)];
+      }
+    }
+  }
+  std::size_t end = 0;
+  for (std::size_t& start : bucket_start_)
+  {
+    end += start;
+    start = end;  // one past the bucket's end, decremented while scattering
+  }
+  entries_.resize(entry_count);
+  for (std::size_t box : grid_boxes_)
+  {
+    const CellRange& r = ranges_[box];
+    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
+    {
+      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
+      {
+        entries_[--bucket_start_[bucket_of(cx, cy)]] = Entry{cx, cy, box};
+      }
+    }
+  }
+}
+
+void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
+{
+  for (std::size_t b = 0; b + 1 < bucket_start_.size(); ++b)
+  {
+    if (bucket_start_[b + 1] - bucket_start_[b] > 1)
+    {
+      pairs_in_bucket(boxes, bucket_start_[b], bucket_start_[b + 1], pairs);
+    }
+  }
+}
+
+void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
+                                 std::vector<BodyPair>& pairs)
+{
+  const auto report_if_overlapping = [&](const Entry& a, const Entry& b) {
+    if (boxes[a.box].overlaps(boxes[b.box]) && owns(a.cx, a.cy, a.box, b.box))
+    {
+      pairs.emplace_back(std::min(a.box, b.box), std::max(a.box, b.box));
+    }
+  };
+  if (end - begin <= kAllPairsBucket)
+  {
+    for (std::size_t a = begin; a < end; ++a)
+    {
+      for (std::size_t b = a + 1; b < end; ++b)
+      {
+        if (entries_[a].cx == entries_[b].cx && entries_[a].cy == entries_[b].cy)
+        {
+          report_if_overlapping(entries_[a], entries_[b]);
+        }
+      }
+    }
+    return;
+  }
+  const auto first = entries_.begin() + static_cast<std::ptrdiff_t>(begin);
+  const auto last = entries_.begin() + static_cast<std::ptrdiff_t>(end);
+  std::sort(first, last, [&boxes](const Entry& a, const Entry& b) {
+    return std::make_tuple(a.cx, a.cy, boxes[a.box].lo.x) < std::make_tuple(b.cx, b.cy, boxes[b.box].lo.x);
+  });
+  for (std::size_t a = begin; a < end; ++a)
+  {
+    const Entry& e = entries_[a];
+    for (std::size_t b = a + 1; b < end && entries_[b].cx == e.cx && entries_[b].cy == e.cy &&
+                                boxes[entries_[b].box].lo.x <= boxes[e.box].hi.x;
+         ++b)
+    {
+      report_if_overlapping(e, entries_[b]);
+    }
+  }
+}
+
+void BroadPhase::large_against_grid(const std::vector<Aabb>& boxes, std::size_t large,
+                                    std::vector<BodyPair>& pairs) const
+{
+  const CellRange& r = ranges_[large];
+  const CellRange clip{std::max(r.x0, occupied_.x0), std::max(r.y0, occupied_.y0), std::min(r.x1, occupied_.x1),
+                       std::min(r.y1, occupied_.y1)};
+  if (clip.x0 > clip.x1 || clip.y0 > clip.y1)
+  {
+    return;
+  }
+  const auto report_if_overlapping = [&](const Entry& e) {
+    if (boxes[large].overlaps(boxes[e.box]) && owns(e.cx, e.cy, large, e.box))
+    {
+      pairs.emplace_back(std::min(large, e.box), std::max(large, e.box));
+    }
+  };
+  // Probe the covered cells, or scan every entry when that is cheaper (a slab
+  // under the whole scene covers more cells than are occupied).
+  if (area(clip.x0, clip.y0, clip.x1, clip.y1) >= static_cast<std::int64_t>(entries_.size()))
+  {
+    for (const Entry& e : entries_)
+    {
+      if (e.cx >= clip.x0 && e.cx <= clip.x1 && e.cy >= clip.y0 && e.cy <= clip.y1)
+      {
+        report_if_overlapping(e);
+      }
+    }
+    return;
+  }
+  for (std::int32_t cy = clip.y0; cy <= clip.y1; ++cy)
+  {
+    for (std::int32_t cx = clip.x0; cx <= clip.x1; ++cx)
+    {
+      const std::size_t b = bucket_of(cx, cy);
+      for (std::size_t k = bucket_start_[b]; k < bucket_start_[b + 1]; ++k)
+      {
+        if (entries_[k].cx == cx && entries_[k].cy == cy)
+        {
+          report_if_overlapping(entries_[k]);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace collision2d

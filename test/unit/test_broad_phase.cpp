@@ -1,13 +1,40 @@
-// Broad phase: the sweep must find exactly the overlapping box pairs a
-// brute-force all-pairs test finds, sorted and unique, however it is reused.
+// Broad phase: the grid must find exactly the overlapping box pairs a
+// brute-force all-pairs test finds, sorted and unique, however it is reused and
+// whatever the mix of sizes, and a warmed-up broad phase must not allocate.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <new>
 #include <random>
 #include <vector>
 
 #include "collision2d/broad_phase.h"
 #include "random_scene.h"
+
+// Counts every allocation of this test binary, so the reuse test can see
+// whether find_pairs allocates. GCC cannot tell these replacements pair
+// malloc with free and warns at every inlined delete.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace
+{
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t size)
+{
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size))
+  {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace collision2d
 {
@@ -114,6 +141,197 @@ TEST(BroadPhase, TouchingBoxesArePairedAndSmallInputsWork)
   broad_phase.find_pairs(boxes, pairs);
   const std::vector<BodyPair> want{{0, 1}, {1, 2}};
   EXPECT_EQ(pairs, want);
+}
+
+/// Brute force restricted to usable boxes: finite, lo <= hi. The others pair
+/// with nothing by contract.
+std::vector<BodyPair> brute_force_usable(const std::vector<Aabb>& boxes)
+{
+  const auto usable = [](const Aabb& b) {
+    return std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.hi.x) && std::isfinite(b.hi.y) &&
+           b.lo.x <= b.hi.x && b.lo.y <= b.hi.y;
+  };
+  std::vector<BodyPair> pairs;
+  for (const BodyPair& p : brute_force(boxes))
+  {
+    if (usable(boxes[p.first]) && usable(boxes[p.second]))
+    {
+      pairs.push_back(p);
+    }
+  }
+  return pairs;
+}
+
+Aabb box_at(Vec2 centre, Vec2 half)
+{
+  return {centre - half, centre + half};
+}
+
+TEST(BroadPhase, MixedSizesWithHugeGroundAndWalls)
+{
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  const double side = 30.0;  // m
+  for (unsigned seed = 11; seed < 14; ++seed)
+  {
+    std::vector<Aabb> boxes = boxes_of(test::random_scene(seed, kSceneBodies, {side, side}));
+    // A ground slab far wider than the scene, walls as tall as it, and a
+    // mid-sized plank: none of them fits a cell of the bodies' size.
+    boxes.insert(boxes.begin() + 50, box_at({0.5 * side, 0.4}, {1e4, 0.6}));
+    boxes.push_back(box_at({0.0, 0.5 * side}, {0.3, 0.5 * side}));
+    boxes.push_back(box_at({side, 0.5 * side}, {0.3, 0.5 * side}));
+    boxes.push_back(box_at({0.5 * side, 0.4 * side}, {6.0, 0.2}));
+    broad_phase.find_pairs(boxes, pairs);
+    const std::vector<BodyPair> want = brute_force(boxes);
+    EXPECT_EQ(pairs, want) << "seed " << seed;
+    const auto with_ground = std::count_if(want.begin(), want.end(), [](const BodyPair& p) {
+      return p.first == 50 || p.second == 50;
+    });
+    EXPECT_GT(with_ground, 5) << "the ground should touch the bottom row of bodies";
+  }
+}
+
+TEST(BroadPhase, ClusterInsideOneCellOfLargerBodies)
+{
+  // Most boxes are 1 m wide (so the cells are), and 200 tiny ones crowd into
+  // a 0.4 m patch: one cell holds them all, only some of them overlap.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> scene(0.0, 20.0);
+  std::uniform_real_distribution<double> patch(10.0, 10.4);
+  std::vector<Aabb> boxes;
+  for (int i = 0; i < 700; ++i)
+  {
+    boxes.push_back(box_at({scene(rng), scene(rng)}, {0.5, 0.5}));
+  }
+  for (int i = 0; i < 200; ++i)
+  {
+    boxes.push_back(box_at({patch(rng), patch(rng)}, {0.01, 0.01}));
+  }
+  std::shuffle(boxes.begin(), boxes.end(), rng);
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  broad_phase.find_pairs(boxes, pairs);
+  const std::vector<BodyPair> want = brute_force(boxes);
+  EXPECT_EQ(pairs, want);
+  EXPECT_LT(want.size(), 900u * 899u / 4u) << "the cluster should not be all-overlapping";
+}
+
+TEST(BroadPhase, EveryBoxInOneSpotPairsWithAll)
+{
+  // Identical boxes, then nearly identical ones: every pair overlaps.
+  constexpr std::size_t kCount = 150;
+  std::vector<Aabb> boxes(kCount, box_at({3.0, -2.0}, {0.25, 0.25}));
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  broad_phase.find_pairs(boxes, pairs);
+  EXPECT_EQ(pairs.size(), kCount * (kCount - 1) / 2);
+  EXPECT_EQ(pairs, brute_force(boxes));
+  for (std::size_t i = 0; i < kCount; ++i)
+  {
+    boxes[i] = box_at({3.0 + 1e-3 * static_cast<double>(i % 7), -2.0}, {0.25, 0.25});
+  }
+  broad_phase.find_pairs(boxes, pairs);
+  EXPECT_EQ(pairs, brute_force(boxes));
+  // Points (zero-size boxes) on one spot: the cell size cannot come from them.
+  std::vector<Aabb> points(kCount, Aabb{{1.0, 1.0}, {1.0, 1.0}});
+  broad_phase.find_pairs(points, pairs);
+  EXPECT_EQ(pairs.size(), kCount * (kCount - 1) / 2);
+}
+
+TEST(BroadPhase, TallColumnOfTouchingBoxes)
+{
+  // Boxes stacked so each one's top is exactly the next one's bottom, on a
+  // ground slab; neighbours touch and must be paired, nothing else overlaps.
+  constexpr int kHeight = 300;
+  constexpr double kSide = 0.5;  // m
+  std::vector<Aabb> boxes{Aabb{{-50.0, -1.0}, {50.0, 0.0}}};
+  for (int i = 0; i < kHeight; ++i)
+  {
+    boxes.push_back(Aabb{{0.0, kSide * i}, {kSide, kSide * (i + 1)}});
+  }
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  broad_phase.find_pairs(boxes, pairs);
+  EXPECT_EQ(pairs.size(), static_cast<std::size_t>(kHeight));
+  EXPECT_EQ(pairs, brute_force(boxes));
+}
+
+TEST(BroadPhase, FarAwayAndHugeCoordinates)
+{
+  // A scene 1e6 m from the origin, plus finite boxes at the ends of the double
+  // range (cell indices saturate there) and a box as wide as the range.
+  std::vector<Aabb> boxes = boxes_of(test::random_scene(21, 200, {15.0, 15.0}));
+  for (Aabb& box : boxes)
+  {
+    box = {box.lo + Vec2{1e6, -1e6}, box.hi + Vec2{1e6, -1e6}};
+  }
+  const double big = 0.5 * std::numeric_limits<double>::max();
+  boxes.push_back(box_at({big, big}, {1.0, 1.0}));
+  boxes.push_back(box_at({big, big}, {2.0, 0.5}));
+  boxes.push_back(box_at({-big, 0.0}, {1.0, 1.0}));
+  boxes.push_back(Aabb{{-big, -1e6 + 7.0}, {big, -1e6 + 7.1}});
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  broad_phase.find_pairs(boxes, pairs);
+  EXPECT_EQ(pairs, brute_force(boxes));
+}
+
+TEST(BroadPhase, NonFiniteAndInvertedBoxesPairWithNothing)
+{
+  std::vector<Aabb> boxes = boxes_of(test::random_scene(8, 200, {12.0, 12.0}));
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<std::size_t> bad{3, 40, 41, 100, 150};
+  boxes[3] = Aabb{{-inf, -inf}, {inf, inf}};
+  boxes[40] = Aabb{{nan, 1.0}, {2.0, 3.0}};
+  boxes[41] = Aabb{{1.0, 1.0}, {2.0, nan}};
+  boxes[100] = Aabb{{5.0, 5.0}, {4.0, 6.0}};  // lo > hi along x
+  boxes[150] = Aabb{{nan, nan}, {nan, nan}};
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  broad_phase.find_pairs(boxes, pairs);
+  EXPECT_EQ(pairs, brute_force_usable(boxes));
+  for (const BodyPair& p : pairs)
+  {
+    EXPECT_EQ(std::count(bad.begin(), bad.end(), p.first), 0);
+    EXPECT_EQ(std::count(bad.begin(), bad.end(), p.second), 0);
+  }
+  EXPECT_GT(pairs.size(), 10u);
+  std::vector<Aabb> all_bad(10, Aabb{{nan, nan}, {nan, nan}});
+  broad_phase.find_pairs(all_bad, pairs);
+  EXPECT_TRUE(pairs.empty());
+}
+
+TEST(BroadPhase, WarmedUpCallsAllocateNothing)
+{
+  // Ten frames of a moving scene with a ground slab, played twice: the second
+  // time every buffer (the broad phase's and the caller's pair list) already
+  // has the capacity the frames need.
+  std::vector<std::vector<Aabb>> frames;
+  std::vector<Aabb> boxes = boxes_of(test::random_scene(17, kSceneBodies, {20.0, 20.0}));
+  boxes.push_back(box_at({10.0, -0.5}, {100.0, 0.5}));
+  for (int f = 0; f < 10; ++f)
+  {
+    for (Aabb& box : boxes)
+    {
+      box = {box.lo + Vec2{0.03, -0.02}, box.hi + Vec2{0.03, -0.02}};
+    }
+    frames.push_back(boxes);
+  }
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  for (const std::vector<Aabb>& frame : frames)
+  {
+    broad_phase.find_pairs(frame, pairs);
+  }
+  const long before = g_allocations.load();
+  for (const std::vector<Aabb>& frame : frames)
+  {
+    broad_phase.find_pairs(frame, pairs);
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(pairs, brute_force(frames.back()));
+  EXPECT_GT(g_allocations.load() - before, 0) << "the counter must see the brute force's allocations";
 }
 
 }  // namespace

@@ -277,6 +277,8 @@ private:
   void integrate(FrameEffects& effects, double h, StepReport& report);
   // world_toi.cpp
   void refresh_inner_radii();
+  /// O(1) update for a body just appended: building a world stays O(n).
+  void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
   bool is_fast(std::size_t i, Vec2 displacement) const;
   bool mark_swept_bodies(double h);

@@ -135,7 +135,7 @@ BodyId World::add_body(const Body& body, const Material& material)
   ids_.push_back(next_id_);
   asleep_.push_back(false);
   rest_time_.push_back(0.0);
-  refresh_inner_radii();
+  append_inner_radius(bodies_.back());
   return next_id_++;
 }
 

@@ -52,6 +52,12 @@ void World::refresh_inner_radii()
   }
 }
 
+void World::append_inner_radius(const Body& body)
+{
+  inner_radius_.push_back(inner_radius(body));
+  min_inner_radius_ = inner_radius_.size() == 1 ? inner_radius_.back() : std::min(min_inner_radius_, inner_radius_.back());
+}
+
 Vec2 World::substep_displacement(std::size_t i, double h) const
 {
   const Body& b = bodies_[i];

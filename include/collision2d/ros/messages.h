@@ -48,8 +48,10 @@
 #include <collision2d/AddBody.h>
 #include <collision2d/GetWorld.h>
 #include <collision2d/LoadScene.h>
+#include <collision2d/LoadWorld.h>
 #include <collision2d/RemoveBody.h>
 #include <collision2d/ResolveContacts.h>
+#include <collision2d/SaveWorld.h>
 #include <collision2d/SetWorld.h>
 #include <collision2d/StepWorld.h>
 

@@ -18,8 +18,6 @@
 
 #include "collision2d/ros/messages.h"
 // After messages.h: these reach Body only through WorldState, already read.
-#include <collision2d/LoadWorld.h>
-#include <collision2d/SaveWorld.h>
 #include <std_srvs/Trigger.h>
 
 #include "collision2d/ros/world_snapshot.h"

@@ -12,8 +12,9 @@ Counting rules (one count per real test case):
   only restates rosunit-<name>.xml. A wrapper counts only when it fails and
   rosunit-<name>.xml does not already explain it (node crashed, timed out or
   wrote no results).
-- A file that is not valid XML, and a suite that reports errors without any
-  test case (catkin's MISSING-*.xml style), count as failures.
+- A file that is not valid XML, and each error or failure a suite reports
+  beyond those its test cases carry (a crash before any case ran, a failed
+  unittest subTest under rosunit), count as failures.
 """
 import os
 import sys
@@ -60,13 +61,15 @@ def count_cases(path, root, tally):
             tally.skipped += 1
         else:
             tally.passed += 1
-    # Errors reported on a suite with no case of its own (e.g. a crash before
-    # any case ran) would otherwise vanish.
+    # A suite can report errors that no case carries: a crash before any case
+    # ran, or a failed unittest subTest, which rosunit counts in the suite
+    # but writes under a passing case. Those would otherwise vanish.
     for suite in root.iter("testsuite"):
-        if suite.find("testcase") is None:
-            unexplained = int(suite.get("errors", 0)) + int(suite.get("failures", 0))
-            for _ in range(unexplained):
-                tally.fail("%s: suite %s" % (os.path.basename(path), suite.get("name", "?")))
+        reported = int(suite.get("errors", 0)) + int(suite.get("failures", 0))
+        attributed = sum(1 for case in suite.findall("testcase") if case_failed(case))
+        for _ in range(reported - attributed):
+            tally.fail("%s: suite %s reports an error outside its test cases"
+                       % (os.path.basename(path), suite.get("name", "?")))
 
 
 def node_results_have_failures(folder, test_name):

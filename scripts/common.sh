@@ -20,13 +20,17 @@ APT_LOCK_TIMEOUT_S=600
 # software GL let the rviz test draw and capture a screen on a headless machine.
 SYSTEM_PACKAGES=(
   cmake g++ libeigen3-dev libgtest-dev libyaml-cpp-dev
-  xvfb imagemagick libgl1-mesa-dri)
+  xvfb imagemagick libgl1-mesa-dri x11-utils
+  # clang's libFuzzer and sanitizer runtimes for scripts/fuzz*.sh
+  clang libclang-rt-14-dev
+  # the peers the benchmarks measure against (built only when present)
+  libbox2d-dev libchipmunk-dev)
 # ROS from Debian's own archive (Debian 12 and similar: ROS lives in /usr).
 DEBIAN_ROS_PACKAGES=(
   catkin ros-core-dev ros-message-generation ros-message-runtime
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
-  python3-rospy python3-rosservice python3-rostest librostest-dev rviz
+  python3-rospy python3-rosservice python3-rostopic python3-rostest librostest-dev rviz
   catkin-lint)
 # The same for ROS Noetic in /opt/ros/noetic, used when rosdep cannot resolve
 # package.xml (rosdep missing or never initialised).

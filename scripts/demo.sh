@@ -4,13 +4,11 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
-DEMO_SCENARIO="$COLLISION2D_ROOT/config/scenarios/cluster.collision"
-
-# The main job: resolve a shipped multi-contact scenario and print the report.
-# Called by path rather than through rosrun, whose `find -L` over the package
-# would wander into .build/ws/src/collision2d, a symlink back to the clone.
+# The main job: the rviz demo (world node, marker node, rviz). With a display
+# rviz opens; without one it runs under Xvfb and saves a screenshot whose path
+# it prints.
 run_main_job() {
-  "$COLLISION2D_WS/devel/lib/collision2d/collision2d_cli" "$DEMO_SCENARIO"
+  "$COLLISION2D_ROOT/scripts/demo_run.sh"
 }
 
 install_and_build

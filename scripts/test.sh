@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Second README command: install what the package needs, build it and run every
-# test (gtest and rostest through catkin). Closes with "N passed, M failed" and
+# test: sanitizer and fuzz runs, then gtest and rostest through catkin. Closes with "N passed, M failed" and
 # fails when a test failed or none ran.
 set -euo pipefail
 # shellcheck source=scripts/common.sh
@@ -11,6 +11,23 @@ RESULTS_DIR="$COLLISION2D_WS/build/test_results"
 # Results of an earlier run must not be counted again.
 rm -rf "$RESULTS_DIR"
 
+# Checks of the ROS-free core outside catkin's test runner: every unit test
+# under AddressSanitizer and UndefinedBehaviorSanitizer, and a bounded run of
+# each libFuzzer target (core parsers and solve, and the ROS message
+# conversion). They run first so the last line stays the test summary.
+FUZZ_SECONDS="${COLLISION2D_FUZZ_SECONDS:-30}"
+extra_failures=()
+run_check() {
+  local name=$1
+  shift
+  log "running $name"
+  "$@" || extra_failures+=("$name")
+}
+run_check "sanitizers (ASan + UBSan unit tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh"
+run_check "fuzzing the core (${FUZZ_SECONDS} s per target)" "$COLLISION2D_ROOT/scripts/fuzz.sh" "$FUZZ_SECONDS"
+run_check "fuzzing the ROS conversion (${FUZZ_SECONDS} s)" \
+  "$COLLISION2D_ROOT/scripts/fuzz_ros.sh" "$FUZZ_SECONDS" "$COLLISION2D_WS/devel"
+
 log "building the tests"
 catkin_make_ws tests
 # One test at a time: rostests start their own masters and nodes, and the
@@ -19,6 +36,10 @@ log "running the tests"
 COLLISION2D_JOBS=1 catkin_make_ws run_tests
 
 status=0
+if [[ ${#extra_failures[@]} -gt 0 ]]; then
+  log "failed: ${extra_failures[*]}"
+  status=1
+fi
 catkin_test_results "$RESULTS_DIR" >/dev/null || status=$?
 "$SYSTEM_PYTHON" "$COLLISION2D_ROOT/scripts/summarize_test_results.py" "$RESULTS_DIR" || status=$?
 exit "$status"

@@ -84,6 +84,25 @@ void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>&
   }
 }
 
+void store_velocities(const std::vector<BodyVelocity>& state, std::vector<Body>& bodies)
+{
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    if (state[i].inv_mass <= 0.0)
+      continue;
+    bodies[i].set_velocity(state[i].v);
+    bodies[i].set_omega(state[i].omega);
+  }
+}
+
+double total_kinetic_energy(const std::vector<Body>& bodies)
+{
+  double energy = 0.0;
+  for (const Body& body : bodies)
+    energy += body.kinetic_energy();
+  return energy;
+}
+
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
                 const std::vector<Contact>& contacts, double restitution, std::vector<ContactRow>& rows)
 {

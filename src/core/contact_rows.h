@@ -66,6 +66,11 @@ void validate_bodies(const std::vector<Body>& bodies);
 
 /// Copies the bodies' velocities and inverse masses into `state`.
 void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>& state);
+/// Writes the solved velocities back to the dynamic bodies; static and
+/// kinematic bodies keep theirs untouched.
+void store_velocities(const std::vector<BodyVelocity>& state, std::vector<Body>& bodies);
+/// Sum of the bodies' kinetic energies (J).
+double total_kinetic_energy(const std::vector<Body>& bodies);
 
 /// Builds one row per contact whose normal effective mass is positive (a pair of
 /// two non-dynamic bodies is skipped). Targets are e times the approach speed

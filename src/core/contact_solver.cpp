@@ -21,25 +21,6 @@ void require(bool in_range, const char* name, double value, const char* range)
                                 " is not in " + range);
 }
 
-double total_kinetic_energy(const std::vector<Body>& bodies)
-{
-  double energy = 0.0;
-  for (const Body& body : bodies)
-    energy += body.kinetic_energy();
-  return energy;
-}
-
-void store_velocities(const std::vector<detail::BodyVelocity>& state, std::vector<Body>& bodies)
-{
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-  {
-    if (state[i].inv_mass <= 0.0)
-      continue;  // static and kinematic bodies keep their velocities untouched
-    bodies[i].set_velocity(state[i].v);
-    bodies[i].set_omega(state[i].omega);
-  }
-}
-
 void store_impulses(const std::vector<detail::ContactRow>& rows, std::size_t contact_count,
                     std::vector<ContactImpulse>& impulses)
 {
@@ -83,7 +64,7 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
 {
   SolveReport report;
   report.contact_count = contacts.size();
-  report.kinetic_energy_before = total_kinetic_energy(bodies);
+  report.kinetic_energy_before = detail::total_kinetic_energy(bodies);
 
   // All working storage is sized here, once per call; the sweeps allocate nothing.
   std::vector<detail::BodyVelocity> state;
@@ -105,10 +86,10 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
   for (const detail::ContactRow& row : rows)
     report.total_normal_impulse += row.lambda_n;
 
-  store_velocities(state, bodies);
+  detail::store_velocities(state, bodies);
   if (impulses != nullptr)
     store_impulses(rows, contacts.size(), *impulses);
-  report.kinetic_energy_after = total_kinetic_energy(bodies);
+  report.kinetic_energy_after = detail::total_kinetic_energy(bodies);
   return report;
 }
 

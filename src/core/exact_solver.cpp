@@ -11,25 +11,6 @@ namespace collision2d
 {
 namespace
 {
-double total_kinetic_energy(const std::vector<Body>& bodies)
-{
-  double energy = 0.0;
-  for (const Body& body : bodies)
-    energy += body.kinetic_energy();
-  return energy;
-}
-
-void store_velocities(const std::vector<detail::BodyVelocity>& state, std::vector<Body>& bodies)
-{
-  for (std::size_t i = 0; i < bodies.size(); ++i)
-  {
-    if (state[i].inv_mass <= 0.0)
-      continue;  // static and kinematic bodies keep their velocities
-    bodies[i].set_velocity(state[i].v);
-    bodies[i].set_omega(state[i].omega);
-  }
-}
-
 /// The documented failure signal: nothing applied, caller falls back.
 SolveReport failed_report(SolveReport report, std::size_t contact_count, std::vector<ContactImpulse>* impulses)
 {
@@ -49,7 +30,7 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
 {
   SolveReport report;
   report.contact_count = contacts.size();
-  report.kinetic_energy_before = total_kinetic_energy(bodies);
+  report.kinetic_energy_before = detail::total_kinetic_energy(bodies);
 
   std::vector<detail::BodyVelocity> state;
   std::vector<detail::ContactRow> rows;
@@ -97,14 +78,14 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
     report.converged = report.converged && residual <= tol * scale;
   }
 
-  store_velocities(state, bodies);
+  detail::store_velocities(state, bodies);
   if (impulses != nullptr)
   {
     impulses->assign(contacts.size(), ContactImpulse{});
     for (const detail::ContactRow& row : rows)
       (*impulses)[row.contact] = {row.lambda_n, row.lambda_t};
   }
-  report.kinetic_energy_after = total_kinetic_energy(bodies);
+  report.kinetic_energy_after = detail::total_kinetic_energy(bodies);
   return report;
 }
 

@@ -10,8 +10,8 @@
 # --quick thins every grid and shortens the long runs (a few minutes instead
 # of about fifteen on two cores). Environment: COLLISION2D_PERF_BUILD (build
 # folder, default .build/perf), COLLISION2D_JOBS (default 2).
-# Needs cmake, g++, Eigen, yaml-cpp, gnuplot and python3; Box2D
-# (libbox2d-dev) and Chipmunk (libchipmunk-dev) are measured when installed.
+# Installs what it needs when missing (apt: the package's build dependencies,
+# Box2D and Chipmunk as peers, gnuplot); needs root or sudo for that.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -31,8 +31,13 @@ for arg in "$@"; do
   esac
 done
 
+# shellcheck source=scripts/common.sh
+source "$ROOT/scripts/common.sh"
 log() { printf '[performance] %s\n' "$*" >&2; }
 
+# What the report needs beyond the package's own build dependencies: the
+# plotter and the two peers (installed only when missing).
+install_apt_packages "${SYSTEM_PACKAGES[@]}" gnuplot-nox python3
 for tool in cmake gnuplot python3; do
   command -v "$tool" > /dev/null || { log "error: $tool is required"; exit 1; }
 done

@@ -95,17 +95,6 @@ double initial_kinetic_energy(const Scene& scene)
   return energy;
 }
 
-void merge(ActiveEffects& into, const ActiveEffects& from)
-{
-  into.rotation = into.rotation || from.rotation;
-  into.friction = into.friction || from.friction;
-  into.restitution = into.restitution || from.restitution;
-  into.position_correction = into.position_correction || from.position_correction;
-  into.time_of_impact = into.time_of_impact || from.time_of_impact;
-  into.warm_starting = into.warm_starting || from.warm_starting;
-  into.sleeping = into.sleeping || from.sleeping;
-}
-
 /// One run of settle_seconds under Auto, frame by frame.
 void measure_accuracy(const Scene& scene, const BenchOptions& options, SceneMetrics& m)
 {
@@ -118,7 +107,7 @@ void measure_accuracy(const Scene& scene, const BenchOptions& options, SceneMetr
   {
     const StepReport report = world.step(1);
     m.max_penetration = std::max(m.max_penetration, report.max_penetration);
-    merge(m.auto_effects, report.active);
+    m.auto_effects |= report.active;
     energy = report.kinetic_energy;
   }
   for (std::size_t i = 0; i < ids.size(); ++i)

@@ -120,6 +120,20 @@ struct ActiveEffects
   bool time_of_impact = false;
   bool warm_starting = false;
   bool sleeping = false;
+
+  /// Accumulates over frames or runs: an effect counts as active if it was
+  /// active in any of them.
+  ActiveEffects& operator|=(const ActiveEffects& o)
+  {
+    rotation = rotation || o.rotation;
+    friction = friction || o.friction;
+    restitution = restitution || o.restitution;
+    position_correction = position_correction || o.position_correction;
+    time_of_impact = time_of_impact || o.time_of_impact;
+    warm_starting = warm_starting || o.warm_starting;
+    sleeping = sleeping || o.sleeping;
+    return *this;
+  }
 };
 
 struct StepReport

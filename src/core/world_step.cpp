@@ -16,20 +16,6 @@
 
 namespace collision2d
 {
-namespace
-{
-void merge(ActiveEffects& into, const ActiveEffects& from)
-{
-  into.rotation = into.rotation || from.rotation;
-  into.friction = into.friction || from.friction;
-  into.restitution = into.restitution || from.restitution;
-  into.position_correction = into.position_correction || from.position_correction;
-  into.time_of_impact = into.time_of_impact || from.time_of_impact;
-  into.warm_starting = into.warm_starting || from.warm_starting;
-  into.sleeping = into.sleeping || from.sleeping;
-}
-
-}  // namespace
 
 StepReport World::step(int frames)
 {
@@ -82,7 +68,7 @@ void World::step_frame(StepReport& report)
   time_ += settings_.dt;
   ++frame_count_;
   ++report.frames;
-  merge(report.active, effects.flags);
+  report.active |= effects.flags;
 }
 
 void World::substep(FrameEffects& effects, double h, bool first, bool warm, StepReport& report)

@@ -103,6 +103,22 @@ double total_kinetic_energy(const std::vector<Body>& bodies)
   return energy;
 }
 
+void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>& contacts, double restitution,
+                     ContactProblem& problem)
+{
+  load_velocities(bodies, problem.state);
+  build_rows(bodies, problem.state, contacts, restitution, problem.rows);
+  partition_clusters(problem.state, problem.rows, problem.clusters, problem.parent);
+}
+
+void store_impulses(const std::vector<ContactRow>& rows, std::size_t contact_count,
+                    std::vector<ContactImpulse>& impulses)
+{
+  impulses.assign(contact_count, ContactImpulse{});
+  for (const ContactRow& row : rows)
+    impulses[row.contact] = {row.lambda_n, row.lambda_t};
+}
+
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
                 const std::vector<Contact>& contacts, double restitution, std::vector<ContactRow>& rows)
 {

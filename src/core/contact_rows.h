@@ -86,6 +86,25 @@ void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>
 void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactRow>& rows,
                         std::vector<ClusterRange>& clusters, std::vector<std::size_t>& parent);
 
+/// Everything a velocity solve works on, sized once per call so the
+/// iterations allocate nothing.
+struct ContactProblem
+{
+  std::vector<BodyVelocity> state;
+  std::vector<ContactRow> rows;
+  std::vector<ClusterRange> clusters;
+  std::vector<std::size_t> parent;  ///< union-find working storage
+};
+
+/// Loads the velocities, builds the rows with their fixed Newton targets and
+/// groups them into coupled clusters: the setup both solver modes share.
+void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>& contacts, double restitution,
+                     ContactProblem& problem);
+
+/// One ContactImpulse per input contact (zero for contacts that made no row).
+void store_impulses(const std::vector<ContactRow>& rows, std::size_t contact_count,
+                    std::vector<ContactImpulse>& impulses);
+
 /// Relative velocity of b with respect to a at the row's contact point.
 inline Vec2 relative_velocity(const ContactRow& row, const std::vector<BodyVelocity>& state)
 {

@@ -21,13 +21,6 @@ void require(bool in_range, const char* name, double value, const char* range)
                                 " is not in " + range);
 }
 
-void store_impulses(const std::vector<detail::ContactRow>& rows, std::size_t contact_count,
-                    std::vector<ContactImpulse>& impulses)
-{
-  impulses.assign(contact_count, ContactImpulse{});
-  for (const detail::ContactRow& row : rows)
-    impulses[row.contact] = {row.lambda_n, row.lambda_t};
-}
 }  // namespace
 
 ContactSolver::ContactSolver(double e, double mu, int iterations, double tol, double bias_factor, double slop)
@@ -67,16 +60,13 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
   report.kinetic_energy_before = detail::total_kinetic_energy(bodies);
 
   // All working storage is sized here, once per call; the sweeps allocate nothing.
-  std::vector<detail::BodyVelocity> state;
-  std::vector<detail::ContactRow> rows;
-  std::vector<detail::ClusterRange> clusters;
-  std::vector<std::size_t> parent;
-  detail::load_velocities(bodies, state);
-  detail::build_rows(bodies, state, contacts, e_, rows);
-  detail::partition_clusters(state, rows, clusters, parent);
-  report.cluster_count = clusters.size();
+  detail::ContactProblem problem;
+  detail::prepare_problem(bodies, contacts, e_, problem);
+  std::vector<detail::BodyVelocity>& state = problem.state;
+  std::vector<detail::ContactRow>& rows = problem.rows;
+  report.cluster_count = problem.clusters.size();
 
-  for (const detail::ClusterRange& cluster : clusters)
+  for (const detail::ClusterRange& cluster : problem.clusters)
   {
     const detail::ClusterResult result = detail::solve_cluster_pgs(rows, cluster, state, mu_, iterations_, tol_);
     report.iterations = std::max(report.iterations, result.sweeps);
@@ -88,7 +78,7 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
 
   detail::store_velocities(state, bodies);
   if (impulses != nullptr)
-    store_impulses(rows, contacts.size(), *impulses);
+    detail::store_impulses(rows, contacts.size(), *impulses);
   report.kinetic_energy_after = detail::total_kinetic_energy(bodies);
   return report;
 }

@@ -32,15 +32,13 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   report.contact_count = contacts.size();
   report.kinetic_energy_before = detail::total_kinetic_energy(bodies);
 
-  std::vector<detail::BodyVelocity> state;
-  std::vector<detail::ContactRow> rows;
-  std::vector<detail::ClusterRange> clusters;
-  std::vector<std::size_t> parent;
-  detail::load_velocities(bodies, state);
-  detail::build_rows(bodies, state, contacts, e, rows);
+  detail::ContactProblem problem;
+  detail::prepare_problem(bodies, contacts, e, problem);
+  std::vector<detail::BodyVelocity>& state = problem.state;
+  std::vector<detail::ContactRow>& rows = problem.rows;
+  const std::vector<detail::ClusterRange>& clusters = problem.clusters;
   for (detail::ContactRow& row : rows)
     row.mu = mu;
-  detail::partition_clusters(state, rows, clusters, parent);
   report.cluster_count = clusters.size();
 
   // Every cluster is solved before any impulse is applied, so a failure
@@ -80,11 +78,7 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
 
   detail::store_velocities(state, bodies);
   if (impulses != nullptr)
-  {
-    impulses->assign(contacts.size(), ContactImpulse{});
-    for (const detail::ContactRow& row : rows)
-      (*impulses)[row.contact] = {row.lambda_n, row.lambda_t};
-  }
+    detail::store_impulses(rows, contacts.size(), *impulses);
   report.kinetic_energy_after = detail::total_kinetic_energy(bodies);
   return report;
 }

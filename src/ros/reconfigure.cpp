@@ -30,6 +30,10 @@ WorldSettings world_settings_from_config(const Collision2dConfig& config, const 
   msg.dt = config.world_dt;
   msg.substeps = config.world_substeps;
   msg.velocity_iterations = config.world_velocity_iterations;
+  msg.solver_mode = static_cast<std::uint8_t>(config.world_solver_mode);
+  msg.position_iterations = config.world_position_iterations;
+  msg.position_block = config.world_position_block;
+  msg.exact_position_correction = config.world_exact_position_correction;
   msg.slop = config.world_slop;
   msg.compliance = config.world_compliance;
   msg.restitution_threshold = config.world_restitution_threshold;
@@ -56,6 +60,10 @@ void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& 
   config.world_dt = msg.dt;
   config.world_substeps = msg.substeps;
   config.world_velocity_iterations = msg.velocity_iterations;
+  config.world_solver_mode = msg.solver_mode;
+  config.world_position_iterations = msg.position_iterations;
+  config.world_position_block = msg.position_block;
+  config.world_exact_position_correction = msg.exact_position_correction;
   config.world_slop = msg.slop;
   config.world_compliance = msg.compliance;
   config.world_restitution_threshold = msg.restitution_threshold;

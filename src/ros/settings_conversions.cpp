@@ -29,6 +29,25 @@ SolverMode solver_mode_from_msg(std::uint8_t mode)
   }
 }
 
+SolverMode world_solver_mode_from_msg(std::uint8_t mode)
+{
+  switch (mode)
+  {
+    case WorldConfig::SOLVER_ITERATIVE:
+      return SolverMode::Iterative;
+    case WorldConfig::SOLVER_EXACT:
+      return SolverMode::Exact;
+    default:
+      reject(kSettings,
+             "solver_mode = " + std::to_string(mode) + " is not SOLVER_ITERATIVE (0) or SOLVER_EXACT (1)");
+  }
+}
+
+std::uint8_t world_solver_mode_to_msg(SolverMode mode)
+{
+  return mode == SolverMode::Exact ? WorldConfig::SOLVER_EXACT : WorldConfig::SOLVER_ITERATIVE;
+}
+
 Toggle toggle_from_msg(std::uint8_t value, const char* field)
 {
   switch (value)
@@ -97,6 +116,10 @@ WorldSettings world_settings_from_msg(const WorldConfig& msg)
   settings.slop = msg.slop;
   settings.compliance = msg.compliance;
   settings.restitution_threshold = msg.restitution_threshold;
+  settings.solver_mode = world_solver_mode_from_msg(msg.solver_mode);
+  settings.position_iterations = msg.position_iterations;
+  settings.position_block = msg.position_block;
+  settings.exact_position_correction = msg.exact_position_correction;
   settings.rotation = toggle_from_msg(msg.rotation, "rotation");
   settings.friction = toggle_from_msg(msg.friction, "friction");
   settings.restitution = toggle_from_msg(msg.restitution, "restitution");
@@ -134,6 +157,10 @@ WorldConfig world_settings_to_msg(const WorldSettings& settings)
   msg.slop = settings.slop;
   msg.compliance = settings.compliance;
   msg.restitution_threshold = settings.restitution_threshold;
+  msg.solver_mode = world_solver_mode_to_msg(settings.solver_mode);
+  msg.position_iterations = settings.position_iterations;
+  msg.position_block = settings.position_block;
+  msg.exact_position_correction = settings.exact_position_correction;
   msg.rotation = toggle_to_msg(settings.rotation);
   msg.friction = toggle_to_msg(settings.friction);
   msg.restitution = toggle_to_msg(settings.restitution);

@@ -10,6 +10,7 @@
 #include <ros/time.h>
 
 #include "collision2d/ros/conversions.h"
+#include "collision2d/ros/reconfigure.h"
 #include "collision2d/ros/settings_conversions.h"
 #include "collision2d/ros/world_service.h"
 
@@ -344,6 +345,90 @@ TEST(WorldSettingsMsg, RoundTripAndRejection)
   {
     EXPECT_NE(std::string(e.what()).find("dt"), std::string::npos) << e.what();
   }
+}
+
+/// The message of the InvalidRequest that converting `msg` throws ("" if none).
+std::string world_rejection(const WorldConfig& msg)
+{
+  try
+  {
+    world_settings_from_msg(msg);
+  }
+  catch (const InvalidRequest& e)
+  {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(WorldSettingsMsg, SolverFieldsRoundTrip)
+{
+  // Each field away from its default, so a field the conversion drops comes
+  // back as the default and fails.
+  WorldSettings settings;
+  settings.solver_mode = SolverMode::Exact;
+  settings.position_iterations = WorldSettings().position_iterations + 3;
+  settings.position_block = !WorldSettings().position_block;
+  settings.exact_position_correction = !WorldSettings().exact_position_correction;
+  const WorldConfig msg = world_settings_to_msg(settings);
+  EXPECT_EQ(msg.solver_mode, WorldConfig::SOLVER_EXACT);
+  EXPECT_EQ(msg.position_iterations, settings.position_iterations);
+  EXPECT_EQ(msg.position_block, settings.position_block);
+  EXPECT_EQ(msg.exact_position_correction, settings.exact_position_correction);
+  const WorldSettings back = world_settings_from_msg(msg);
+  EXPECT_EQ(back.solver_mode, SolverMode::Exact);
+  EXPECT_EQ(back.position_iterations, settings.position_iterations);
+  EXPECT_EQ(back.position_block, settings.position_block);
+  EXPECT_EQ(back.exact_position_correction, settings.exact_position_correction);
+  // And back to iterative: the message's default value is not a fixed point.
+  settings.solver_mode = SolverMode::Iterative;
+  EXPECT_EQ(world_settings_to_msg(settings).solver_mode, WorldConfig::SOLVER_ITERATIVE);
+  EXPECT_EQ(world_settings_from_msg(world_settings_to_msg(settings)).solver_mode, SolverMode::Iterative);
+}
+
+TEST(WorldSettingsMsg, BadSolverFieldsNameTheField)
+{
+  WorldConfig msg = world_settings_to_msg(WorldSettings());
+  msg.solver_mode = 7;
+  EXPECT_EQ(world_rejection(msg), "settings: solver_mode = 7 is not SOLVER_ITERATIVE (0) or SOLVER_EXACT (1)");
+  msg = world_settings_to_msg(WorldSettings());
+  msg.position_iterations = 0;
+  EXPECT_NE(world_rejection(msg).find("position_iterations"), std::string::npos) << world_rejection(msg);
+  // A default-constructed message is no set of defaults: its zero dt,
+  // substeps and iterations are refused, as before these fields existed.
+  EXPECT_NE(world_rejection(WorldConfig()), "");
+}
+
+TEST(WorldReconfigure, DefaultsAreTheWorldDefaults)
+{
+  // The base differs from the defaults in every field the config leaves out
+  // and in the config's own, so only the config's defaults can make them equal.
+  WorldSettings base;
+  base.solver_mode = SolverMode::Exact;
+  base.position_iterations = 1;
+  base.position_block = true;
+  base.exact_position_correction = false;
+  const WorldSettings from_defaults = world_settings_from_config(Collision2dConfig::__getDefault__(), base);
+  EXPECT_EQ(world_settings_to_msg(from_defaults), world_settings_to_msg(WorldSettings()));
+}
+
+TEST(WorldReconfigure, SolverFieldsReachTheWorldAndShowInTheConfig)
+{
+  WorldSettings settings;
+  settings.solver_mode = SolverMode::Exact;
+  settings.position_iterations = 9;
+  settings.position_block = true;
+  settings.exact_position_correction = false;
+  Collision2dConfig config = Collision2dConfig::__getDefault__();
+  world_settings_to_config(settings, config);
+  EXPECT_EQ(config.world_solver_mode, static_cast<int>(WorldConfig::SOLVER_EXACT));
+  EXPECT_EQ(config.world_position_iterations, 9);
+  EXPECT_TRUE(config.world_position_block);
+  EXPECT_FALSE(config.world_exact_position_correction);
+  const WorldSettings back = world_settings_from_config(config, WorldSettings());
+  EXPECT_EQ(world_settings_to_msg(back), world_settings_to_msg(settings));
+  config.world_solver_mode = 3;
+  EXPECT_THROW(world_settings_from_config(config, WorldSettings()), InvalidRequest);
 }
 
 class WorldServiceTest : public ::testing::Test

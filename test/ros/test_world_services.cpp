@@ -14,7 +14,9 @@
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
 
+#include "collision2d/ros/conversions.h"
 #include "collision2d/ros/messages.h"
+#include "collision2d/scenes/standard_scenes.h"
 
 #include "ros_test_helpers.h"
 
@@ -79,6 +81,42 @@ const BodyMsg* find_body(const WorldState& state, std::uint32_t id)
     }
   }
   return nullptr;
+}
+
+/// Lowest and highest y of a polygon's outline, placed by its pose.
+struct VerticalExtent
+{
+  double low;
+  double high;
+};
+
+VerticalExtent vertical_extent(const BodyMsg& body)
+{
+  VerticalExtent extent{kInf, -kInf};
+  const double c = std::cos(body.pose.theta);
+  const double s = std::sin(body.pose.theta);
+  for (const geometry_msgs::Point& v : body.vertices)
+  {
+    const double y = body.pose.y + s * v.x + c * v.y;
+    extent.low = std::min(extent.low, y);
+    extent.high = std::max(extent.high, y);
+  }
+  return extent;
+}
+
+/// The dynamic body of largest (heaviest = true) or smallest mass.
+const BodyMsg* dynamic_by_mass(const WorldState& state, bool heaviest)
+{
+  const BodyMsg* found = nullptr;
+  for (const BodyMsg& body : state.bodies)
+  {
+    if (body.type == BodyMsg::DYNAMIC &&
+        (found == nullptr || (heaviest ? body.mass > found->mass : body.mass < found->mass)))
+    {
+      found = &body;
+    }
+  }
+  return found;
 }
 
 class WorldServices : public ::testing::Test
@@ -268,6 +306,71 @@ TEST_F(WorldServices, SetWorldRoundTripsGetWorld)
   EXPECT_EQ(set.response.state.frame_count, 0u);
 }
 
+TEST_F(WorldServices, SetWorldKeepsTheSolverSettings)
+{
+  // Each away from its default, so one the node drops reads back as the default.
+  SetWorld::Request request;
+  request.bodies = before_.bodies;
+  request.settings = before_.settings;
+  request.settings.solver_mode = WorldConfig::SOLVER_EXACT;
+  request.settings.position_iterations = before_.settings.position_iterations + 2;
+  request.settings.position_block = !before_.settings.position_block;
+  request.settings.exact_position_correction = !before_.settings.exact_position_correction;
+  const SetWorld set = call<SetWorld>("set_world", request);
+  ASSERT_TRUE(set.response.success) << set.response.message;
+  for (const WorldConfig& shown : {set.response.state.settings, get_world().settings, step(1).state.settings})
+  {
+    EXPECT_EQ(shown.solver_mode, WorldConfig::SOLVER_EXACT);
+    EXPECT_EQ(shown.position_iterations, request.settings.position_iterations);
+    EXPECT_EQ(shown.position_block, request.settings.position_block);
+    EXPECT_EQ(shown.exact_position_correction, request.settings.exact_position_correction);
+  }
+}
+
+TEST_F(WorldServices, ExactSolverCarriesAMillionToOneStack)
+{
+  // A 1e6 kg box on a 1 kg box on the ground: the iterative passes let the
+  // heavy box fall into the light one within half a second (test_world_exact);
+  // the exact solver holds it at slop. Compliance 0 so that no spring depth
+  // (weight * compliance, 5 cm here) adds to slop.
+  constexpr double kMassRatio = 1e6;
+  constexpr double kSlops = 3.0;     // allowed depth, in slops
+  constexpr int kChecks = 12;
+  constexpr std::uint32_t kFramesPerCheck = 10;  // 2 s in all at the default dt
+  const Scene scene = scenes::heavy_on_light(kMassRatio);
+  SetWorld::Request request;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+  {
+    request.bodies.push_back(
+        ros_interface::body_to_msg(scene.bodies[i].body, static_cast<std::uint32_t>(i), scene.bodies[i].material));
+  }
+  request.settings = before_.settings;
+  request.settings.solver_mode = WorldConfig::SOLVER_EXACT;
+  request.settings.exact_position_correction = true;
+  request.settings.compliance = 0.0;
+  const SetWorld set = call<SetWorld>("set_world", request);
+  ASSERT_TRUE(set.response.success) << set.response.message;
+
+  for (int check = 0; check < kChecks; ++check)
+  {
+    const StepWorld::Response response = step(kFramesPerCheck);
+    ASSERT_EQ(response.state.settings.solver_mode, WorldConfig::SOLVER_EXACT);
+    const BodyMsg* heavy = dynamic_by_mass(response.state, true);
+    const BodyMsg* light = dynamic_by_mass(response.state, false);
+    ASSERT_TRUE(heavy != nullptr && light != nullptr && heavy != light);
+    ASSERT_NEAR(heavy->mass / light->mass, kMassRatio, 1e-6 * kMassRatio);
+    const double allowed = kSlops * response.state.settings.slop;
+    const double depth = vertical_extent(*light).high - vertical_extent(*heavy).low;
+    EXPECT_LT(depth, allowed) << "the heavy box sank into the light one at frame " << response.state.frame_count;
+    // Still resting on it, not thrown off by an overcorrection.
+    EXPECT_GT(depth, -allowed) << "the heavy box left the light one at frame " << response.state.frame_count;
+    const BodyMsg* ground = find_body(response.state, set.response.state.bodies.front().id);
+    ASSERT_TRUE(ground != nullptr && ground->type == BodyMsg::STATIC);
+    EXPECT_LT(vertical_extent(*ground).high - vertical_extent(*light).low, allowed)
+        << "the light box sank into the ground";
+  }
+}
+
 TEST_F(WorldServices, NonFiniteNumbers)
 {
   BodyMsg bad = disk_msg(0, {0.0, 0.0});
@@ -337,6 +440,13 @@ TEST_F(WorldServices, OutOfRangeSettings)
   request.settings = before_.settings;
   request.settings.friction = 9;
   expect_rejected(call<SetWorld>("set_world", request).response, "settings: friction = 9 is not AUTO (0), ON (1) or OFF (2)");
+  request.settings = before_.settings;
+  request.settings.solver_mode = 7;
+  expect_rejected(call<SetWorld>("set_world", request).response,
+                  "settings: solver_mode = 7 is not SOLVER_ITERATIVE (0) or SOLVER_EXACT (1)");
+  request.settings = before_.settings;
+  request.settings.position_iterations = 0;
+  expect_rejected(call<SetWorld>("set_world", request).response, "position_iterations");
 
   StepWorld::Request step_request;
   step_request.frames = 0;

@@ -12,7 +12,7 @@ import unittest
 import dynamic_reconfigure.client
 import rospy
 import rostest
-from collision2d.msg import Body, SolverSettings, WorldState
+from collision2d.msg import Body, SolverSettings, WorldConfig, WorldState
 from collision2d.srv import GetWorld, LoadScene, ResolveContacts, StepWorld
 
 SERVICE_WAIT_S = 30.0
@@ -104,9 +104,13 @@ class PythonClient(unittest.TestCase):
         shown = reconfigure.get_configuration(timeout=SERVICE_WAIT_S)
         self.assertEqual(shown["world_substeps"], loaded.state.settings.substeps)
         self.assertAlmostEqual(shown["world_dt"], loaded.state.settings.dt, places=12)
+        self.assertEqual(shown["world_solver_mode"], loaded.state.settings.solver_mode)
+        self.assertEqual(shown["world_position_iterations"], loaded.state.settings.position_iterations)
         original = shown["solver_restitution"]
         try:
-            reconfigure.update_configuration({"solver_restitution": 1.0, "world_substeps": 7})
+            reconfigure.update_configuration({"solver_restitution": 1.0, "world_substeps": 7,
+                                              "world_solver_mode": WorldConfig.SOLVER_EXACT,
+                                              "world_position_iterations": 3})
             # ResolveContacts with the node's settings is now perfectly elastic.
             request = SolverSettings(use_node_settings=True)
             response = self.resolve(bodies=[disk(1, 0.0, 1.0), disk(2, 0.95, -1.0)], settings=request)
@@ -115,6 +119,8 @@ class PythonClient(unittest.TestCase):
             self.assertAlmostEqual(v2 - v1, 2.0, places=7)
             world = rospy.ServiceProxy("get_world", GetWorld)()
             self.assertEqual(world.state.settings.substeps, 7)
+            self.assertEqual(world.state.settings.solver_mode, WorldConfig.SOLVER_EXACT)
+            self.assertEqual(world.state.settings.position_iterations, 3)
         finally:
             reconfigure.update_configuration({"solver_restitution": original})
 

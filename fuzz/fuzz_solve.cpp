@@ -5,8 +5,10 @@
 // disks and convex polygons up to aspect 1000. Occasionally a field takes a
 // raw double (NaN, inf, 1e308, ...) to exercise the rejections.
 // Checked: no sanitizer report; only documented exceptions (invalid_argument
-// for rejected input, runtime_error for an undefined normal); finite output
-// and conserved linear momentum for in-range scenes of dynamic bodies;
+// for rejected input, runtime_error for an undefined normal, overflow_error
+// only outside the promised ranges and with the bodies left as they were);
+// finite output always; conserved linear momentum for in-range scenes of
+// dynamic bodies;
 // an exact fallback leaves the bodies untouched.
 #include <fuzzer/FuzzedDataProvider.h>
 
@@ -183,6 +185,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Vec2 offset = in.ConsumeBool() ? Vec2{kFarOffset, -kFarOffset} : Vec2{};
   const double speed = std::pow(10.0, in.ConsumeIntegralInRange(-2, 4));
   std::vector<Body> bodies;
+  std::vector<Body> bodies_before;
+  bool check = false;
   try
   {
     const ContactSolver solver(draw.range(0.0, 1.0), draw.range(0.0, 2.0),
@@ -193,14 +197,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
       bodies.push_back(make_body(draw, scale, offset, speed));
     }
-    const bool check = !draw.used_raw() && fuzz::in_range(bodies);
+    check = !draw.used_raw() && fuzz::in_range(bodies);
+    bodies_before = bodies;
     double p_scale = 0.0;
     const Vec2 p_before = momentum(bodies, p_scale);
     double impulse_scale = 0.0;
     const SolveReport report = run(mode, solver, bodies, impulse_scale);
+    // No entry point hands back a non-finite body: they throw instead.
+    fuzz::require_finite(bodies, "solve gave a non-finite body");
     if (check)
     {
-      fuzz::require_finite(bodies, "in-range solve gave a non-finite body");
       fuzz::require(std::isfinite(report.max_residual) && std::isfinite(report.total_normal_impulse),
                     "in-range solve gave a non-finite report");
       const Vec2 p_after = momentum(bodies, p_scale);
@@ -214,6 +220,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   catch (const std::invalid_argument&)
   {
     return 0;  // rejected input (raw fields, degenerate outlines, NaN settings)
+  }
+  catch (const std::overflow_error&)
+  {
+    fuzz::require(!check, "in-range solve overflowed");
+    // resolve() and step() are all-or-nothing.
+    fuzz::require(mode == Mode::SolveAndCorrect || fuzz::same_state(bodies_before, bodies),
+                  "an overflowed solve changed the bodies");
+    return 0;
   }
   catch (const std::runtime_error&)
   {

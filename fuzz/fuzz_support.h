@@ -3,8 +3,9 @@
 // that turn a broken promise into a crash libFuzzer reports.
 //
 // Outside those ranges (a speed of 1e300, a dt of 1e300) a finite input can
-// legitimately overflow to inf within a step; there the targets still run
-// every call under ASan/UBSan but do not require finite output.
+// legitimately overflow within a step; the core must then throw
+// std::overflow_error instead of handing back inf or NaN, which the targets
+// check everywhere; inside the ranges it must not overflow at all.
 #pragma once
 
 #include <cmath>
@@ -72,6 +73,24 @@ inline bool finite_state(const Body& b)
 {
   return is_finite(b.position()) && is_finite(b.velocity()) && std::isfinite(b.theta()) &&
          std::isfinite(b.omega());
+}
+
+/// Poses and velocities bit for bit equal (an all-or-nothing call that threw).
+inline bool same_state(const std::vector<Body>& a, const std::vector<Body>& b)
+{
+  if (a.size() != b.size())
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    if (!(a[i].position() == b[i].position() && a[i].theta() == b[i].theta() &&
+          a[i].velocity() == b[i].velocity() && a[i].omega() == b[i].omega()))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 inline void require_finite(const std::vector<Body>& bodies, const char* what)

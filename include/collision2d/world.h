@@ -229,7 +229,11 @@ public:
   /// Throws std::invalid_argument naming the field for an out-of-range setting.
   static void validate(const WorldSettings& settings);
 
-  /// Advances `frames` frames of settings().dt. Never produces NaN from finite input.
+  /// Advances `frames` frames of settings().dt. Never returns a NaN or inf
+  /// state from finite input: a frame that overflows (speeds, sizes or masses
+  /// far beyond the README's supported ranges) throws std::overflow_error
+  /// naming the body. The world is then mid-frame and should be discarded;
+  /// callers that must keep their world step a copy (the ROS node does).
   StepReport step(int frames = 1);
   /// Contact points of the last substep with their impulses (pairs of a
   /// sleeping island keep the values they had when it fell asleep).
@@ -287,6 +291,8 @@ private:
   bool sleeping_wanted() const;
   // world_step.cpp
   void step_frame(StepReport& report);
+  /// Throws std::overflow_error naming the first body whose state is not finite.
+  void require_finite_state() const;
   void substep(FrameEffects& effects, double h, bool first, bool warm, StepReport& report);
   void integrate(FrameEffects& effects, double h, StepReport& report);
   // world_toi.cpp

@@ -86,6 +86,15 @@ void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>&
 
 void store_velocities(const std::vector<BodyVelocity>& state, std::vector<Body>& bodies)
 {
+  // Checked before anything is written, so an overflow leaves the bodies as
+  // they came in.
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    if (state[i].inv_mass > 0.0 && !(is_finite(state[i].v) && std::isfinite(state[i].omega)))
+      throw std::overflow_error("body " + std::to_string(i) +
+                                ": the solve overflowed to a non-finite velocity (the input's sizes, speeds or "
+                                "masses lie beyond what double precision can resolve)");
+  }
   for (std::size_t i = 0; i < bodies.size(); ++i)
   {
     if (state[i].inv_mass <= 0.0)

@@ -64,10 +64,30 @@ void validate_contact(const Contact& c, std::size_t index, std::size_t body_coun
 /// world substep), so each ContactSolver entry point checks its input here.
 void validate_bodies(const std::vector<Body>& bodies);
 
+/// Runs `stages` (several stages that each change the bodies) as one: when a
+/// stage throws, the bodies are put back as they came in and the exception
+/// goes on. The copy is one allocation per call, never per contact.
+template <typename Stages>
+auto all_or_nothing(std::vector<Body>& bodies, Stages stages) -> decltype(stages())
+{
+  const std::vector<Body> before = bodies;
+  try
+  {
+    return stages();
+  }
+  catch (...)
+  {
+    bodies = before;
+    throw;
+  }
+}
+
 /// Copies the bodies' velocities and inverse masses into `state`.
 void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>& state);
 /// Writes the solved velocities back to the dynamic bodies; static and
-/// kinematic bodies keep theirs untouched.
+/// kinematic bodies keep theirs untouched. Throws std::overflow_error naming
+/// the body, and writes nothing, when a solved velocity is not finite (finite
+/// input far beyond the supported ranges can overflow).
 void store_velocities(const std::vector<BodyVelocity>& state, std::vector<Body>& bodies);
 /// Sum of the bodies' kinetic energies (J).
 double total_kinetic_energy(const std::vector<Body>& bodies);

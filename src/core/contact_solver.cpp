@@ -85,10 +85,12 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
 
 SolveReport ContactSolver::resolve(std::vector<Body>& bodies) const
 {
-  const std::vector<Contact> contacts = detect_contacts(bodies);
-  const SolveReport report = solve(bodies, contacts);
-  correct_positions(bodies, contacts);
-  return report;
+  return detail::all_or_nothing(bodies, [&] {
+    const std::vector<Contact> contacts = detect_contacts(bodies);
+    const SolveReport report = solve(bodies, contacts);
+    correct_positions(bodies, contacts);
+    return report;
+  });
 }
 
 }  // namespace collision2d

@@ -57,18 +57,20 @@ double ContactSolver::time_of_impact(const std::vector<Body>& bodies)
 
 SolveReport ContactSolver::step(std::vector<Body>& bodies) const
 {
-  const double t = time_of_impact(bodies);
-  for (Body& body : bodies)
-  {
-    body.set_position(body.position() + t * body.velocity());
-  }
-  // The impacting pair touches exactly at t, which strict detection would
-  // miss: count pairs within the touch tolerance as contacts.
-  const std::vector<Contact> contacts = detect_contacts(bodies, kRelativeTouchTolerance);
-  SolveReport report = solve(bodies, contacts);
-  correct_positions(bodies, contacts);
-  report.time_of_impact = t;
-  return report;
+  return detail::all_or_nothing(bodies, [&] {
+    const double t = time_of_impact(bodies);
+    for (Body& body : bodies)
+    {
+      body.set_position(body.position() + t * body.velocity());
+    }
+    // The impacting pair touches exactly at t, which strict detection would
+    // miss: count pairs within the touch tolerance as contacts.
+    const std::vector<Contact> contacts = detect_contacts(bodies, kRelativeTouchTolerance);
+    SolveReport report = solve(bodies, contacts);
+    correct_positions(bodies, contacts);
+    report.time_of_impact = t;
+    return report;
+  });
 }
 
 }  // namespace collision2d

@@ -2,6 +2,8 @@
 // the penetration without touching velocities (so it adds no energy).
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 #include "collision2d/contact_solver.h"
 #include "contact_rows.h"
@@ -22,6 +24,21 @@ std::size_t deepest(const std::vector<Contact>& contacts, const std::vector<std:
       best = order[k];
   return best;
 }
+/// Throws std::overflow_error naming the first body whose corrected position
+/// is not finite, after putting every body back where it was.
+void restore_if_overflowed(std::vector<Body>& bodies, const std::vector<Vec2>& positions_before)
+{
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    if (is_finite(bodies[i].position()))
+      continue;
+    for (std::size_t j = 0; j < bodies.size(); ++j)
+      bodies[j].set_position(positions_before[j]);
+    throw std::overflow_error("body " + std::to_string(i) +
+                              ": position correction overflowed to a non-finite position (the input's depths "
+                              "lie beyond what double precision can resolve)");
+  }
+}
 }  // namespace
 
 void ContactSolver::correct_positions(std::vector<Body>& bodies, const std::vector<Contact>& contacts) const
@@ -39,6 +56,12 @@ void ContactSolver::correct_positions(std::vector<Body>& bodies, const std::vect
     const Contact& cr = contacts[r];
     return cl.a != cr.a ? cl.a < cr.a : (cl.b != cr.b ? cl.b < cr.b : l < r);
   });
+
+  // Kept so an overflow (finite depths far beyond the supported ranges) can
+  // be undone: the bodies are then left exactly as they came in.
+  std::vector<Vec2> positions_before(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    positions_before[i] = bodies[i].position();
 
   for (std::size_t begin = 0; begin < order.size();)
   {
@@ -63,6 +86,7 @@ void ContactSolver::correct_positions(std::vector<Body>& bodies, const std::vect
     if (w_b > 0.0)
       b.set_position(b.position() + (w_b / w_sum * move) * c.normal);
   }
+  restore_if_overflowed(bodies, positions_before);
 }
 
 }  // namespace collision2d

@@ -9,6 +9,7 @@
 // digits far from the origin (large |p|, small h) and would turn a time-of-
 // impact clamp (a shortened move) into a spurious loss of speed.
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -29,6 +30,7 @@ StepReport World::step(int frames)
   for (int f = 0; f < frames; ++f)
   {
     step_frame(report);
+    require_finite_state();
   }
   report.max_penetration = measure_penetration();
   for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -40,6 +42,22 @@ StepReport World::step(int frames)
     report.sleeping_bodies += asleep_[i] ? 1 : 0;
   }
   return report;
+}
+
+void World::require_finite_state() const
+{
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    const Body& b = bodies_[i];
+    if (is_finite(b.position()) && std::isfinite(b.theta()) && is_finite(b.velocity()) && std::isfinite(b.omega()))
+    {
+      continue;
+    }
+    std::ostringstream msg;
+    msg << "step: body " << ids_[i] << " overflowed to a non-finite state in frame " << frame_count_
+        << " (its speed, size or mass lies far beyond the supported ranges)";
+    throw std::overflow_error(msg.str());
+  }
 }
 
 void World::step_frame(StepReport& report)

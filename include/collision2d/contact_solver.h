@@ -26,6 +26,11 @@ struct SolveReport
   bool exact_fallback = false;           ///< exact mode: pivoting failed, iterative result used
 };
 
+/// Every entry point rejects non-finite bodies or contacts with
+/// std::invalid_argument naming the body or contact. Finite input far beyond
+/// the README's supported ranges can overflow mid-solve: the call then throws
+/// std::overflow_error naming the body and leaves the bodies as they came in
+/// (solve, correct_positions, resolve and step are each all-or-nothing).
 class ContactSolver
 {
 public:

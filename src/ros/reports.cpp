@@ -85,6 +85,8 @@ StepSummary step_summary_to_msg(const StepReport& report, const Totals& before, 
   msg.swept_bodies = static_cast<std::uint32_t>(report.swept_bodies);
   msg.toi_clamps = static_cast<std::uint32_t>(report.toi_clamps);
   msg.sleeping_bodies = static_cast<std::uint32_t>(report.sleeping_bodies);
+  msg.exact_islands = static_cast<std::uint32_t>(report.exact_islands);
+  msg.exact_fallbacks = static_cast<std::uint32_t>(report.exact_fallbacks);
   fill_totals(msg, before, after);
   msg.active = effects_to_msg(report.active);
   return msg;

@@ -368,7 +368,31 @@ TEST_F(WorldServices, ExactSolverCarriesAMillionToOneStack)
     ASSERT_TRUE(ground != nullptr && ground->type == BodyMsg::STATIC);
     EXPECT_LT(vertical_extent(*ground).high - vertical_extent(*light).low, allowed)
         << "the light box sank into the ground";
+    // The report shows the islands were pivoted, none left to the passes.
+    EXPECT_GT(response.report.exact_islands, 0u);
+    EXPECT_EQ(response.report.exact_fallbacks, 0u);
   }
+}
+
+TEST_F(WorldServices, OverflowingStepIsRefusedAndTheWorldKept)
+{
+  // Gravity 1e308 m/s^2 with one-second frames: the second frame's velocity
+  // passes the largest double. Finite, so validation lets it through; the
+  // step must refuse instead of publishing inf, and keep the world.
+  SetWorld::Request request;
+  request.bodies = before_.bodies;
+  request.settings = before_.settings;
+  request.settings.gravity.y = -1e308;
+  request.settings.dt = 1.0;
+  const SetWorld set = call<SetWorld>("set_world", request);
+  ASSERT_TRUE(set.response.success) << set.response.message;
+  before_ = get_world();
+
+  StepWorld::Request step_request;
+  step_request.frames = 3;
+  const StepWorld stepped = call<StepWorld>("step_world", step_request);
+  expect_rejected(stepped.response, "overflowed to a non-finite state");
+  EXPECT_TRUE(contains(stepped.response.message, "step failed")) << stepped.response.message;
 }
 
 TEST_F(WorldServices, NonFiniteNumbers)

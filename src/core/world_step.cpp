@@ -7,7 +7,10 @@
 // equals the velocity integrated in step 1. We therefore keep that integrated
 // velocity instead of recomputing the difference quotient, which would lose
 // digits far from the origin (large |p|, small h) and would turn a time-of-
-// impact clamp (a shortened move) into a spurious loss of speed.
+// impact clamp (a shortened move) into a spurious loss of speed. With
+// WorldSettings::warm_start_before_integration the pose is advanced with a
+// predicted velocity (world_warm_integration.cpp), so that identity then no
+// longer holds.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -91,8 +94,18 @@ void World::step_frame(StepReport& report)
 
 void World::substep(FrameEffects& effects, double h, bool first, bool warm, StepReport& report)
 {
-  integrate(effects, h, report);
+  kick(h);
+  const bool predict = warm && settings_.warm_start_before_integration;
+  if (predict)
+  {
+    predict_velocities(h, effects.flags.friction);
+  }
+  advance(effects, h, report);
   detect(effects.flags, warm, h, report);
+  if (predict)
+  {
+    restore_velocities();
+  }
   prepare_rows(effects.flags);
   if (effects.flags.position_correction)
   {
@@ -117,7 +130,7 @@ void World::substep(FrameEffects& effects, double h, bool first, bool warm, Step
   report.contact_count = rows_.size();
 }
 
-void World::integrate(FrameEffects& effects, double h, StepReport& report)
+void World::kick(double h)
 {
   const Vec2 gravity_kick = settings_.gravity * h;
   prev_position_.resize(bodies_.size());
@@ -131,6 +144,10 @@ void World::integrate(FrameEffects& effects, double h, StepReport& report)
       bodies_[i].set_velocity(bodies_[i].velocity() + gravity_kick);
     }
   }
+}
+
+void World::advance(FrameEffects& effects, double h, StepReport& report)
+{
   const bool swept = sweep(h, report);
   effects.flags.time_of_impact = effects.flags.time_of_impact || swept;
   for (std::size_t i = 0; i < bodies_.size(); ++i)

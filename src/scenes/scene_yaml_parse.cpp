@@ -99,6 +99,7 @@ WorldSettings read_settings(const YAML::Node& node, const std::string& source, W
   {
     f.fail_at("warm_start_factor", "must be in [0, 1]");
   }
+  s.warm_start_before_integration = read_flag(f, "warm_start_before_integration", s.warm_start_before_integration);
   s.toi_displacement_fraction = f.positive("toi_displacement_fraction", s.toi_displacement_fraction);
   s.sleep_linear_speed = f.non_negative("sleep_linear_speed", s.sleep_linear_speed);
   s.sleep_angular_speed = f.non_negative("sleep_angular_speed", s.sleep_angular_speed);

@@ -131,6 +131,7 @@ void write_settings(std::ostream& out, const WorldSettings& s)
   out << "  warm_starting: " << toggle_name(s.warm_starting) << "\n";
   out << "  sleeping: " << toggle_name(s.sleeping) << "\n";
   out << "  warm_start_factor: " << format_number(s.warm_start_factor) << "\n";
+  out << "  warm_start_before_integration: " << flag_name(s.warm_start_before_integration) << "\n";
   out << "  toi_displacement_fraction: " << format_number(s.toi_displacement_fraction) << "\n";
   out << "  sleep_linear_speed: " << format_number(s.sleep_linear_speed) << "\n";
   out << "  sleep_angular_speed: " << format_number(s.sleep_angular_speed) << "\n";

@@ -20,6 +20,9 @@ constexpr int kPrecisePositionIterations = 16;
 constexpr double kPreciseSlop = 1e-5;  // m
 constexpr double kQuickStandSeconds = 20.0;  // s
 constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an exact failure falls back to
+// The second setting warm_start_before_integration is swept at (see add_warm_before_integration).
+constexpr int kWarmIntegrationSubsteps = 8;
+constexpr int kWarmIntegrationIterations = 4;
 
 /// SFINAE: true when WorldSettings has a `solver_mode` field (issue 6 adds
 /// it); the benchmark then sweeps it without needing a code change.
@@ -134,6 +137,23 @@ void add_slop(const WorldSettings& base, const std::vector<double>& values, std:
   }
 }
 
+/// Poses advanced with predicted velocities, on and off, at the scene's
+/// setting and at 8x4 (where its gain on stacks shows without its 4x2
+/// failure on the pyramid).
+void add_warm_before_integration(const WorldSettings& base, std::vector<RunSpec>& runs)
+{
+  for (const WorldSettings& steps : {base, with_steps(base, kWarmIntegrationSubsteps, kWarmIntegrationIterations)})
+  {
+    for (bool on : {false, true})
+    {
+      WorldSettings s = steps;
+      s.warm_start_before_integration = on;
+      runs.push_back(RunSpec{"warm_before_integration",
+                             steps_text(s.substeps, s.velocity_iterations) + (on ? " on" : " off"), ours(s)});
+    }
+  }
+}
+
 void add_modes(const WorldSettings& base, std::vector<RunSpec>& runs)
 {
   for (SolverMode mode : {SolverMode::Iterative, SolverMode::Exact})
@@ -218,6 +238,7 @@ std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick)
   {
     add_slop(base, {1e-4, 1e-2}, runs);
     add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
+    add_warm_before_integration(base, runs);
     if (!quick)
     {
       add_grid(base, {1, 2, 8}, {1, 8}, runs);
@@ -265,6 +286,15 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   {
     RunSpec run{"stand", steps_text(point.first, point.second),
                 ours(with_steps(scene.scene.settings, point.first, point.second))};
+    run.seconds = seconds;
+    runs.push_back(run);
+  }
+  // The same stacks with the poses advanced by predicted velocities.
+  for (const auto& point : std::vector<std::pair<int, int>>{{4, 2}, {8, 4}})
+  {
+    WorldSettings s = with_steps(scene.scene.settings, point.first, point.second);
+    s.warm_start_before_integration = true;
+    RunSpec run{"stand", steps_text(point.first, point.second) + " warm before integration", ours(s)};
     run.seconds = seconds;
     runs.push_back(run);
   }

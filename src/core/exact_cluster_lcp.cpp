@@ -8,66 +8,12 @@ namespace detail
 {
 namespace
 {
-constexpr int kDofPerBody = 3;  // vx, vy, omega
-
-bool is_dynamic(const BodyVelocity& body) { return body.inv_mass > 0.0; }
-
-/// Gives each dynamic body of the cluster its block of jacobian columns;
-/// returns the number of such bodies.
-int number_cluster_bodies(const std::vector<ContactRow>& rows, ClusterRange cluster,
-                          const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
-{
-  int count = 0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    for (std::size_t body : {rows[r].a, rows[r].b})
-      if (is_dynamic(state[body]) && lcp.local_body[body] < 0)
-        lcp.local_body[body] = kDofPerBody * count++;
-  return count;
-}
-
-void forget_cluster_bodies(const std::vector<ContactRow>& rows, ClusterRange cluster, ClusterLcp& lcp)
-{
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-  {
-    lcp.local_body[rows[r].a] = -1;
-    lcp.local_body[rows[r].b] = -1;
-  }
-}
-
-/// Adds sign * (dir, r x dir) to jacobian row `row` at the body's columns.
-void add_jacobian_entry(ClusterLcp& lcp, Eigen::Index row, std::size_t body, double sign, Vec2 dir, Vec2 r)
-{
-  const int column = lcp.local_body[body];
-  if (column < 0)
-    return;  // static or kinematic: its velocity never changes
-  lcp.jacobian(row, column) = sign * dir.x;
-  lcp.jacobian(row, column + 1) = sign * dir.y;
-  lcp.jacobian(row, column + 2) = sign * cross(r, dir);
-}
-
-void fill_inverse_masses(const std::vector<ContactRow>& rows, ClusterRange cluster,
-                         const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
-{
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    for (std::size_t body : {rows[r].a, rows[r].b})
-    {
-      const int column = lcp.local_body[body];
-      if (column < 0)
-        continue;
-      lcp.body_inverse_mass(column) = state[body].inv_mass;
-      lcp.body_inverse_mass(column + 1) = state[body].inv_mass;
-      lcp.body_inverse_mass(column + 2) = state[body].inv_inertia;
-    }
-}
-
 /// G = J W J^T over the cluster's normal and tangent directions.
 void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster,
                        const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   const Eigen::Index contacts = static_cast<Eigen::Index>(cluster.end - cluster.begin);
-  const int bodies = number_cluster_bodies(rows, cluster, state, lcp);
-  lcp.jacobian.setZero(2 * contacts, kDofPerBody * bodies);
-  lcp.body_inverse_mass.resize(kDofPerBody * bodies);
+  begin_jacobian(rows, cluster, state, 2 * contacts, lcp);
   for (Eigen::Index i = 0; i < contacts; ++i)
   {
     const ContactRow& row = rows[cluster.begin + i];
@@ -76,9 +22,7 @@ void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster
     add_jacobian_entry(lcp, 2 * i + 1, row.b, 1.0, row.tangent, row.r_b);
     add_jacobian_entry(lcp, 2 * i + 1, row.a, -1.0, row.tangent, row.r_a);
   }
-  fill_inverse_masses(rows, cluster, state, lcp);
-  forget_cluster_bodies(rows, cluster, lcp);
-  lcp.delassus.noalias() = lcp.jacobian * lcp.body_inverse_mass.asDiagonal() * lcp.jacobian.transpose();
+  finish_jacobian(rows, cluster, lcp);
 }
 
 void assemble_frictionless(const std::vector<ContactRow>& rows, ClusterRange cluster,

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "cluster_jacobian.h"
 #include "contact_rows.h"
 
 namespace collision2d
@@ -22,14 +23,11 @@ namespace detail
 /// times sqrt(k_n), speeds over sqrt(k_n)): the scaled Delassus block stays
 /// positive semidefinite with unit diagonal, the friction coupling stays
 /// skew, and extreme mass ratios do not spread the entries over many decades.
-struct ClusterLcp
+/// The jacobian has rows n, t per contact.
+struct ClusterLcp : ClusterJacobian
 {
-  Eigen::MatrixXd jacobian;  ///< rows n, t per contact; 3 columns (vx, vy, w) per dynamic body
-  Eigen::VectorXd body_inverse_mass;  ///< diagonal of W matching the jacobian's columns
-  Eigen::MatrixXd delassus;           ///< J W J^T: velocity change per unit impulse
   Eigen::MatrixXd M;
   Eigen::VectorXd q;
-  std::vector<int> local_body;  ///< body index -> first jacobian column, -1 outside the cluster
 };
 
 /// Unknowns per contact: lambda_n alone without friction; with it also

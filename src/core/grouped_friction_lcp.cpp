@@ -9,8 +9,6 @@ namespace detail
 {
 namespace
 {
-constexpr int kDofPerBody = 3;  // vx, vy, omega
-
 /// A group slides only when its net friction |t+ - t-| reaches the cone to
 /// this relative precision. At a 1e6 mass ratio pivoting can return a
 /// sticking pair with t+ and t- both near half the cone and a sliding slack
@@ -49,58 +47,24 @@ void find_groups(const std::vector<ContactRow>& rows, ClusterRange cluster, Grou
   }
 }
 
-int number_bodies(const std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
-                  GroupedLcp& lcp)
-{
-  lcp.local_body.resize(state.size(), -1);
-  int count = 0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    for (std::size_t body : {rows[r].a, rows[r].b})
-      if (state[body].inv_mass > 0.0 && lcp.local_body[body] < 0)
-        lcp.local_body[body] = kDofPerBody * count++;
-  lcp.body_inverse_mass.resize(kDofPerBody * count);
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    for (std::size_t body : {rows[r].a, rows[r].b})
-      if (lcp.local_body[body] >= 0)
-        lcp.body_inverse_mass.segment<kDofPerBody>(lcp.local_body[body])
-            << state[body].inv_mass, state[body].inv_mass, state[body].inv_inertia;
-  return count;
-}
-
-void add_entry(GroupedLcp& lcp, Eigen::Index row, std::size_t body, double sign, Vec2 dir, Vec2 r)
-{
-  const int column = lcp.local_body[body];
-  if (column < 0)
-    return;  // static or kinematic: its velocity never changes
-  lcp.jacobian(row, column) = sign * dir.x;
-  lcp.jacobian(row, column + 1) = sign * dir.y;
-  lcp.jacobian(row, column + 2) = sign * cross(r, dir);
-}
-
 void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster,
                        const std::vector<BodyVelocity>& state, GroupedLcp& lcp, Layout layout)
 {
-  const int bodies = number_bodies(rows, cluster, state, lcp);
-  lcp.jacobian.setZero(layout.points + layout.groups, kDofPerBody * bodies);
+  begin_jacobian(rows, cluster, state, layout.points + layout.groups, lcp);
   for (Eigen::Index i = 0; i < layout.points; ++i)
   {
     const ContactRow& row = rows[cluster.begin + i];
-    add_entry(lcp, i, row.b, 1.0, row.normal, row.r_b);
-    add_entry(lcp, i, row.a, -1.0, row.normal, row.r_a);
+    add_jacobian_entry(lcp, i, row.b, 1.0, row.normal, row.r_b);
+    add_jacobian_entry(lcp, i, row.a, -1.0, row.normal, row.r_a);
   }
   for (Eigen::Index g = 0; g < layout.groups; ++g)
   {
     const FrictionGroup& group = lcp.groups[g];
     const ContactRow& row = rows[group.first];
-    add_entry(lcp, layout.points + g, row.b, 1.0, row.tangent, group.r_b);
-    add_entry(lcp, layout.points + g, row.a, -1.0, row.tangent, group.r_a);
+    add_jacobian_entry(lcp, layout.points + g, row.b, 1.0, row.tangent, group.r_b);
+    add_jacobian_entry(lcp, layout.points + g, row.a, -1.0, row.tangent, group.r_a);
   }
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-  {
-    lcp.local_body[rows[r].a] = -1;
-    lcp.local_body[rows[r].b] = -1;
-  }
-  lcp.delassus.noalias() = lcp.jacobian * lcp.body_inverse_mass.asDiagonal() * lcp.jacobian.transpose();
+  finish_jacobian(rows, cluster, lcp);
 }
 
 /// Unscaled M and q; beta couples with +1 into the tangent rows and the cone

@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <vector>
 
+#include "cluster_jacobian.h"
 #include "contact_rows.h"
 #include "exact_cluster_lcp.h"
 
@@ -40,16 +41,13 @@ struct FrictionGroup
 /// lambda_t+ - lambda_t-. Impulses are scaled by the square root of their
 /// row's inverse effective mass and beta by its inverse (as in ClusterLcp),
 /// so the Delassus part has unit diagonal whatever the masses.
-struct GroupedLcp
+/// The jacobian has the point normal rows, then the group tangent rows.
+struct GroupedLcp : ClusterJacobian
 {
   std::vector<FrictionGroup> groups;
-  Eigen::MatrixXd jacobian;  ///< point normal rows, then group tangent rows
-  Eigen::VectorXd body_inverse_mass;
-  Eigen::MatrixXd delassus;
   Eigen::VectorXd scale;  ///< per unknown: impulse = scale * z (beta: speed = scale * z)
   Eigen::MatrixXd M;
   Eigen::VectorXd q;
-  std::vector<int> local_body;  ///< body index -> first jacobian column, -1 outside
 };
 
 /// Unknowns of the cluster's grouped LCP: one per point, three per body pair.

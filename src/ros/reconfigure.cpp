@@ -34,6 +34,7 @@ WorldSettings world_settings_from_config(const Collision2dConfig& config, const 
   msg.position_iterations = config.world_position_iterations;
   msg.position_block = config.world_position_block;
   msg.exact_position_correction = config.world_exact_position_correction;
+  msg.warm_start_before_integration = config.world_warm_start_before_integration;
   msg.slop = config.world_slop;
   msg.compliance = config.world_compliance;
   msg.restitution_threshold = config.world_restitution_threshold;
@@ -64,6 +65,7 @@ void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& 
   config.world_position_iterations = msg.position_iterations;
   config.world_position_block = msg.position_block;
   config.world_exact_position_correction = msg.exact_position_correction;
+  config.world_warm_start_before_integration = msg.warm_start_before_integration;
   config.world_slop = msg.slop;
   config.world_compliance = msg.compliance;
   config.world_restitution_threshold = msg.restitution_threshold;

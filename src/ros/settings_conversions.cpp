@@ -120,6 +120,7 @@ WorldSettings world_settings_from_msg(const WorldConfig& msg)
   settings.position_iterations = msg.position_iterations;
   settings.position_block = msg.position_block;
   settings.exact_position_correction = msg.exact_position_correction;
+  settings.warm_start_before_integration = msg.warm_start_before_integration;
   settings.rotation = toggle_from_msg(msg.rotation, "rotation");
   settings.friction = toggle_from_msg(msg.friction, "friction");
   settings.restitution = toggle_from_msg(msg.restitution, "restitution");
@@ -161,6 +162,7 @@ WorldConfig world_settings_to_msg(const WorldSettings& settings)
   msg.position_iterations = settings.position_iterations;
   msg.position_block = settings.position_block;
   msg.exact_position_correction = settings.exact_position_correction;
+  msg.warm_start_before_integration = settings.warm_start_before_integration;
   msg.rotation = toggle_to_msg(settings.rotation);
   msg.friction = toggle_to_msg(settings.friction);
   msg.restitution = toggle_to_msg(settings.restitution);

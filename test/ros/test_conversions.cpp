@@ -370,16 +370,19 @@ TEST(WorldSettingsMsg, SolverFieldsRoundTrip)
   settings.position_iterations = WorldSettings().position_iterations + 3;
   settings.position_block = !WorldSettings().position_block;
   settings.exact_position_correction = !WorldSettings().exact_position_correction;
+  settings.warm_start_before_integration = !WorldSettings().warm_start_before_integration;
   const WorldConfig msg = world_settings_to_msg(settings);
   EXPECT_EQ(msg.solver_mode, WorldConfig::SOLVER_EXACT);
   EXPECT_EQ(msg.position_iterations, settings.position_iterations);
   EXPECT_EQ(msg.position_block, settings.position_block);
   EXPECT_EQ(msg.exact_position_correction, settings.exact_position_correction);
+  EXPECT_EQ(msg.warm_start_before_integration, settings.warm_start_before_integration);
   const WorldSettings back = world_settings_from_msg(msg);
   EXPECT_EQ(back.solver_mode, SolverMode::Exact);
   EXPECT_EQ(back.position_iterations, settings.position_iterations);
   EXPECT_EQ(back.position_block, settings.position_block);
   EXPECT_EQ(back.exact_position_correction, settings.exact_position_correction);
+  EXPECT_EQ(back.warm_start_before_integration, settings.warm_start_before_integration);
   // And back to iterative: the message's default value is not a fixed point.
   settings.solver_mode = SolverMode::Iterative;
   EXPECT_EQ(world_settings_to_msg(settings).solver_mode, WorldConfig::SOLVER_ITERATIVE);
@@ -408,6 +411,7 @@ TEST(WorldReconfigure, DefaultsAreTheWorldDefaults)
   base.position_iterations = 1;
   base.position_block = true;
   base.exact_position_correction = false;
+  base.warm_start_before_integration = true;
   const WorldSettings from_defaults = world_settings_from_config(Collision2dConfig::__getDefault__(), base);
   EXPECT_EQ(world_settings_to_msg(from_defaults), world_settings_to_msg(WorldSettings()));
 }
@@ -419,12 +423,14 @@ TEST(WorldReconfigure, SolverFieldsReachTheWorldAndShowInTheConfig)
   settings.position_iterations = 9;
   settings.position_block = true;
   settings.exact_position_correction = false;
+  settings.warm_start_before_integration = true;
   Collision2dConfig config = Collision2dConfig::__getDefault__();
   world_settings_to_config(settings, config);
   EXPECT_EQ(config.world_solver_mode, static_cast<int>(WorldConfig::SOLVER_EXACT));
   EXPECT_EQ(config.world_position_iterations, 9);
   EXPECT_TRUE(config.world_position_block);
   EXPECT_FALSE(config.world_exact_position_correction);
+  EXPECT_TRUE(config.world_warm_start_before_integration);
   const WorldSettings back = world_settings_from_config(config, WorldSettings());
   EXPECT_EQ(world_settings_to_msg(back), world_settings_to_msg(settings));
   config.world_solver_mode = 3;

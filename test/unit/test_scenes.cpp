@@ -140,6 +140,7 @@ void expect_same_settings(const WorldSettings& a, const WorldSettings& b)
   EXPECT_EQ(a.position_block, b.position_block);
   EXPECT_EQ(a.solver_mode, b.solver_mode);
   EXPECT_EQ(a.exact_position_correction, b.exact_position_correction);
+  EXPECT_EQ(a.warm_start_before_integration, b.warm_start_before_integration);
 }
 
 void expect_same_scene(const Scene& a, const Scene& b, double vertex_tolerance = 0.0)
@@ -423,6 +424,7 @@ TEST(SceneFiles, SaveThenLoadKeepsEverySettingTypeAndAwkwardNumber)
   s.position_block = !WorldSettings().position_block;
   s.solver_mode = SolverMode::Exact;
   s.exact_position_correction = false;
+  s.warm_start_before_integration = !WorldSettings().warm_start_before_integration;
   Body disk(0.7, 0.123456789, {1e-300, -2.0 / 7.0}, {1.0 / 3.0, 0.0}, -4.5);
   disk.set_theta(1.0 / 9.0);
   scene.bodies.push_back(SceneBody{disk, Material{0.3, 0.2, 0.1}, "disk: with colon"});

@@ -43,6 +43,8 @@ private:
     std::size_t box;
   };
 
+  /// Origin of the cell indices every call, cell size every few calls.
+  void place_grid(const std::vector<Aabb>& boxes);
   void choose_cell_size(const std::vector<Aabb>& boxes);
   CellRange cells_of(const Aabb& box) const;
   void classify(const std::vector<Aabb>& boxes);
@@ -59,10 +61,15 @@ private:
 
   // Grid geometry of the current call.
   double cell_ = 1.0;
+  double inv_cell_ = 1.0;
   double origin_x_ = 0.0;
   double origin_y_ = 0.0;
   CellRange occupied_{0, 0, -1, -1};  // bounding range of the grid boxes' cells
   std::size_t bucket_mask_ = 0;
+
+  // When the cell size was chosen.
+  std::size_t calls_since_cell_ = 0;  // calls left before it is chosen again
+  std::size_t cell_box_count_ = 0;    // number of boxes it was chosen for
 
   // Scratch kept between calls.
   std::vector<double> extents_;          // box sizes, for the percentile
@@ -71,6 +78,7 @@ private:
   std::vector<std::size_t> large_;       // boxes too large for the grid
   std::vector<std::size_t> bucket_start_;
   std::vector<Entry> entries_;
+  std::vector<std::size_t> entry_bucket_;  // bucket of each entry, in fill order
   std::vector<std::size_t> pair_start_;
   std::vector<BodyPair> sorted_pairs_;
 };

@@ -35,6 +35,11 @@ constexpr std::int32_t kMaxCellsPerSide = 4;
 constexpr double kCellIndexLimit = 536870912.0;  // 2^29 cells
 /// Cell size when the boxes are points spread over nothing (all identical).
 constexpr double kFallbackCell = 1.0;  // m
+/// Calls between two choices of the cell size. The cell only sets the cost
+/// of a call, never its pairs, and box sizes barely change between substeps,
+/// so the percentile (a selection over every box) is not redone each call;
+/// a change in the number of boxes redoes it at once.
+constexpr std::size_t kCellRefreshCalls = 16;
 
 bool is_usable(const Aabb& box)
 {
@@ -42,12 +47,15 @@ bool is_usable(const Aabb& box)
          std::isfinite(box.hi.y) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y;
 }
 
-std::int32_t cell_index(double v, double origin, double cell)
+std::int32_t cell_index(double v, double origin, double inv_cell)
 {
-  // v - origin may overflow to +inf for huge finite coordinates: the clamp
-  // takes it back into range.
-  const double c = std::floor((v - origin) / cell);
-  return static_cast<std::int32_t>(std::clamp(c, -kCellIndexLimit, kCellIndexLimit));
+  // The origin is the lowest corner, so v - origin >= 0 and truncation is
+  // the floor (std::floor is a library call on baseline x86-64). It may
+  // overflow to +inf for huge finite coordinates: the clamp takes it back
+  // into range. Multiplying by the inverse cell is as monotone in v as
+  // dividing, which is all that keeps overlapping boxes in a shared cell.
+  const double c = (v - origin) * inv_cell;
+  return static_cast<std::int32_t>(std::clamp(c, 0.0, kCellIndexLimit));
 }
 
 bool positive_finite(double v)
@@ -60,7 +68,7 @@ bool positive_finite(double v)
 void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
 {
   pairs.clear();
-  choose_cell_size(boxes);
+  place_grid(boxes);
   classify(boxes);
   fill_grid();
   pairs_in_grid(boxes, pairs);
@@ -68,14 +76,39 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair
   sort_pairs(boxes.size(), pairs);
 }
 
+void BroadPhase::place_grid(const std::vector<Aabb>& boxes)
+{
+  // Cell indices are taken from the lowest corner so that scenes far from the
+  // world origin keep their precision.
+  bool any = false;
+  double lo_x = 0.0;
+  double lo_y = 0.0;
+  for (const Aabb& box : boxes)
+  {
+    if (!is_usable(box))
+    {
+      continue;
+    }
+    lo_x = any ? std::min(lo_x, box.lo.x) : box.lo.x;
+    lo_y = any ? std::min(lo_y, box.lo.y) : box.lo.y;
+    any = true;
+  }
+  origin_x_ = lo_x;
+  origin_y_ = lo_y;
+  if (calls_since_cell_ == 0 || boxes.size() != cell_box_count_)
+  {
+    choose_cell_size(boxes);
+    cell_box_count_ = boxes.size();
+    calls_since_cell_ = kCellRefreshCalls;
+  }
+  --calls_since_cell_;
+  inv_cell_ = 1.0 / cell_;
+}
+
 void BroadPhase::choose_cell_size(const std::vector<Aabb>& boxes)
 {
   extents_.clear();
-  // Cell indices are taken from the lowest corner so that scenes far from the
-  // world origin keep their precision.
-  double lo_x = 0.0;
-  double lo_y = 0.0;
-  double top_lo_x = 0.0;  // highest low corner: with lo_x, the spread of boxes
+  double top_lo_x = 0.0;  // highest low corner: with the origin, the spread of boxes
   double top_lo_y = 0.0;
   for (const Aabb& box : boxes)
   {
@@ -84,14 +117,10 @@ void BroadPhase::choose_cell_size(const std::vector<Aabb>& boxes)
       continue;
     }
     const bool first = extents_.empty();
-    lo_x = first ? box.lo.x : std::min(lo_x, box.lo.x);
-    lo_y = first ? box.lo.y : std::min(lo_y, box.lo.y);
     top_lo_x = first ? box.lo.x : std::max(top_lo_x, box.lo.x);
     top_lo_y = first ? box.lo.y : std::max(top_lo_y, box.lo.y);
     extents_.push_back(std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y));
   }
-  origin_x_ = lo_x;
-  origin_y_ = lo_y;
   if (extents_.empty())
   {
     cell_ = kFallbackCell;
@@ -103,7 +132,7 @@ void BroadPhase::choose_cell_size(const std::vector<Aabb>& boxes)
   if (!positive_finite(cell_))
   {
     // Mostly points: one cell per body on average over the occupied square.
-    const double spread = std::max(top_lo_x - lo_x, top_lo_y - lo_y);
+    const double spread = std::max(top_lo_x - origin_x_, top_lo_y - origin_y_);
     cell_ = spread / std::sqrt(static_cast<double>(extents_.size()));
   }
   if (!positive_finite(cell_))
@@ -114,8 +143,8 @@ void BroadPhase::choose_cell_size(const std::vector<Aabb>& boxes)
 
 BroadPhase::CellRange BroadPhase::cells_of(const Aabb& box) const
 {
-  return {cell_index(box.lo.x, origin_x_, cell_), cell_index(box.lo.y, origin_y_, cell_),
-          cell_index(box.hi.x, origin_x_, cell_), cell_index(box.hi.y, origin_y_, cell_)};
+  return {cell_index(box.lo.x, origin_x_, inv_cell_), cell_index(box.lo.y, origin_y_, inv_cell_),
+          cell_index(box.hi.x, origin_x_, inv_cell_), cell_index(box.hi.y, origin_y_, inv_cell_)};
 }
 
 void BroadPhase::classify(const std::vector<Aabb>& boxes)
@@ -187,7 +216,8 @@ void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs)
     std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
               sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i + 1]));
   }
-  pairs.assign(sorted_pairs_.begin(), sorted_pairs_.end());
+  // Swapping hands the sorted buffer out and keeps the old one as scratch.
+  pairs.swap(sorted_pairs_);
 }
 
 }  // namespace collision2d

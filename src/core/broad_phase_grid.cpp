@@ -66,6 +66,10 @@ void BroadPhase::fill_grid()
   const std::size_t bucket_count = power_of_two_at_least(std::max<std::size_t>(entry_count, 1));
   bucket_mask_ = bucket_count - 1;
   bucket_start_.assign(bucket_count + 1, 0);
+  // Each entry's bucket is hashed once, while counting, and read back in
+  // the same order while scattering.
+  entry_bucket_.resize(entry_count);
+  std::size_t e = 0;
   for (std::size_t box : grid_boxes_)
   {
     const CellRange& r = ranges_[box];
@@ -73,7 +77,9 @@ void BroadPhase::fill_grid()
     {
       for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
       {
-        ++bucket_start_[bucket_of(cx, cy)];
+        const std::size_t bucket = bucket_of(cx, cy);
+        entry_bucket_[e++] = bucket;
+        ++bucket_start_[bucket];
       }
     }
   }
@@ -84,6 +90,7 @@ void BroadPhase::fill_grid()
     start = end;  // one past the bucket's end, decremented while scattering
   }
   entries_.resize(entry_count);
+  e = 0;
   for (std::size_t box : grid_boxes_)
   {
     const CellRange& r = ranges_[box];
@@ -91,7 +98,7 @@ void BroadPhase::fill_grid()
     {
       for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
       {
-        entries_[--bucket_start_[bucket_of(cx, cy)]] = Entry{cx, cy, box};
+        entries_[--bucket_start_[entry_bucket_[e++]]] = Entry{cx, cy, box};
       }
     }
   }

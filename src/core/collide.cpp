@@ -64,6 +64,19 @@ std::uint32_t pack_feature(FeatureKind kind, bool second_is_reference, std::size
          (static_cast<std::uint32_t>(incident) & kIndexMask);
 }
 
+/// Body::world_vertex and Body::world_face_normal with the same arithmetic,
+/// but visible to the compiler here: the narrow phase asks for them per face
+/// and per vertex, where a call into body.cpp costs more than the rotation.
+Vec2 world_vertex_of(const Body& b, std::size_t i)
+{
+  return b.position() + rotate(b.local_vertices()[i], b.cos_theta(), b.sin_theta());
+}
+
+Vec2 world_normal_of(const Body& b, std::size_t i)
+{
+  return rotate(b.local_face_normals()[i], b.cos_theta(), b.sin_theta());
+}
+
 /// Strict overlap without a tolerance (exact touching is not a contact);
 /// with one, gaps up to the tolerance count.
 bool within_reach(double depth, double touch_tolerance)
@@ -196,10 +209,10 @@ FaceQuery max_face_separation(const Body& reference, const Body& other)
   const auto& other_vertices = other.local_vertices();
   for (std::size_t i = 0; i < reference.vertex_count(); ++i)
   {
-    const Vec2 n = reference.world_face_normal(i);
+    const Vec2 n = world_normal_of(reference, i);
     // Work in the other body's frame: one rotation per face, not per vertex.
     const Vec2 n_other = rotate_inv(n, other.cos_theta(), other.sin_theta());
-    const double offset = dot(n, other.position() - reference.world_vertex(i));
+    const double offset = dot(n, other.position() - world_vertex_of(reference, i));
     double deepest = std::numeric_limits<double>::infinity();
     for (const Vec2& v : other_vertices)
     {
@@ -263,13 +276,13 @@ int clip_segment(const ClipPoint in[2], int in_count, Vec2 dir, double limit, Cl
 void clip_incident_edge(const Body& reference, std::size_t face, const Body& incident, bool second_is_reference,
                         double touch_tolerance, Manifold& m)
 {
-  const Vec2 n = reference.world_face_normal(face);
+  const Vec2 n = world_normal_of(reference, face);
   const Vec2 tangent = perp(n);  // along the counter-clockwise reference face
-  const Vec2 r1 = reference.world_vertex(face);
-  const Vec2 r2 = reference.world_vertex((face + 1) % reference.vertex_count());
+  const Vec2 r1 = world_vertex_of(reference, face);
+  const Vec2 r2 = world_vertex_of(reference, (face + 1) % reference.vertex_count());
   const std::size_t edge = incident_edge(incident, n);
-  const ClipPoint segment[2] = {{incident.world_vertex(edge), 0},
-                                {incident.world_vertex((edge + 1) % incident.vertex_count()), 1}};
+  const ClipPoint segment[2] = {{world_vertex_of(incident, edge), 0},
+                                {world_vertex_of(incident, (edge + 1) % incident.vertex_count()), 1}};
   ClipPoint after_first[2];
   ClipPoint clipped[2];
   const int first_count = clip_segment(segment, 2, -tangent, -dot(tangent, r1), after_first);
@@ -298,18 +311,18 @@ void clip_incident_edge(const Body& reference, std::size_t face, const Body& inc
 void deepest_vertex_point(const Body& reference, std::size_t face, const Body& incident, bool second_is_reference,
                           double separation, Manifold& m)
 {
-  const Vec2 n = reference.world_face_normal(face);
-  const Vec2 r1 = reference.world_vertex(face);
+  const Vec2 n = world_normal_of(reference, face);
+  const Vec2 r1 = world_vertex_of(reference, face);
   std::size_t deepest = 0;
   for (std::size_t j = 1; j < incident.vertex_count(); ++j)
   {
-    if (dot(n, incident.world_vertex(j) - r1) < dot(n, incident.world_vertex(deepest) - r1))
+    if (dot(n, world_vertex_of(incident, j) - r1) < dot(n, world_vertex_of(incident, deepest) - r1))
     {
       deepest = j;
     }
   }
   m.normal = n;
-  add_point(m, incident.world_vertex(deepest) - n * (0.5 * separation), -separation,
+  add_point(m, world_vertex_of(incident, deepest) - n * (0.5 * separation), -separation,
             pack_feature(FeatureKind::PolygonPolygon, second_is_reference, face, deepest, 0));
 }
 

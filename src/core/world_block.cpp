@@ -141,14 +141,22 @@ bool World::solve_stick_pair(ContactRow& first, ContactRow& second)
   const Vec2 ra = 0.5 * (first.ra + second.ra);
   const Vec2 rb = 0.5 * (first.rb + second.rb);
   const BlockRow rows[3] = {{n, first.ra, first.rb}, {n, second.ra, second.rb}, {t, ra, rb}};
+  // Each row's lever terms once, not once per matrix entry.
+  double arm_a[3];
+  double arm_b[3];
+  for (int u = 0; u < 3; ++u)
+  {
+    arm_a[u] = cross(rows[u].ra, rows[u].direction);
+    arm_b[u] = cross(rows[u].rb, rows[u].direction);
+  }
+  const double inv_mass = first.inv_mass_a + first.inv_mass_b;
   double k[3][3];
   for (int u = 0; u < 3; ++u)
   {
     for (int v = 0; v < 3; ++v)
     {
-      k[u][v] = (first.inv_mass_a + first.inv_mass_b) * dot(rows[u].direction, rows[v].direction) +
-                first.inv_inertia_a * cross(rows[u].ra, rows[u].direction) * cross(rows[v].ra, rows[v].direction) +
-                first.inv_inertia_b * cross(rows[u].rb, rows[u].direction) * cross(rows[v].rb, rows[v].direction);
+      k[u][v] = inv_mass * dot(rows[u].direction, rows[v].direction) + first.inv_inertia_a * arm_a[u] * arm_a[v] +
+                first.inv_inertia_b * arm_b[u] * arm_b[v];
     }
   }
   const double rhs[3] = {first.target - dot(relative_velocity(first), n),

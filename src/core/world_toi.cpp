@@ -79,11 +79,12 @@ bool World::mark_swept_bodies(double h)
   bool any = false;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    if (bodies_[i].type() != BodyType::Dynamic || asleep_[i])
+    const Body& b = bodies_[i];
+    if (b.type() != BodyType::Dynamic || asleep_[i])
     {
       continue;
     }
-    const Vec2 d = substep_displacement(i, h);
+    const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
     const bool moving = d.x != 0.0 || d.y != 0.0;
     swept_[i] = mode == Toggle::On ? moving : is_fast(i, d);
     any = any || swept_[i];

@@ -49,6 +49,8 @@ private:
   CellRange cells_of(const Aabb& box) const;
   void classify(const std::vector<Aabb>& boxes);
   void fill_grid();
+  /// Dense or hashed bucket layout for this call; returns the bucket count.
+  std::size_t choose_layout(std::size_t entry_count);
   std::size_t bucket_of(std::int32_t cx, std::int32_t cy) const;
   bool owns(std::int32_t cx, std::int32_t cy, std::size_t a, std::size_t b) const;
 
@@ -65,7 +67,8 @@ private:
   double origin_x_ = 0.0;
   double origin_y_ = 0.0;
   CellRange occupied_{0, 0, -1, -1};  // bounding range of the grid boxes' cells
-  std::size_t bucket_mask_ = 0;
+  std::size_t bucket_mask_ = 0;        // hashed layout
+  std::int64_t dense_width_ = 0;       // dense layout: cells per row of the occupied range (0: hashed)
 
   // When the cell size was chosen.
   std::size_t calls_since_cell_ = 0;  // calls left before it is chosen again

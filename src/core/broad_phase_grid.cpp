@@ -4,7 +4,9 @@
 // into one flat array. No per-cell containers, so a warmed-up broad phase
 // allocates nothing, and a scene's extent does not matter (only occupied cells
 // cost anything). Distinct cells may share a bucket; entries carry their cell
-// so that only boxes of the same cell are compared.
+// so that only boxes of the same cell are compared. A scene that fills its
+// occupied range (a gas) gets one bucket per cell of that range instead: no
+// hashing, and fewer, never shared buckets.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +21,11 @@ namespace
 /// Buckets up to this size are compared all pairs; larger ones (a cluster in
 /// one cell) are sorted and swept along x.
 constexpr std::size_t kAllPairsBucket = 16;
+
+/// The grid is laid out densely (one bucket per cell of the occupied range,
+/// no hashing, no two cells sharing a bucket) when that range has at most
+/// this many cells per entry: a compact scene such as a gas fills its range.
+constexpr std::int64_t kDenseCellsPerEntry = 2;
 
 /// Multiplicative hash constants (odd, with well-mixed bits).
 constexpr std::uint64_t kHashX = 0x9E3779B97F4A7C15ull;
@@ -44,10 +51,32 @@ std::size_t power_of_two_at_least(std::size_t n)
 
 std::size_t BroadPhase::bucket_of(std::int32_t cx, std::int32_t cy) const
 {
+  if (dense_width_ > 0)
+  {
+    return static_cast<std::size_t>(static_cast<std::int64_t>(cy - occupied_.y0) * dense_width_ +
+                                    (cx - occupied_.x0));
+  }
   std::uint64_t h = static_cast<std::uint64_t>(static_cast<std::uint32_t>(cx)) * kHashX ^
                     static_cast<std::uint64_t>(static_cast<std::uint32_t>(cy)) * kHashY;
   h ^= h >> kHashFold;
   return static_cast<std::size_t>(h) & bucket_mask_;
+}
+
+std::size_t BroadPhase::choose_layout(std::size_t entry_count)
+{
+  const std::int64_t cells =
+      grid_boxes_.empty() ? 0 : area(occupied_.x0, occupied_.y0, occupied_.x1, occupied_.y1);
+  if (cells > 0 && cells <= kDenseCellsPerEntry * static_cast<std::int64_t>(entry_count))
+  {
+    dense_width_ = static_cast<std::int64_t>(occupied_.x1) - occupied_.x0 + 1;
+    bucket_mask_ = 0;
+    return static_cast<std::size_t>(cells);
+  }
+  // Hashed: about one bucket per entry keeps the chance of two cells sharing one low.
+  dense_width_ = 0;
+  const std::size_t bucket_count = power_of_two_at_least(std::max<std::size_t>(entry_count, 1));
+  bucket_mask_ = bucket_count - 1;
+  return bucket_count;
 }
 
 void BroadPhase::fill_grid()
@@ -62,9 +91,7 @@ void BroadPhase::fill_grid()
                        : CellRange{std::min(occupied_.x0, r.x0), std::min(occupied_.y0, r.y0),
                                    std::max(occupied_.x1, r.x1), std::max(occupied_.y1, r.y1)};
   }
-  // About one bucket per entry keeps the chance of two cells sharing one low.
-  const std::size_t bucket_count = power_of_two_at_least(std::max<std::size_t>(entry_count, 1));
-  bucket_mask_ = bucket_count - 1;
+  const std::size_t bucket_count = choose_layout(entry_count);
   bucket_start_.assign(bucket_count + 1, 0);
   // Each entry's bucket is hashed once, while counting, and read back in
   // the same order while scattering.

@@ -44,8 +44,10 @@ done
 
 if [[ $BUILD_FIRST == 1 ]]; then
   log "building in $BUILD"
+  # A fresh clone has no build folder yet, and the configure log goes beside it.
+  mkdir -p "$BUILD"
   cmake -S "$ROOT" -B "$BUILD" -DCOLLISION2D_WITH_ROS=OFF -DCMAKE_BUILD_TYPE=Release > "$BUILD.cmake.log" 2>&1 ||
-    { mkdir -p "$BUILD"; cat "$BUILD.cmake.log" >&2; exit 1; }
+    { cat "$BUILD.cmake.log" >&2; exit 1; }
   cmake --build "$BUILD" -j"$JOBS" --target collision2d_sweep_bench collision2d_scaling_bench
 fi
 SWEEP="$BUILD/bench/collision2d_sweep_bench"

@@ -87,4 +87,4 @@ if [[ $status -ne 0 ]]; then
   echo "$TARGET: FAILED (exit $status), ${executions:-?} executions, $crashes crash input(s) in $BUILD_DIR/artifacts"
   exit 1
 fi
-echo "$TARGET: ok, ${executions:-?} executions, 0 crashes, corpus $(find "$BUILD_DIR/corpus" -type f | wc -l) inputs"
+echo "$TARGET: ok (seed $SEED), ${executions:-?} executions, 0 crashes, corpus $(find "$BUILD_DIR/corpus" -type f | wc -l) inputs"

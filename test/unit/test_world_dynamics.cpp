@@ -9,6 +9,7 @@
 
 #include "collision2d/scenes/scene_parts.h"
 #include "collision2d/scenes/standard_scenes.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
@@ -37,23 +38,9 @@ TEST(WorldDynamics, DroppedDiskReboundsToESquaredOfItsDropHeight)
   const Material bouncy{kE, 0.0, 0.0};
   world.add_body(scenes::make_static_box(10.0, 1.0, {0.0, -0.5}), bouncy);  // top face at y = 0
   const BodyId disk = world.add_body(Body(1.0, kRadius, {0.0, kRadius + kDropHeight}, {0.0, 0.0}), bouncy);
-  double apex = -INFINITY;
-  bool bounced = false;
-  for (int f = 0; f < 240; ++f)
-  {
-    world.step();
-    const Body& b = world.body(disk);
-    bounced = bounced || b.velocity().y > 0.0;
-    if (bounced)
-    {
-      apex = std::max(apex, b.position().y);
-      if (b.velocity().y < 0.0)
-      {
-        break;  // past the first apex
-      }
-    }
-  }
-  ASSERT_TRUE(bounced);
+  constexpr int kMaxFrames = 240;  // 4 s: the drop and the rebound take under 2 s
+  const double apex = test::first_rebound_apex(world, disk, kMaxFrames);
+  ASSERT_TRUE(std::isfinite(apex)) << "the disk did not bounce";
   const double rebound = apex - kRadius;
   std::printf("rebound %.5f m of a %.1f m drop: ratio %.5f, e^2 = %.5f\n", rebound, kDropHeight, rebound / kDropHeight,
               kE * kE);

@@ -13,6 +13,7 @@
 #include "collision2d/scenes/scene_parts.h"
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
@@ -93,23 +94,8 @@ double rebound(int substeps, bool warm_before_integration, double e, double drop
   world.add_body(scenes::make_static_box(40.0, 1.0, {0.0, -0.5}), bouncy);  // top face at y = 0
   world.add_body(scenes::make_box(1.0, 1.0, 1.0, {10.0, 0.5}), bouncy);
   const BodyId disk = world.add_body(Body(1.0, kRadius, {0.0, kRadius + drop}, {0.0, 0.0}), bouncy);
-  double apex = -INFINITY;
-  bool bounced = false;
-  for (int f = 0; f < 4 * kFramesPerSecond; ++f)
-  {
-    world.step();
-    const Body& b = world.body(disk);
-    bounced = bounced || b.velocity().y > 0.0;
-    if (bounced)
-    {
-      apex = std::max(apex, b.position().y);
-      if (b.velocity().y < 0.0)
-      {
-        break;
-      }
-    }
-  }
-  EXPECT_TRUE(bounced);
+  const double apex = test::first_rebound_apex(world, disk, 4 * kFramesPerSecond);
+  EXPECT_TRUE(std::isfinite(apex)) << "the disk did not bounce";
   return apex - kRadius;
 }
 

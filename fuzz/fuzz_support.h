@@ -71,8 +71,7 @@ inline bool in_range(const std::vector<Body>& bodies)
 
 inline bool finite_state(const Body& b)
 {
-  return is_finite(b.position()) && is_finite(b.velocity()) && std::isfinite(b.theta()) &&
-         std::isfinite(b.omega());
+  return non_finite_state_field(b) == nullptr;
 }
 
 /// Poses and velocities bit for bit equal (an all-or-nothing call that threw).

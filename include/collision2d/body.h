@@ -1,6 +1,7 @@
 // Rigid 2D bodies: uniform disks and uniform convex polygons.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -100,5 +101,17 @@ private:
   std::vector<Vec2> local_vertices_;
   std::vector<Vec2> local_normals_;
 };
+
+/// The first of position, theta, velocity, omega that is not finite, or
+/// nullptr when the whole state is finite. Body setters do not check (they
+/// run in every substep), so every entry point checks with this.
+inline const char* non_finite_state_field(const Body& b)
+{
+  return !is_finite(b.position())   ? "position"
+         : !std::isfinite(b.theta()) ? "theta"
+         : !is_finite(b.velocity())  ? "velocity"
+         : !std::isfinite(b.omega()) ? "omega"
+                                     : nullptr;
+}
 
 }  // namespace collision2d

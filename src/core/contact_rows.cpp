@@ -63,12 +63,7 @@ void validate_bodies(const std::vector<Body>& bodies)
 {
   for (std::size_t i = 0; i < bodies.size(); ++i)
   {
-    const Body& b = bodies[i];
-    const char* field = !is_finite(b.position()) ? "position"
-                        : !std::isfinite(b.theta()) ? "theta"
-                        : !is_finite(b.velocity())  ? "velocity"
-                        : !std::isfinite(b.omega()) ? "omega"
-                                                    : nullptr;
+    const char* field = non_finite_state_field(bodies[i]);
     if (field != nullptr)
       throw std::invalid_argument("body " + std::to_string(i) + ": " + field + " is not finite");
   }

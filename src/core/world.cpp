@@ -62,16 +62,10 @@ void validate_material(const Material& m)
 /// one NaN body would turn its contact partners NaN on the next step.
 void validate_state(const Body& b)
 {
-  const auto require = [](bool ok, const char* field) {
-    if (!ok)
-    {
-      throw std::invalid_argument(std::string("add_body: non-finite ") + field);
-    }
-  };
-  require(is_finite(b.position()), "position");
-  require(std::isfinite(b.theta()), "theta");
-  require(is_finite(b.velocity()), "velocity");
-  require(std::isfinite(b.omega()), "omega");
+  if (const char* field = non_finite_state_field(b))
+  {
+    throw std::invalid_argument(std::string("add_body: non-finite ") + field);
+  }
 }
 
 /// Static bodies never move, so a velocity given to one is dropped rather

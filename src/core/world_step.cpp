@@ -12,7 +12,6 @@
 // predicted velocity (world_warm_integration.cpp), so that identity then no
 // longer holds.
 #include <algorithm>
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -51,8 +50,7 @@ void World::require_finite_state() const
 {
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    const Body& b = bodies_[i];
-    if (is_finite(b.position()) && std::isfinite(b.theta()) && is_finite(b.velocity()) && std::isfinite(b.omega()))
+    if (non_finite_state_field(bodies_[i]) == nullptr)
     {
       continue;
     }

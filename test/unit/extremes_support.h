@@ -44,8 +44,7 @@ inline void print_figure(const std::string& what, double measured, double bound)
 
 inline bool is_finite_body(const Body& b)
 {
-  return is_finite(b.position()) && is_finite(b.velocity()) && std::isfinite(b.theta()) &&
-         std::isfinite(b.omega());
+  return non_finite_state_field(b) == nullptr;
 }
 
 inline bool all_finite(const std::vector<Body>& bodies)

@@ -4,7 +4,6 @@
 // exactly as they came in, instead of handing back inf or NaN.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -13,6 +12,7 @@
 #include "collision2d/contact_solver.h"
 #include "collision2d/scenario_io.h"
 #include "collision2d/world.h"
+#include "extremes_support.h"
 
 namespace collision2d
 {
@@ -38,16 +38,6 @@ bool same_state(const std::vector<Body>& a, const std::vector<Body>& b)
       return false;
   }
   return a.size() == b.size();
-}
-
-bool finite_state(const std::vector<Body>& bodies)
-{
-  for (const Body& b : bodies)
-  {
-    if (!(is_finite(b.position()) && std::isfinite(b.theta()) && is_finite(b.velocity()) && std::isfinite(b.omega())))
-      return false;
-  }
-  return true;
 }
 
 std::vector<Body> overflowing_bodies()
@@ -105,7 +95,7 @@ TEST(Overflow, PositionCorrectionRefusesAndPutsTheBodiesBack)
   const ContactSolver solver(0.0, 0.0, 8, 1e-12, /*bias_factor=*/1.0, /*slop=*/0.0);
   EXPECT_THROW(solver.correct_positions(bodies, {contact}), std::overflow_error);
   EXPECT_TRUE(same_state(before, bodies));
-  EXPECT_TRUE(finite_state(bodies));
+  EXPECT_TRUE(test::all_finite(bodies));
 }
 
 TEST(Overflow, WorldStepRefusesNamingTheBody)
@@ -139,8 +129,7 @@ TEST(Overflow, InRangeWorldStepsWithoutRefusal)
   world.add_body(Body(1.0, 1.0, {1e6, 0.0}, {1e4, 0.0}, 1e4));
   world.add_body(Body(1e6, 1.0, {1e6 + 50.0, 0.0}, {-1e4, 0.0}));
   EXPECT_NO_THROW(world.step(60));
-  for (BodyId id : world.body_ids())
-    EXPECT_TRUE(finite_state({world.body(id)}));
+  EXPECT_TRUE(test::all_finite(world));
 }
 
 }  // namespace

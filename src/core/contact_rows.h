@@ -65,19 +65,35 @@ void validate_contact(const Contact& c, std::size_t index, std::size_t body_coun
 void validate_bodies(const std::vector<Body>& bodies);
 
 /// Runs `stages` (several stages that each change the bodies) as one: when a
-/// stage throws, the bodies are put back as they came in and the exception
-/// goes on. The copy is one allocation per call, never per contact.
+/// stage throws, every body's pose and velocity are put back as they came in
+/// and the exception goes on. Only the motion is kept aside (no outlines), in
+/// one allocation per call.
 template <typename Stages>
 auto all_or_nothing(std::vector<Body>& bodies, Stages stages) -> decltype(stages())
 {
-  const std::vector<Body> before = bodies;
+  struct Motion
+  {
+    Vec2 position;
+    double theta;
+    Vec2 velocity;
+    double omega;
+  };
+  std::vector<Motion> before(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    before[i] = {bodies[i].position(), bodies[i].theta(), bodies[i].velocity(), bodies[i].omega()};
   try
   {
     return stages();
   }
   catch (...)
   {
-    bodies = before;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      bodies[i].set_position(before[i].position);
+      bodies[i].set_theta(before[i].theta);
+      bodies[i].set_velocity(before[i].velocity);
+      bodies[i].set_omega(before[i].omega);
+    }
     throw;
   }
 }

@@ -54,18 +54,24 @@ BodyMsg polygon(std::uint32_t id, const std::vector<Vec2>& outline, double x = 0
 
 const std::vector<Vec2> kUnitSquare{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
-/// The message of the InvalidRequest that converting `bodies` throws ("" if none).
-std::string rejection(const std::vector<BodyMsg>& bodies)
+/// The message of the InvalidRequest that `convert` throws ("" if none).
+template <typename Convert>
+std::string rejection_of(Convert convert)
 {
   try
   {
-    bodies_from_msgs(bodies, kManyBodies);
+    convert();
   }
   catch (const InvalidRequest& e)
   {
     return e.what();
   }
   return "";
+}
+
+std::string rejection(const std::vector<BodyMsg>& bodies)
+{
+  return rejection_of([&] { bodies_from_msgs(bodies, kManyBodies); });
 }
 
 /// A second body at index 1 with id 7 carries the defect, so the message
@@ -257,15 +263,7 @@ SolverSettings valid_settings()
 
 std::string settings_rejection(const SolverSettings& msg)
 {
-  try
-  {
-    solver_from_msg(msg);
-  }
-  catch (const InvalidRequest& e)
-  {
-    return e.what();
-  }
-  return "";
+  return rejection_of([&] { solver_from_msg(msg); });
 }
 
 TEST(SolverFromMsg, CarriesEveryFieldAndTheMode)
@@ -347,18 +345,9 @@ TEST(WorldSettingsMsg, RoundTripAndRejection)
   }
 }
 
-/// The message of the InvalidRequest that converting `msg` throws ("" if none).
 std::string world_rejection(const WorldConfig& msg)
 {
-  try
-  {
-    world_settings_from_msg(msg);
-  }
-  catch (const InvalidRequest& e)
-  {
-    return e.what();
-  }
-  return "";
+  return rejection_of([&] { world_settings_from_msg(msg); });
 }
 
 TEST(WorldSettingsMsg, SolverFieldsRoundTrip)

@@ -1,0 +1,226 @@
+// Golden trajectories: a hash of every body's state, every reported contact
+// impulse and the step report after a run of shipped scenes, at the defaults
+// and under setting sets that exercise each branch of the step. A refactor
+// must keep every hash bit for bit; a commit that changes behaviour on
+// purpose re-pins the hashes it changes and says why.
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "collision2d/contact_solver.h"
+#include "collision2d/scene.h"
+#include "collision2d/scenes/random_scenes.h"
+#include "collision2d/scenes/standard_scenes.h"
+#include "collision2d/world.h"
+
+namespace collision2d
+{
+namespace
+{
+/// FNV-1a over the raw bytes of doubles: any change of any bit shows.
+class Hash
+{
+public:
+  void add(double value)
+  {
+    unsigned char bytes[sizeof value];
+    std::memcpy(bytes, &value, sizeof value);
+    for (unsigned char byte : bytes)
+    {
+      state_ = (state_ ^ byte) * kPrime;
+    }
+  }
+  void add(Vec2 v)
+  {
+    add(v.x);
+    add(v.y);
+  }
+  std::uint64_t value() const { return state_; }
+
+private:
+  static constexpr std::uint64_t kPrime = 1099511628211ULL;
+  std::uint64_t state_ = 14695981039346656037ULL;
+};
+
+/// Steps the scene frame by frame and hashes the state after every frame, so
+/// a difference that later heals still shows.
+std::uint64_t run_hash(const Scene& scene, const std::function<void(WorldSettings&)>& tweak, int frames)
+{
+  Scene s = scene;
+  tweak(s.settings);
+  World world = make_world(s);
+  Hash hash;
+  for (int f = 0; f < frames; ++f)
+  {
+    const StepReport report = world.step();
+    for (BodyId id : world.body_ids())
+    {
+      const Body& b = world.body(id);
+      hash.add(b.position());
+      hash.add(b.theta());
+      hash.add(b.velocity());
+      hash.add(b.omega());
+      hash.add(world.is_sleeping(id) ? 1.0 : 0.0);
+    }
+    for (const WorldContact& c : world.contacts())
+    {
+      hash.add(static_cast<double>(c.a));
+      hash.add(static_cast<double>(c.b));
+      hash.add(c.contact.point);
+      hash.add(c.contact.penetration);
+      hash.add(c.impulse.normal);
+      hash.add(c.impulse.tangent);
+      hash.add(c.sliding ? 1.0 : 0.0);
+    }
+    hash.add(report.max_penetration);
+    hash.add(report.velocity_residual);
+    hash.add(static_cast<double>(report.exact_islands));
+    hash.add(static_cast<double>(report.exact_fallbacks));
+  }
+  return hash.value();
+}
+
+struct Golden
+{
+  const char* name;
+  std::function<Scene()> scene;
+  std::function<void(WorldSettings&)> tweak;
+  int frames;
+  std::uint64_t expected;
+};
+
+void defaults(WorldSettings&) {}
+
+const Golden kGolden[] = {
+    {"pyramid_defaults", [] { return scenes::pyramid(10); }, defaults, 120, 0x43645510608312deULL},
+    {"pyramid_8x4", [] { return scenes::pyramid(10); },
+     [](WorldSettings& s) {
+       s.substeps = 8;
+       s.velocity_iterations = 4;
+     },
+     60, 0x486c5f503ef95a2bULL},
+    {"pyramid_cold_substeps", [] { return scenes::pyramid(10); },
+     [](WorldSettings& s) { s.warm_start_every_substep = false; }, 60, 0x06d62cfe6568be12ULL},
+    {"pyramid_position_block", [] { return scenes::pyramid(10); },
+     [](WorldSettings& s) {
+       s.position_block = true;
+       s.position_iterations = 2;
+     },
+     60, 0x384fc1b95a8a1de3ULL},
+    {"pyramid_warm_before_integration", [] { return scenes::pyramid(10); },
+     [](WorldSettings& s) {
+       s.warm_start_before_integration = true;
+       s.warm_start_factor = 0.9;
+     },
+     60, 0xdcd0e999e1e9f3c0ULL},
+    {"pyramid_exact", [] { return scenes::pyramid(5); },
+     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x4eab864ada73c868ULL},
+    {"pyramid_sleeping", [] { return scenes::pyramid(10); },
+     [](WorldSettings& s) {
+       s.sleeping = Toggle::On;
+       s.sleep_time = 0.1;
+     },
+     150, 0x35af0d8c6bc1d06bULL},
+    {"column_defaults", [] { return scenes::column(20); }, defaults, 120, 0xac173e8a2b9d9916ULL},
+    {"gas_defaults", [] { return scenes::elastic_gas(200); }, defaults, 120, 0x1a7cb0f191395fe9ULL},
+    {"gas_no_toggles", [] { return scenes::elastic_gas(100); },
+     [](WorldSettings& s) {
+       s.rotation = Toggle::On;
+       s.friction = Toggle::On;
+       s.warm_starting = Toggle::Off;
+     },
+     60, 0xaf11a257f55dfbb3ULL},
+    {"cradle_defaults", [] { return scenes::newtons_cradle(5); }, defaults, 120, 0xf9c820f5c2aa202bULL},
+    {"incline_defaults", [] { return scenes::incline(); }, defaults, 120, 0x7b8876f6d22680abULL},
+    {"incline_sliding", [] { return scenes::incline(0.6, 0.5, 0.3); }, defaults, 120, 0x726a4ca7660d503bULL},
+    {"bouncing_defaults", [] { return scenes::bouncing_disks(); }, defaults, 180, 0xc00e709942ea150bULL},
+    {"bullet_defaults", [] { return scenes::bullet_wall(); }, defaults, 30, 0x284a3ca8f63749c5ULL},
+    {"demo_defaults", [] { return scenes::demo(); }, defaults, 120, 0x9dae94049ef53db5ULL},
+    {"heavy_on_light_exact", [] { return scenes::heavy_on_light(1e6); },
+     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 120, 0xd3e2bd781bf42514ULL},
+    {"heavy_on_light_exact_velocity_only", [] { return scenes::heavy_on_light(1e3); },
+     [](WorldSettings& s) {
+       s.solver_mode = SolverMode::Exact;
+       s.exact_position_correction = false;
+     },
+     60, 0xf15b95fb7dcb07b0ULL},
+};
+
+class WorldGolden : public ::testing::TestWithParam<Golden>
+{
+};
+
+TEST_P(WorldGolden, TrajectoryHashIsPinned)
+{
+  const Golden& g = GetParam();
+  const std::uint64_t hash = run_hash(g.scene(), g.tweak, g.frames);
+  // Printed so a commit that changes behaviour on purpose can re-pin.
+  std::printf("golden %s 0x%016llxULL\n", g.name, static_cast<unsigned long long>(hash));
+  EXPECT_EQ(hash, g.expected) << g.name;
+}
+
+/// ContactSolver's entry points on the soak's random clusters: resolve and
+/// step in both modes, hashed over every body and the report.
+std::uint64_t contact_solver_hash(SolverMode mode, bool step)
+{
+  scenes::RandomSceneGenerator generator(2024);
+  Hash hash;
+  for (int n = 0; n < 200; ++n)
+  {
+    scenes::RandomScene scene = generator.next();
+    ContactSolver solver(scene.restitution, scene.friction);
+    solver.set_mode(mode);
+    const SolveReport report = step ? solver.step(scene.bodies) : solver.resolve(scene.bodies);
+    for (const Body& b : scene.bodies)
+    {
+      hash.add(b.position());
+      hash.add(b.theta());
+      hash.add(b.velocity());
+      hash.add(b.omega());
+    }
+    hash.add(static_cast<double>(report.iterations));
+    hash.add(report.max_residual);
+    hash.add(report.total_normal_impulse);
+    hash.add(report.time_of_impact);
+  }
+  return hash.value();
+}
+
+TEST(ContactSolverGolden, ResolveAndStepHashesArePinned)
+{
+  const struct
+  {
+    const char* name;
+    SolverMode mode;
+    bool step;
+    std::uint64_t expected;
+  } kRuns[] = {
+      {"resolve_iterative", SolverMode::Iterative, false, 0xf868502b49d5e8b6ULL},
+      {"resolve_exact", SolverMode::Exact, false, 0xdeb6bda559258dfeULL},
+      {"step_iterative", SolverMode::Iterative, true, 0x83d21dab12382256ULL},
+      {"step_exact", SolverMode::Exact, true, 0x22b603c2364ad5beULL},
+  };
+  for (const auto& run : kRuns)
+  {
+    const std::uint64_t hash = contact_solver_hash(run.mode, run.step);
+    std::printf("golden %s 0x%016llxULL\n", run.name, static_cast<unsigned long long>(hash));
+    EXPECT_EQ(hash, run.expected) << run.name;
+  }
+}
+
+TEST(WorldGoldenRuns, AreRepeatable)
+{
+  // The hash is a function of the inputs only: two runs in one process agree.
+  const Golden& g = kGolden[0];
+  EXPECT_EQ(run_hash(g.scene(), g.tweak, 30), run_hash(g.scene(), g.tweak, 30));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, WorldGolden, ::testing::ValuesIn(kGolden),
+                         [](const ::testing::TestParamInfo<Golden>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace collision2d

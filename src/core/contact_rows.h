@@ -10,21 +10,12 @@
 #include "collision2d/body.h"
 #include "collision2d/contact.h"
 #include "collision2d/vec2.h"
+#include "contact_kernel.h"
 
 namespace collision2d
 {
 namespace detail
 {
-/// Velocity state of one body during a solve. Non-dynamic bodies carry zero
-/// inverse mass and inertia, so impulses never change them.
-struct BodyVelocity
-{
-  Vec2 v;
-  double omega = 0.0;
-  double inv_mass = 0.0;
-  double inv_inertia = 0.0;
-};
-
 /// One contact point: geometry, effective masses, the fixed Newton target and
 /// the accumulated impulses.
 struct ContactRow

@@ -1,11 +1,12 @@
-// World: bodies by stable id, materials, settings and their validation.
+// World: the public API over detail::WorldImpl, and bodies by stable id.
 #include "collision2d/world.h"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "world_impl.h"
 
 namespace collision2d
 {
@@ -34,9 +35,23 @@ void settle_static(Body& body)
 
 }  // namespace
 
-World::World(const WorldSettings& settings) : settings_(settings)
+World::World(const WorldSettings& settings) : impl_(std::make_unique<detail::WorldImpl>(settings))
 {
   validate(settings);
+}
+
+World::World(const World& other) : impl_(std::make_unique<detail::WorldImpl>(*other.impl_)) {}
+World::World(World&& other) noexcept = default;
+World& World::operator=(World&& other) noexcept = default;
+World::~World() = default;
+
+World& World::operator=(const World& other)
+{
+  if (this != &other)
+  {
+    impl_ = std::make_unique<detail::WorldImpl>(*other.impl_);
+  }
+  return *this;
 }
 
 void World::validate(const WorldSettings& s)
@@ -44,27 +59,113 @@ void World::validate(const WorldSettings& s)
   validate_world_settings(s);
 }
 
+const WorldSettings& World::settings() const { return impl_->settings_; }
+
 void World::set_settings(const WorldSettings& settings)
 {
   validate(settings);
-  settings_ = settings;
+  impl_->settings_ = settings;
 }
 
 BodyId World::add_body(const Body& body, const Material& material)
 {
+  const BodyId id = impl_->next_id_;
+  add_body(id, body, material);
+  return id;
+}
+
+void World::add_body(BodyId id, const Body& body, const Material& material)
+{
+  if (id < impl_->next_id_)
+  {
+    throw std::invalid_argument("add_body: id " + std::to_string(id) + " is below the next free id " +
+                                std::to_string(impl_->next_id_) + " (ids ascend and are never reused)");
+  }
   validate_material(material);
   validate_state(body);
+  impl_->append_body(id, body, material);
+}
+
+void World::remove_body(BodyId id) { impl_->remove_body(id); }
+
+bool World::has_body(BodyId id) const
+{
+  return std::binary_search(impl_->ids_.begin(), impl_->ids_.end(), id);
+}
+
+const Body& World::body(BodyId id) const { return impl_->bodies_[impl_->index_of(id)]; }
+
+const Material& World::material(BodyId id) const { return impl_->materials_[impl_->index_of(id)]; }
+
+bool World::is_sleeping(BodyId id) const { return impl_->asleep_[impl_->index_of(id)]; }
+
+void World::set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega)
+{
+  const std::size_t i = impl_->index_of(id);
+  if (!is_finite(position) || !std::isfinite(theta) || !is_finite(velocity) || !std::isfinite(omega))
+  {
+    throw std::invalid_argument("set_body_state: non-finite state for body " + std::to_string(id));
+  }
+  Body& b = impl_->bodies_[i];
+  b.set_position(position);
+  b.set_theta(theta);
+  b.set_velocity(velocity);
+  b.set_omega(omega);
+  settle_static(b);
+  impl_->wake(i);
+}
+
+std::vector<BodyId> World::body_ids() const { return impl_->ids_; }
+
+std::size_t World::body_count() const { return impl_->bodies_.size(); }
+
+BodyId World::next_id() const { return impl_->next_id_; }
+
+void World::set_next_id(BodyId id)
+{
+  if (id < impl_->next_id_)
+  {
+    throw std::invalid_argument("set_next_id: " + std::to_string(id) + " is below the next free id " +
+                                std::to_string(impl_->next_id_));
+  }
+  impl_->next_id_ = id;
+}
+
+void World::clear() { impl_->clear(); }
+
+StepReport World::step(int frames) { return impl_->step(frames); }
+
+const std::vector<WorldContact>& World::contacts() const { return impl_->contacts_; }
+
+double World::time() const { return impl_->time_; }
+
+std::uint64_t World::frame_count() const { return impl_->frame_count_; }
+
+void World::set_clock(double time, std::uint64_t frame_count)
+{
+  if (!(std::isfinite(time) && time >= 0.0))
+  {
+    throw std::invalid_argument("set_clock: time must be finite and >= 0 (got " + std::to_string(time) + ")");
+  }
+  impl_->time_ = time;
+  impl_->frame_count_ = frame_count;
+}
+
+namespace detail
+{
+void WorldImpl::append_body(BodyId id, const Body& body, const Material& material)
+{
   bodies_.push_back(body);
   settle_static(bodies_.back());
   materials_.push_back(material);
-  ids_.push_back(next_id_);
+  ids_.push_back(id);
+  next_id_ = id + 1;
   asleep_.push_back(false);
   rest_time_.push_back(0.0);
   append_inner_radius(bodies_.back());
-  return next_id_++;
 }
 
-void World::remove_body(BodyId id)
+void WorldImpl::remove_body(BodyId id)
 {
   const std::size_t i = index_of(id);
   // Bodies resting on the removed one must fall, so its sleeping partners wake.
@@ -73,7 +174,7 @@ void World::remove_body(BodyId id)
     if (c.a == id || c.b == id)
     {
       const BodyId other = c.a == id ? c.b : c.a;
-      if (has_body(other))
+      if (std::binary_search(ids_.begin(), ids_.end(), other))
       {
         wake(index_of(other));
       }
@@ -97,12 +198,7 @@ void World::remove_body(BodyId id)
   refresh_inner_radii();
 }
 
-bool World::has_body(BodyId id) const
-{
-  return std::binary_search(ids_.begin(), ids_.end(), id);
-}
-
-std::size_t World::index_of(BodyId id) const
+std::size_t WorldImpl::index_of(BodyId id) const
 {
   // ids_ stays sorted: new ids are larger than every existing one and
   // removal preserves order.
@@ -114,54 +210,13 @@ std::size_t World::index_of(BodyId id) const
   return static_cast<std::size_t>(it - ids_.begin());
 }
 
-const Body& World::body(BodyId id) const
-{
-  return bodies_[index_of(id)];
-}
-
-const Material& World::material(BodyId id) const
-{
-  return materials_[index_of(id)];
-}
-
-bool World::is_sleeping(BodyId id) const
-{
-  return asleep_[index_of(id)];
-}
-
-void World::set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega)
-{
-  const std::size_t i = index_of(id);
-  if (!is_finite(position) || !std::isfinite(theta) || !is_finite(velocity) || !std::isfinite(omega))
-  {
-    throw std::invalid_argument("set_body_state: non-finite state for body " + std::to_string(id));
-  }
-  Body& b = bodies_[i];
-  b.set_position(position);
-  b.set_theta(theta);
-  b.set_velocity(velocity);
-  b.set_omega(omega);
-  settle_static(b);
-  wake(i);
-}
-
-void World::wake(std::size_t index)
+void WorldImpl::wake(std::size_t index)
 {
   asleep_[index] = false;
   rest_time_[index] = 0.0;
 }
 
-std::vector<BodyId> World::body_ids() const
-{
-  return ids_;
-}
-
-std::size_t World::body_count() const
-{
-  return bodies_.size();
-}
-
-void World::clear()
+void WorldImpl::clear()
 {
   bodies_.clear();
   materials_.clear();
@@ -170,8 +225,9 @@ void World::clear()
   rest_time_.clear();
   contacts_.clear();
   cache_.clear();
-  rows_.clear();
+  points_.clear();
   refresh_inner_radii();
 }
 
+}  // namespace detail
 }  // namespace collision2d

@@ -4,9 +4,11 @@
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
-#include "collision2d/world.h"
+#include "world_impl.h"
 
 namespace collision2d
+{
+namespace detail
 {
 namespace
 {
@@ -27,7 +29,7 @@ bool pair_less(const WorldContact& c, BodyId a, BodyId b)
 
 }  // namespace
 
-bool World::is_mover(std::size_t i) const
+bool WorldImpl::is_mover(std::size_t i) const
 {
   const Body& b = bodies_[i];
   switch (b.type())
@@ -42,7 +44,7 @@ bool World::is_mover(std::size_t i) const
   return false;
 }
 
-void World::detect(const ActiveEffects& effects, bool warm, double h, StepReport& report)
+void WorldImpl::detect(const StepContext& ctx, StepReport& report)
 {
   const std::size_t n = bodies_.size();
   boxes_.resize(n);
@@ -51,10 +53,10 @@ void World::detect(const ActiveEffects& effects, bool warm, double h, StepReport
     boxes_[i] = bodies_[i].aabb();
   }
   broad_phase_.find_pairs(boxes_, pairs_);
-  rows_.clear();
+  points_.clear();
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
-  const double warm_scale = warm ? settings_.warm_start_factor * h / cache_h_ : 0.0;
+  const double warm_scale = ctx.warm ? settings_.warm_start_factor * ctx.h / cache_h_ : 0.0;
   for (const BodyPair& pair : pairs_)
   {
     const std::size_t i = pair.first;
@@ -71,15 +73,15 @@ void World::detect(const ActiveEffects& effects, bool warm, double h, StepReport
     }
     const bool touch = clamped(i) || clamped(j);
     const double tolerance = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
-    add_manifold(i, j, tolerance, warm_scale, effects.friction);
+    add_manifold(i, j, tolerance, warm_scale, ctx.effects.friction);
   }
-  for (const ContactRow& row : rows_)
+  for (const ContactPoint& row : points_)
   {
     report.max_detected_penetration = std::max(report.max_detected_penetration, row.penetration);
   }
 }
 
-bool World::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const
+bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const
 {
   const Body& a = bodies_[i];
   const Body& b = bodies_[j];
@@ -93,7 +95,7 @@ bool World::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifol
   return collide(a, b, m, tolerance);
 }
 
-void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction)
+void WorldImpl::add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction)
 {
   Manifold m;
   if (!collide_pair(i, j, tolerance, m))
@@ -107,7 +109,7 @@ void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double 
   }
   for (int k = 0; k < m.count; ++k)
   {
-    ContactRow row;
+    ContactPoint row;
     row.a = i;
     row.b = j;
     row.normal = m.normal;
@@ -118,15 +120,15 @@ void World::add_manifold(std::size_t i, std::size_t j, double tolerance, double 
     const WorldContact* cached = warm_scale > 0.0 || friction ? find_cached(ids_[i], ids_[j], row.feature) : nullptr;
     if (cached != nullptr)
     {
-      row.impulse.normal = warm_scale * cached->impulse.normal;
-      row.impulse.tangent = warm_scale * cached->impulse.tangent;
+      row.lambda_n = warm_scale * cached->impulse.normal;
+      row.lambda_t = warm_scale * cached->impulse.tangent;
       row.kinetic = friction && cached->sliding;
     }
-    rows_.push_back(row);
+    points_.push_back(row);
   }
 }
 
-void World::carry_sleeping_pair(std::size_t i, std::size_t j)
+void WorldImpl::carry_sleeping_pair(std::size_t i, std::size_t j)
 {
   // Nothing moves in a sleeping island, so its contacts and impulses stay
   // what they were when it fell asleep; they are kept (unsolved) so the
@@ -139,7 +141,7 @@ void World::carry_sleeping_pair(std::size_t i, std::size_t j)
                              });
   for (; it != cache_.end() && it->a == a && it->b == b; ++it)
   {
-    ContactRow row;
+    ContactPoint row;
     row.a = i;
     row.b = j;
     row.normal = it->contact.normal;
@@ -147,13 +149,14 @@ void World::carry_sleeping_pair(std::size_t i, std::size_t j)
     row.penetration = it->contact.penetration;
     row.feature = it->contact.feature;
     row.active = false;
-    row.impulse = it->impulse;
+    row.lambda_n = it->impulse.normal;
+    row.lambda_t = it->impulse.tangent;
     row.sliding = it->sliding;
-    rows_.push_back(row);
+    points_.push_back(row);
   }
 }
 
-const WorldContact* World::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
+const WorldContact* WorldImpl::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
 {
   // The cache is in (a, b) order because contacts are published in broad-phase
   // pair order and dense indices follow ids; a pair has at most two points.
@@ -171,30 +174,30 @@ const WorldContact* World::find_cached(BodyId a, BodyId b, std::uint32_t feature
   return nullptr;
 }
 
-void World::publish_contacts()
+void WorldImpl::publish_contacts()
 {
-  contacts_.resize(rows_.size());
-  for (std::size_t k = 0; k < rows_.size(); ++k)
+  contacts_.resize(points_.size());
+  for (std::size_t k = 0; k < points_.size(); ++k)
   {
-    const ContactRow& row = rows_[k];
+    const ContactPoint& row = points_[k];
     WorldContact& c = contacts_[k];
     c.a = ids_[row.a];
     c.b = ids_[row.b];
     c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
-    c.impulse = row.impulse;
+    c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
     c.sliding = row.sliding;
   }
 }
 
-double World::measure_penetration() const
+double WorldImpl::measure_penetration() const
 {
   // The correction is linearised and pairs share bodies, so the depth left is
   // measured again at the final poses rather than predicted.
   double deepest = 0.0;
-  for (std::size_t k = 0; k < rows_.size(); ++k)
+  for (std::size_t k = 0; k < points_.size(); ++k)
   {
-    const ContactRow& row = rows_[k];
-    const bool new_pair = k == 0 || rows_[k - 1].a != row.a || rows_[k - 1].b != row.b;
+    const ContactPoint& row = points_[k];
+    const bool new_pair = k == 0 || points_[k - 1].a != row.a || points_[k - 1].b != row.b;
     if (!row.active || !new_pair)
     {
       continue;
@@ -211,4 +214,5 @@ double World::measure_penetration() const
   return deepest;
 }
 
+}  // namespace detail
 }  // namespace collision2d

@@ -2,9 +2,11 @@
 // is on only when the scene can show it; On and Off override.
 #include <algorithm>
 
-#include "collision2d/world.h"
+#include "world_impl.h"
 
 namespace collision2d
+{
+namespace detail
 {
 namespace
 {
@@ -18,7 +20,7 @@ double friction_of(const Material& m) { return std::max(m.static_friction, m.kin
 
 }  // namespace
 
-bool World::any_pair_with(double (*property)(const Material&)) const
+bool WorldImpl::any_pair_with(double (*property)(const Material&)) const
 {
   // Pairs combine by min, so a pair shows the property only when both bodies
   // have it; a pair matters only when at least one of them is dynamic.
@@ -35,7 +37,7 @@ bool World::any_pair_with(double (*property)(const Material&)) const
   return dynamic_with_property && with_property >= 2;
 }
 
-bool World::needs_rotation(bool friction) const
+bool WorldImpl::needs_rotation(bool friction) const
 {
   // Frictionless contact impulses on a disk act along a line through its
   // centre, so disks only turn under friction or with a spin of their own;
@@ -54,7 +56,7 @@ bool World::needs_rotation(bool friction) const
   return false;
 }
 
-bool World::sleeping_wanted() const
+bool WorldImpl::sleeping_wanted() const
 {
   // Without gravity a slow body is drifting, not resting on anything:
   // freezing it would change the motion (and take energy from a gas).
@@ -70,7 +72,7 @@ bool World::sleeping_wanted() const
   return dynamic >= settings_.sleep_auto_min_bodies;
 }
 
-World::FrameEffects World::select_effects() const
+StepContext WorldImpl::select_effects() const
 {
   const WorldSettings& s = settings_;
   bool dynamic = false;
@@ -79,20 +81,21 @@ World::FrameEffects World::select_effects() const
     dynamic = dynamic || b.type() == BodyType::Dynamic;
   }
   const bool contacts_possible = dynamic && bodies_.size() >= 2;
-  FrameEffects e;
-  e.flags.friction = resolve(s.friction, any_pair_with(friction_of));
-  e.flags.rotation = resolve(s.rotation, needs_rotation(e.flags.friction));
-  e.flags.restitution = resolve(s.restitution, any_pair_with(restitution_of));
-  e.flags.position_correction = resolve(s.position_correction, contacts_possible);
+  StepContext e;
+  e.effects.friction = resolve(s.friction, any_pair_with(friction_of));
+  e.effects.rotation = resolve(s.rotation, needs_rotation(e.effects.friction));
+  e.effects.restitution = resolve(s.restitution, any_pair_with(restitution_of));
+  e.effects.position_correction = resolve(s.position_correction, contacts_possible);
   // Without gravity (or another steady load) contacts do not persist from
   // frame to frame, and last frame's impulses would only disturb new impacts.
   const bool steady_load = s.gravity.x != 0.0 || s.gravity.y != 0.0;
-  e.flags.warm_starting = resolve(s.warm_starting, contacts_possible && steady_load);
-  e.flags.sleeping = resolve(s.sleeping, sleeping_wanted());
+  e.effects.warm_starting = resolve(s.warm_starting, contacts_possible && steady_load);
+  e.effects.sleeping = resolve(s.sleeping, sleeping_wanted());
   // Time of impact is decided per substep from the bodies' speeds (world_toi.cpp).
-  e.flags.time_of_impact = false;
-  e.warm_start_now = e.flags.warm_starting && !cache_.empty() && cache_h_ > 0.0;
+  e.effects.time_of_impact = false;
+  e.warm_available = e.effects.warm_starting && !cache_.empty() && cache_h_ > 0.0;
   return e;
 }
 
+}  // namespace detail
 }  // namespace collision2d

@@ -29,12 +29,14 @@
 #include <vector>
 
 #include "collision2d/exact_solver.h"
-#include "collision2d/world.h"
+#include "world_impl.h"
 #include "contact_rows.h"
 #include "exact_cluster_solve.h"
 #include "grouped_friction_lcp.h"
 
 namespace collision2d
+{
+namespace detail
 {
 namespace
 {
@@ -61,8 +63,8 @@ detail::ContactRow exact_row(const WorldRow& w, std::size_t k, bool friction)
   row.b = w.b;
   row.normal = w.normal;
   row.tangent = perp(w.normal);
-  row.r_a = w.ra;
-  row.r_b = w.rb;
+  row.r_a = w.r_a;
+  row.r_b = w.r_b;
   row.k_n = 1.0 / w.normal_mass;
   row.k_t = 1.0 / w.tangent_mass;
   row.target = w.target;
@@ -163,10 +165,10 @@ bool solve_velocity_island(const std::vector<Body>& bodies, ExactIslands& island
 
 }  // namespace
 
-void World::solve_exact_islands(StepReport& report)
+void WorldImpl::solve_exact_islands(StepReport& report)
 {
   ExactIslands islands;
-  build_islands(bodies_, rows_, true, islands);
+  build_islands(bodies_, points_, true, islands);
   for (const detail::ClusterRange& cluster : islands.clusters)
   {
     const bool solved = solve_velocity_island(bodies_, islands, cluster);
@@ -174,26 +176,24 @@ void World::solve_exact_islands(StepReport& report)
     for (std::size_t r = cluster.begin; solved && r < cluster.end; ++r)
     {
       const detail::ContactRow& row = islands.rows[r];
-      ContactRow& w = rows_[row.contact];
+      ContactPoint& w = points_[row.contact];
       w.exact = true;
-      w.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
+      w.lambda_n = row.lambda_n;
+      w.lambda_t = row.lambda_t;
       w.sliding = row.sliding;
     }
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    if (bodies_[i].type() == BodyType::Dynamic)
-    {
-      bodies_[i].set_velocity(islands.state[i].v);
-      bodies_[i].set_omega(islands.state[i].omega);
-    }
+    velocity_[i].v = islands.state[i].v;
+    velocity_[i].omega = islands.state[i].omega;
   }
 }
 
-void World::solve_position_islands(double softness, StepReport& report)
+void WorldImpl::solve_position_islands(double softness, StepReport& report)
 {
   ExactIslands islands;
-  build_islands(bodies_, rows_, false, islands);
+  build_islands(bodies_, points_, false, islands);
   detail::ClusterLcp& lcp = islands.lcp;
   for (const detail::ClusterRange& cluster : islands.clusters)
   {
@@ -209,7 +209,7 @@ void World::solve_position_islands(double softness, StepReport& report)
     {
       const Eigen::Index i = static_cast<Eigen::Index>(r - cluster.begin);
       const double scale = 1.0 / std::sqrt(islands.rows[r].k_n);
-      lcp.q(i) = -(current_depth(rows_[islands.rows[r].contact]) - settings_.slop) * scale;
+      lcp.q(i) = -(current_depth(points_[islands.rows[r].contact]) - settings_.slop) * scale;
       lcp.M(i, i) += softness * scale * scale;
     }
     int pivots = 0;
@@ -218,13 +218,14 @@ void World::solve_position_islands(double softness, StepReport& report)
     for (std::size_t r = cluster.begin; result.solved() && r < cluster.end; ++r)
     {
       const Eigen::Index i = static_cast<Eigen::Index>(r - cluster.begin);
-      ContactRow& w = rows_[islands.rows[r].contact];
+      ContactPoint& w = points_[islands.rows[r].contact];
       const double lambda = result.z(i) / std::sqrt(islands.rows[r].k_n);
-      displace(w.a, -lambda, w.normal, w.ra, w.inv_mass_a, w.inv_inertia_a);
-      displace(w.b, lambda, w.normal, w.rb, w.inv_mass_b, w.inv_inertia_b);
+      displace(w.a, -lambda, w.normal, w.r_a, w.inv_mass_a, w.inv_inertia_a);
+      displace(w.b, lambda, w.normal, w.r_b, w.inv_mass_b, w.inv_inertia_b);
       w.position_solved = true;
     }
   }
 }
 
+}  // namespace detail
 }  // namespace collision2d

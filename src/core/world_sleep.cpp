@@ -5,9 +5,11 @@
 // asleep bodies are not integrated or solved. A moving body touching one
 // wakes it during detection, and the rest of its island wakes here at the end
 // of the frame, because the woken member has not rested long enough.
-#include "collision2d/world.h"
+#include "world_impl.h"
 
 namespace collision2d
+{
+namespace detail
 {
 namespace
 {
@@ -23,7 +25,7 @@ std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
 
 }  // namespace
 
-void World::update_sleep()
+void WorldImpl::update_sleep()
 {
   const std::size_t n = bodies_.size();
   update_rest_times();
@@ -32,7 +34,7 @@ void World::update_sleep()
   {
     island_[i] = i;
   }
-  for (const ContactRow& row : rows_)
+  for (const ContactPoint& row : points_)
   {
     const bool dynamic_a = bodies_[row.a].type() == BodyType::Dynamic;
     const bool dynamic_b = bodies_[row.b].type() == BodyType::Dynamic;
@@ -69,7 +71,7 @@ void World::update_sleep()
   }
 }
 
-void World::update_rest_times()
+void WorldImpl::update_rest_times()
 {
   const double v2 = settings_.sleep_linear_speed * settings_.sleep_linear_speed;
   const double w2 = settings_.sleep_angular_speed * settings_.sleep_angular_speed;
@@ -85,4 +87,5 @@ void World::update_rest_times()
   }
 }
 
+}  // namespace detail
 }  // namespace collision2d

@@ -1,26 +1,36 @@
-// The frame and substep pipeline of SPEC section 3: integrate, detect,
-// penetration resolution, velocity derivation, velocity resolution, with warm
-// starting on a frame's first substep.
+// The World's step, top-down: frames of substeps in the Fx2D order of SPEC
+// section 3.2. Each stage is a call below, in the order it runs; the file
+// named beside it holds its code.
+//
+// Refinements of SPEC's order, each a setting or explained where coded:
+//  - warm starting also on later substeps (warm_start_every_substep);
+//  - several penetration passes (position_iterations), optionally with a
+//    manifold's two points as one block (position_block), and a sticking
+//    contact taking back the tangential part of its integration move;
+//  - velocity resolution on the contact-solver kernel (contact_kernel.h): a
+//    manifold's normals as one 2x2 block, its friction as one row at its
+//    midpoint, stick or slip as a contact state (mu_s, then mu_k);
+//  - the exact (pivoting) mode per island (world_exact.cpp);
+//  - poses advanced with predicted velocities (warm_start_before_integration,
+//    world_warm_integration.cpp).
 //
 // Velocity derivation (SPEC step 4): the penetration resolution shifts the
 // previous pose by exactly the correction it applies, so (pose - previous) / h
-// equals the velocity integrated in step 1. We therefore keep that integrated
-// velocity instead of recomputing the difference quotient, which would lose
-// digits far from the origin (large |p|, small h) and would turn a time-of-
-// impact clamp (a shortened move) into a spurious loss of speed. With
-// WorldSettings::warm_start_before_integration the pose is advanced with a
-// predicted velocity (world_warm_integration.cpp), so that identity then no
-// longer holds.
+// equals the velocity integrated in step 1. That integrated velocity is kept
+// instead of the difference quotient, which would lose digits far from the
+// origin and turn a time-of-impact clamp (a shortened move) into a loss of speed.
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
-#include "collision2d/world.h"
+#include "world_impl.h"
 
 namespace collision2d
 {
+namespace detail
+{
 
-StepReport World::step(int frames)
+StepReport WorldImpl::step(int frames)
 {
   if (frames < 1)
   {
@@ -28,12 +38,144 @@ StepReport World::step(int frames)
     msg << "step: frames must be >= 1 (got " << frames << ")";
     throw std::invalid_argument(msg.str());
   }
+  save_motion();
   StepReport report;
-  for (int f = 0; f < frames; ++f)
+  try
   {
-    step_frame(report);
-    require_finite_state();
+    for (int f = 0; f < frames; ++f)
+    {
+      step_frame(report);
+      require_finite_state();
+    }
   }
+  catch (...)
+  {
+    restore_motion();
+    throw;
+  }
+  finish_report(report);
+  return report;
+}
+
+void WorldImpl::step_frame(StepReport& report)
+{
+  StepContext ctx = select_effects();                     // world_effects.cpp
+  if (!ctx.effects.sleeping)
+  {
+    asleep_.assign(bodies_.size(), false);
+  }
+  ctx.h = settings_.dt / settings_.substeps;
+  ctx.inv_h = 1.0 / ctx.h;
+  for (int k = 0; k < settings_.substeps; ++k)
+  {
+    // The previous substep's contacts become the cache that warm starting and
+    // the friction state read; swapping keeps both buffers' capacity.
+    cache_.swap(contacts_);
+    ctx.first = k == 0;
+    ctx.warm = ctx.warm_available && (ctx.first || settings_.warm_start_every_substep);
+    substep(ctx, report);
+    publish_contacts();                                   // world_contacts.cpp
+    cache_h_ = ctx.h;
+  }
+  if (ctx.effects.sleeping)
+  {
+    update_sleep();                                       // world_sleep.cpp
+  }
+  time_ += settings_.dt;
+  ++frame_count_;
+  ++report.frames;
+  report.active |= ctx.effects;
+}
+
+void WorldImpl::substep(StepContext& ctx, StepReport& report)
+{
+  // 1. Integrate: gravity into velocity, then the pose (swept for time of impact).
+  kick(ctx);
+  const bool predict = ctx.warm && settings_.warm_start_before_integration;
+  if (predict)
+  {
+    predict_velocities(ctx);                              // world_warm_integration.cpp
+  }
+  advance(ctx, report);
+  // 2. Detect: broad then narrow phase, impulses matched from the cache.
+  detect(ctx, report);                                    // world_contacts.cpp
+  if (predict)
+  {
+    restore_velocities();
+  }
+  // 3. Penetration resolution, positions only.
+  load_velocities();                                      // world_solve.cpp
+  prepare_points(ctx.effects);
+  if (ctx.effects.position_correction)
+  {
+    correct_positions(ctx, report);                       // world_position.cpp
+  }
+  // 4.-6. Velocity resolution with warm starting.
+  solve_velocity_stage(ctx, report);
+  store_velocities();
+  ++report.substeps;
+  report.contact_count = points_.size();
+}
+
+void WorldImpl::kick(const StepContext& ctx)
+{
+  const Vec2 gravity_kick = settings_.gravity * ctx.h;
+  prev_position_.resize(bodies_.size());
+  prev_theta_.resize(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    prev_position_[i] = bodies_[i].position();
+    prev_theta_[i] = bodies_[i].theta();
+    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+    {
+      bodies_[i].set_velocity(bodies_[i].velocity() + gravity_kick);
+    }
+  }
+}
+
+void WorldImpl::advance(StepContext& ctx, StepReport& report)
+{
+  const bool swept = sweep(ctx.h, report);                // world_toi.cpp
+  ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    Body& b = bodies_[i];
+    if (b.type() == BodyType::Static || asleep_[i])
+    {
+      continue;
+    }
+    const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+    b.set_position(b.position() + b.velocity() * travel);
+    // Kinematic bodies follow their set spin whatever the rotation toggle says.
+    const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+    if (turns && b.omega() != 0.0)
+    {
+      b.set_theta(b.theta() + b.omega() * ctx.h);
+    }
+  }
+}
+
+void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
+{
+  if (settings_.solver_mode == SolverMode::Exact)
+  {
+    solve_exact_islands(report);                          // world_exact.cpp
+  }
+  if (ctx.warm)
+  {
+    warm_start();                                         // world_solve.cpp
+  }
+  solve_velocities(ctx.effects.friction);
+  const double residual = velocity_residual();
+  report.velocity_residual = std::max(report.velocity_residual, residual);
+  if (ctx.first)
+  {
+    report.warm_substep_residual = residual;
+  }
+}
+
+void WorldImpl::finish_report(StepReport& report) const
+{
   report.max_penetration = measure_penetration();
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
@@ -43,10 +185,9 @@ StepReport World::step(int frames)
     }
     report.sleeping_bodies += asleep_[i] ? 1 : 0;
   }
-  return report;
 }
 
-void World::require_finite_state() const
+void WorldImpl::require_finite_state() const
 {
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
@@ -61,109 +202,51 @@ void World::require_finite_state() const
   }
 }
 
-void World::step_frame(StepReport& report)
+void WorldImpl::save_motion()
 {
-  FrameEffects effects = select_effects();
-  if (!effects.flags.sleeping)
-  {
-    asleep_.assign(bodies_.size(), false);
-  }
-  const double h = settings_.dt / settings_.substeps;
-  for (int k = 0; k < settings_.substeps; ++k)
-  {
-    // The contacts of the previous substep (or frame) become the cache that
-    // warm starting and the friction state read; swapping keeps both
-    // buffers' capacity.
-    cache_.swap(contacts_);
-    const bool warm = effects.warm_start_now && (k == 0 || settings_.warm_start_every_substep);
-    substep(effects, h, k == 0, warm, report);
-    publish_contacts();
-    cache_h_ = h;
-  }
-  if (effects.flags.sleeping)
-  {
-    update_sleep();
-  }
-  time_ += settings_.dt;
-  ++frame_count_;
-  ++report.frames;
-  report.active |= effects.flags;
-}
-
-void World::substep(FrameEffects& effects, double h, bool first, bool warm, StepReport& report)
-{
-  kick(h);
-  const bool predict = warm && settings_.warm_start_before_integration;
-  if (predict)
-  {
-    predict_velocities(h, effects.flags.friction);
-  }
-  advance(effects, h, report);
-  detect(effects.flags, warm, h, report);
-  if (predict)
-  {
-    restore_velocities();
-  }
-  prepare_rows(effects.flags);
-  if (effects.flags.position_correction)
-  {
-    correct_positions(h, effects.flags.friction, report);
-  }
-  if (settings_.solver_mode == SolverMode::Exact)
-  {
-    solve_exact_islands(report);
-  }
-  if (warm)
-  {
-    warm_start();
-  }
-  solve_velocities(effects.flags.friction);
-  const double residual = velocity_residual();
-  report.velocity_residual = std::max(report.velocity_residual, residual);
-  if (first)
-  {
-    report.warm_substep_residual = residual;
-  }
-  ++report.substeps;
-  report.contact_count = rows_.size();
-}
-
-void World::kick(double h)
-{
-  const Vec2 gravity_kick = settings_.gravity * h;
-  prev_position_.resize(bodies_.size());
-  prev_theta_.resize(bodies_.size());
+  // Only what a step changes is kept aside (no outlines, no scratch), in
+  // buffers that keep their capacity from step to step.
+  saved_motion_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    prev_position_[i] = bodies_[i].position();
-    prev_theta_[i] = bodies_[i].theta();
-    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
-    {
-      bodies_[i].set_velocity(bodies_[i].velocity() + gravity_kick);
-    }
+    const Body& b = bodies_[i];
+    saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
+  }
+  saved_contacts_ = contacts_;
+  saved_asleep_ = asleep_;
+  saved_rest_time_ = rest_time_;
+  saved_time_ = time_;
+  saved_frame_count_ = frame_count_;
+  saved_cache_h_ = cache_h_;
+  // A prediction reads the previous substep's points (world_warm_integration.cpp).
+  if (settings_.warm_start_before_integration)
+  {
+    saved_points_ = points_;
   }
 }
 
-void World::advance(FrameEffects& effects, double h, StepReport& report)
+void WorldImpl::restore_motion()
 {
-  const bool swept = sweep(h, report);
-  effects.flags.time_of_impact = effects.flags.time_of_impact || swept;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     Body& b = bodies_[i];
-    if (b.type() == BodyType::Static || asleep_[i])
-    {
-      continue;
-    }
-    const double travel = swept ? toi_[i] * h : h;
-    b.set_position(b.position() + b.velocity() * travel);
-    // Kinematic bodies follow their set spin whatever the rotation toggle says.
-    const bool turns = effects.flags.rotation || b.type() == BodyType::Kinematic;
-    if (turns && b.omega() != 0.0)
-    {
-      b.set_theta(b.theta() + b.omega() * h);
-    }
+    const BodyMotion& m = saved_motion_[i];
+    b.set_position(m.position);
+    b.set_theta(m.theta);
+    b.set_velocity(m.velocity);
+    b.set_omega(m.omega);
+  }
+  contacts_.swap(saved_contacts_);
+  asleep_.swap(saved_asleep_);
+  rest_time_.swap(saved_rest_time_);
+  time_ = saved_time_;
+  frame_count_ = saved_frame_count_;
+  cache_h_ = saved_cache_h_;
+  if (settings_.warm_start_before_integration)
+  {
+    points_.swap(saved_points_);
   }
 }
 
+}  // namespace detail
 }  // namespace collision2d

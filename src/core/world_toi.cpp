@@ -11,9 +11,11 @@
 #include <limits>
 
 #include "collision2d/time_of_impact.h"
-#include "collision2d/world.h"
+#include "world_impl.h"
 
 namespace collision2d
+{
+namespace detail
 {
 namespace
 {
@@ -37,7 +39,7 @@ double inner_radius(const Body& b)
 
 }  // namespace
 
-void World::refresh_inner_radii()
+void WorldImpl::refresh_inner_radii()
 {
   inner_radius_.resize(bodies_.size());
   min_inner_radius_ = std::numeric_limits<double>::infinity();
@@ -52,19 +54,19 @@ void World::refresh_inner_radii()
   }
 }
 
-void World::append_inner_radius(const Body& body)
+void WorldImpl::append_inner_radius(const Body& body)
 {
   inner_radius_.push_back(inner_radius(body));
   min_inner_radius_ = inner_radius_.size() == 1 ? inner_radius_.back() : std::min(min_inner_radius_, inner_radius_.back());
 }
 
-Vec2 World::substep_displacement(std::size_t i, double h) const
+Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
 {
   const Body& b = bodies_[i];
   return b.type() == BodyType::Static || asleep_[i] ? Vec2{0.0, 0.0} : b.velocity() * h;
 }
 
-bool World::is_fast(std::size_t i, Vec2 displacement) const
+bool WorldImpl::is_fast(std::size_t i, Vec2 displacement) const
 {
   // Two bodies can pass through each other in one substep only when their
   // relative move exceeds the sum of their thinnest half-widths.
@@ -72,7 +74,7 @@ bool World::is_fast(std::size_t i, Vec2 displacement) const
   return length_sq(displacement) > reach * reach;
 }
 
-bool World::mark_swept_bodies(double h)
+bool WorldImpl::mark_swept_bodies(double h)
 {
   const Toggle mode = settings_.time_of_impact;
   swept_.assign(bodies_.size(), false);
@@ -92,7 +94,7 @@ bool World::mark_swept_bodies(double h)
   return any;
 }
 
-bool World::sweep(double h, StepReport& report)
+bool WorldImpl::sweep(double h, StepReport& report)
 {
   clamping_ = false;
   if (settings_.time_of_impact == Toggle::Off || !mark_swept_bodies(h))
@@ -139,9 +141,10 @@ bool World::sweep(double h, StepReport& report)
   return true;
 }
 
-bool World::clamped(std::size_t i) const
+bool WorldImpl::clamped(std::size_t i) const
 {
   return clamping_ && toi_[i] < 1.0;
 }
 
+}  // namespace detail
 }  // namespace collision2d

@@ -25,21 +25,23 @@
 // state and a cached contact that detection does not find again are exactly
 // those of the default order.
 
-#include "collision2d/world.h"
+#include "world_impl.h"
 
 namespace collision2d
 {
-
-bool World::previous_row_matches(std::size_t k) const
+namespace detail
 {
-  // rows_ still holds the previous substep's rows, which carry what the
+
+bool WorldImpl::previous_point_matches(std::size_t k) const
+{
+  // points_ still holds the previous substep's rows, which carry what the
   // cache lacks (lever arms, masses, friction state). Bodies removed since
   // shift the dense indices: such rows are left out.
-  const ContactRow& row = rows_[k];
+  const ContactPoint& row = points_[k];
   return row.a < ids_.size() && row.b < ids_.size() && ids_[row.a] == cache_[k].a && ids_[row.b] == cache_[k].b;
 }
 
-void World::predict_velocities(double h, bool friction)
+void WorldImpl::predict_velocities(const StepContext& ctx)
 {
   kicked_velocity_.resize(bodies_.size());
   kicked_omega_.resize(bodies_.size());
@@ -48,29 +50,31 @@ void World::predict_velocities(double h, bool friction)
     kicked_velocity_[i] = bodies_[i].velocity();
     kicked_omega_[i] = bodies_[i].omega();
   }
-  if (rows_.size() != cache_.size())
+  if (points_.size() != cache_.size())
   {
     return;
   }
   // The same rescaling to this substep's length as detection applies.
-  const double scale = settings_.warm_start_factor * h / cache_h_;
-  for (std::size_t k = 0; k < rows_.size(); ++k)
+  const double scale = settings_.warm_start_factor * ctx.h / cache_h_;
+  for (std::size_t k = 0; k < points_.size(); ++k)
   {
-    ContactRow& row = rows_[k];
+    ContactPoint& row = points_[k];
     // Rows of bodies that fell asleep since are carried, as in detection.
-    row.active = row.active && previous_row_matches(k) && !asleep_[row.a] && !asleep_[row.b];
-    row.impulse.normal *= scale;
-    row.impulse.tangent *= scale;
+    row.active = row.active && previous_point_matches(k) && !asleep_[row.a] && !asleep_[row.b];
+    row.lambda_n *= scale;
+    row.lambda_t *= scale;
     // The prediction is of resting contacts; an impact's bounce is the
     // velocity solve's business, which measures its own approach speed.
     row.target = 0.0;
     row.exact = false;
   }
+  load_velocities();
   warm_start();
-  solve_velocities(friction);
+  solve_velocities(ctx.effects.friction);
+  store_velocities();
 }
 
-void World::restore_velocities()
+void WorldImpl::restore_velocities()
 {
   for (std::size_t i = 0; i < kicked_velocity_.size() && i < bodies_.size(); ++i)
   {
@@ -79,4 +83,5 @@ void World::restore_velocities()
   }
 }
 
+}  // namespace detail
 }  // namespace collision2d

@@ -1,0 +1,178 @@
+// Internal to the core: the one contact-solver kernel (SPEC section 3). One
+// constraint-point type and the verbs every solver uses on it: ContactSolver's
+// Gauss-Seidel sweeps, the World's substeps and the exact mode's LCP builders.
+// Nothing outside this file builds a Newton target, clamps Coulomb friction
+// or applies a contact impulse.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "collision2d/vec2.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// Velocity state of one body during a solve. Non-dynamic bodies carry zero
+/// inverse mass and inertia, so impulses never change them.
+struct BodyVelocity
+{
+  Vec2 v;
+  double omega = 0.0;
+  double inv_mass = 0.0;
+  double inv_inertia = 0.0;
+};
+
+/// One contact point: geometry, the masses seen through it, the fixed Newton
+/// target, the friction state and the accumulated impulses.
+struct ContactPoint
+{
+  // Geometry.
+  std::size_t a = 0;  ///< body index, a < b
+  std::size_t b = 0;
+  Vec2 normal;        ///< unit, from a to b
+  Vec2 tangent;       ///< perp(normal): tangential impulses act on b along it
+  Vec2 point;         ///< world contact point at detection (m)
+  Vec2 r_a;           ///< lever arm from a's centre to the point (m)
+  Vec2 r_b;
+  double penetration = 0.0;  ///< depth at detection (m)
+  std::uint32_t feature = 0;
+
+  // Masses. Per point, because the World drops a body's inertia where it
+  // cannot turn (rotation off, a smooth disk); 0 for static and kinematic bodies.
+  double inv_mass_a = 0.0;     ///< 1/kg
+  double inv_mass_b = 0.0;
+  double inv_inertia_a = 0.0;  ///< 1/(kg m^2)
+  double inv_inertia_b = 0.0;
+  double k_n = 0.0;            ///< inverse effective mass along the normal (1/kg)
+  double k_t = 0.0;            ///< inverse effective mass along the tangent (1/kg)
+  double normal_mass = 0.0;    ///< 1 / k_n (kg)
+  double tangent_mass = 0.0;   ///< 1 / k_t (kg)
+  double pair_tangent_mass = 0.0;  ///< 1 / K_t at a two-point manifold's midpoint (kg)
+
+  // Targets, friction state and impulses.
+  double target = 0.0;    ///< post-solve normal separation speed (m/s), fixed at prepare
+  double mu_s = 0.0;      ///< static friction coefficient
+  double mu_k = 0.0;      ///< kinetic friction coefficient
+  bool kinetic = false;   ///< slid before: the kinetic bound applies
+  bool sliding = false;   ///< friction at its bound in the last solve
+  double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
+  double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
+
+  // Bookkeeping of the solvers that own the point.
+  std::size_t contact = 0;  ///< index into the caller's contact list
+  std::size_t cluster = 0;  ///< representative body of the coupled cluster
+  int count = 1;            ///< points in this pair's manifold
+  bool active = true;       ///< World: false for a sleeping island's carried point
+  bool exact = false;       ///< World: solved by its island's LCP this substep
+  bool position_solved = false;  ///< World: penetration corrected by its island's LCP
+};
+
+/// Inverse effective mass of an impulse along `dir` at lever arms r_a, r_b (1/kg).
+inline double inverse_effective_mass(const ContactPoint& p, Vec2 r_a, Vec2 r_b, Vec2 dir)
+{
+  const double arm_a = cross(r_a, dir);
+  const double arm_b = cross(r_b, dir);
+  return p.inv_mass_a + p.inv_mass_b + p.inv_inertia_a * arm_a * arm_a + p.inv_inertia_b * arm_b * arm_b;
+}
+
+/// Newton's rule: the post-solve separation speed is e times the approach
+/// speed measured before the solve, when that exceeds `threshold` (m/s); a
+/// separating, resting or slow contact gets 0.
+inline double newton_target(double normal_speed, double restitution, double threshold)
+{
+  const double approach = -normal_speed;
+  return restitution > 0.0 && approach > threshold ? restitution * approach : 0.0;
+}
+
+/// Relative velocity of b with respect to a at lever arms r_a, r_b.
+inline Vec2 relative_velocity_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b, const std::vector<BodyVelocity>& state)
+{
+  const BodyVelocity& a = state[p.a];
+  const BodyVelocity& b = state[p.b];
+  return b.v + cross(b.omega, r_b) - a.v - cross(a.omega, r_a);
+}
+
+inline Vec2 relative_velocity(const ContactPoint& p, const std::vector<BodyVelocity>& state)
+{
+  return relative_velocity_at(p, p.r_a, p.r_b, state);
+}
+
+/// Applies `impulse` to b and its opposite to a at lever arms r_a, r_b, so
+/// linear and angular momentum are unchanged.
+inline void apply_impulse_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b, Vec2 impulse,
+                             std::vector<BodyVelocity>& state)
+{
+  BodyVelocity& a = state[p.a];
+  BodyVelocity& b = state[p.b];
+  if (p.inv_mass_a != 0.0)
+  {
+    a.v = a.v - p.inv_mass_a * impulse;
+    a.omega = a.omega - p.inv_inertia_a * cross(r_a, impulse);
+  }
+  if (p.inv_mass_b != 0.0)
+  {
+    b.v = b.v + p.inv_mass_b * impulse;
+    b.omega = b.omega + p.inv_inertia_b * cross(r_b, impulse);
+  }
+}
+
+inline void apply_impulse(const ContactPoint& p, Vec2 impulse, std::vector<BodyVelocity>& state)
+{
+  apply_impulse_at(p, p.r_a, p.r_b, impulse, state);
+}
+
+/// Fills the point's effective masses and its Newton target from the
+/// velocities now, before any impulse. The caller sets the lever arms and the
+/// per-point inverse masses first.
+void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold);
+/// The midpoint tangent mass of a two-point manifold, for its one friction row.
+void prepare_pair(ContactPoint& first, const ContactPoint& second);
+
+/// Applies the accumulated impulses (warm starting from a previous solve).
+void warm_start(const ContactPoint& p, std::vector<BodyVelocity>& state);
+
+/// One Gauss-Seidel update of the normal impulse toward the target, kept
+/// >= 0 (a contact pushes, never pulls). Returns whether the impulse changed.
+bool solve_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
+/// One update of the tangential impulse toward sticking, clamped to the cone.
+bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state);
+/// The two normal rows of a manifold solved together as a 2x2 LCP. Returns
+/// false, changing nothing, when the rows are nearly dependent; sets
+/// `changed` when an impulse changed.
+bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state, bool& changed);
+/// A manifold's friction as one row at its midpoint against the summed normal
+/// impulse, split in proportion to the normal impulses.
+void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state);
+/// Both normals and the midpoint friction row solved at once assuming the pair
+/// sticks; false, changing nothing, unless that keeps both normal impulses
+/// >= 0 and the friction inside its cone.
+bool solve_stick_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state);
+
+/// Coulomb's law with the stick/slip state: a sticking point holds up to
+/// mu_s times `normal_impulse`, a sliding one is held at mu_k. Returns the
+/// clamped `needed` and records whether it hit the bound.
+double coulomb(ContactPoint& p, double needed, double normal_impulse);
+/// The friction coefficient of the point's cone in its current state.
+inline double cone(const ContactPoint& p) { return p.kinetic ? p.mu_k : p.mu_s; }
+
+/// Off-diagonal of a manifold's normal block: normal speed at one point per
+/// unit normal impulse at the other (1/kg).
+double pair_coupling(const ContactPoint& first, const ContactPoint& second);
+/// The two-point LCP w = K y + q >= 0, y >= 0, y . w = 0 (K symmetric positive
+/// definite) solved exactly by trying its four cases.
+void solve_lcp2(double k11, double k12, double k22, double q1, double q2, double& y1, double& y2);
+/// Whether a 2x2 block with these entries is well enough conditioned to solve.
+bool block_solvable(double k11, double k12, double k22);
+
+/// Normal residual (m/s): a pushing point must meet its target exactly, an
+/// idle one must not fall short of it.
+double normal_residual(const ContactPoint& p, const std::vector<BodyVelocity>& state);
+/// The larger of the normal residual and the Coulomb residual for friction
+/// coefficient mu (m/s); zero exactly at a solution with fixed targets.
+double point_residual(const ContactPoint& p, const std::vector<BodyVelocity>& state, double mu);
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,172 @@
+// Internal to the core: the World's state and the stages of its step. The
+// stages run in the order world_step.cpp lists them; each file below holds
+// one topic.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "collision2d/aabb.h"
+#include "collision2d/body.h"
+#include "collision2d/broad_phase.h"
+#include "collision2d/collide.h"
+#include "collision2d/world.h"
+#include "contact_kernel.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// What one substep needs to know, decided once per frame or substep.
+struct StepContext
+{
+  double h = 0.0;      ///< substep length (s)
+  double inv_h = 0.0;  ///< 1/s
+  ActiveEffects effects;       ///< what this frame models
+  bool warm_available = false; ///< warm starting on and a cache to start from
+  bool first = false;          ///< first substep of the frame
+  bool warm = false;           ///< this substep starts from cached impulses
+};
+
+/// Each body's pose and velocity, what a failed step puts back.
+struct BodyMotion
+{
+  Vec2 position;
+  double theta = 0.0;
+  Vec2 velocity;
+  double omega = 0.0;
+};
+
+struct WorldImpl
+{
+  explicit WorldImpl(const WorldSettings& settings) : settings_(settings) {}
+
+  // world.cpp: bodies by id.
+  std::size_t index_of(BodyId id) const;
+  void append_body(BodyId id, const Body& body, const Material& material);
+  void remove_body(BodyId id);
+  void wake(std::size_t index);
+  void clear();
+
+  // world_step.cpp: the step, top-down.
+  StepReport step(int frames);
+  void step_frame(StepReport& report);
+  void substep(StepContext& ctx, StepReport& report);
+  void kick(const StepContext& ctx);
+  void advance(StepContext& ctx, StepReport& report);
+  void solve_velocity_stage(const StepContext& ctx, StepReport& report);
+  void finish_report(StepReport& report) const;
+  /// Throws std::overflow_error naming the first body whose state is not finite.
+  void require_finite_state() const;
+  void save_motion();
+  void restore_motion();
+
+  // world_effects.cpp
+  StepContext select_effects() const;
+  bool needs_rotation(bool friction) const;
+  bool any_pair_with(double (*property)(const Material&)) const;
+  bool sleeping_wanted() const;
+
+  // world_warm_integration.cpp
+  void predict_velocities(const StepContext& ctx);
+  bool previous_point_matches(std::size_t k) const;
+  void restore_velocities();
+
+  // world_toi.cpp
+  void refresh_inner_radii();
+  /// O(1) update for a body just appended: building a world stays O(n).
+  void append_inner_radius(const Body& body);
+  Vec2 substep_displacement(std::size_t i, double h) const;
+  bool is_fast(std::size_t i, Vec2 displacement) const;
+  bool mark_swept_bodies(double h);
+  bool sweep(double h, StepReport& report);
+  bool clamped(std::size_t i) const;
+
+  // world_contacts.cpp
+  bool is_mover(std::size_t i) const;
+  void detect(const StepContext& ctx, StepReport& report);
+  bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
+  void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction);
+  void carry_sleeping_pair(std::size_t i, std::size_t j);
+  const WorldContact* find_cached(BodyId a, BodyId b, std::uint32_t feature) const;
+  void publish_contacts();
+  double measure_penetration() const;
+
+  // world_solve.cpp: the velocity stage on the contact-solver kernel.
+  void load_velocities();
+  void store_velocities();
+  void prepare_points(const ActiveEffects& effects);
+  void warm_start();
+  void solve_velocities(bool friction);
+  double velocity_residual() const;
+
+  // world_position.cpp: penetration resolution (SPEC 3.2 step 3).
+  void correct_positions(const StepContext& ctx, StepReport& report);
+  void correct_pass(double softness, bool hold, bool resting_only);
+  Vec2 integration_move(std::size_t i, Vec2 r) const;
+  void hold_static_friction(const ContactPoint& first, const ContactPoint& second);
+  void hold_all_static_friction(bool friction);
+  double current_depth(const ContactPoint& p) const;
+  void correct_point(const ContactPoint& p, double depth, double softness);
+  bool correct_pair(const ContactPoint& first, const ContactPoint& second, double depth1, double depth2,
+                    double softness);
+  void displace(std::size_t i, double lambda, Vec2 n, Vec2 r, double inv_mass, double inv_inertia);
+
+  // world_exact.cpp
+  void solve_exact_islands(StepReport& report);
+  void solve_position_islands(double softness, StepReport& report);
+
+  // world_sleep.cpp
+  void update_sleep();
+  void update_rest_times();
+
+  WorldSettings settings_;
+  std::vector<WorldContact> contacts_;
+  double time_ = 0.0;
+  std::uint64_t frame_count_ = 0;
+
+  // Bodies in ascending id order; a dense index is a position in these arrays.
+  std::vector<Body> bodies_;
+  std::vector<Material> materials_;
+  std::vector<BodyId> ids_;
+  BodyId next_id_ = 0;
+  std::vector<bool> asleep_;
+  std::vector<double> rest_time_;     ///< how long each body has been resting (s)
+  std::vector<double> inner_radius_;  ///< m, for the time-of-impact speed test
+  double min_inner_radius_ = 0.0;
+
+  // Scratch reused across substeps and steps (no allocation once warmed up).
+  BroadPhase broad_phase_;
+  BroadPhase sweep_phase_;
+  std::vector<Aabb> boxes_;
+  std::vector<BodyPair> pairs_;
+  std::vector<bool> swept_;           ///< bodies swept this substep
+  std::vector<double> toi_;           ///< fraction of the substep each body travels
+  bool clamping_ = false;             ///< some body stopped at its time of impact this substep
+  std::vector<ContactPoint> points_;  ///< this substep's contact points
+  std::vector<BodyVelocity> velocity_;  ///< velocities during the velocity stage
+  std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
+  std::vector<double> prev_theta_;
+  std::vector<Vec2> moved_;           ///< position correction applied this substep (m)
+  std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
+  std::vector<WorldContact> cache_;   ///< previous substep's contacts, for warm starting
+  double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
+  std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
+  std::vector<double> kicked_omega_;
+  std::vector<std::size_t> island_;   ///< union-find parents for sleeping
+  std::vector<bool> island_awake_;
+
+  // What a failed step puts back (kept across steps: no allocation per step).
+  std::vector<BodyMotion> saved_motion_;
+  std::vector<WorldContact> saved_contacts_;
+  std::vector<bool> saved_asleep_;
+  std::vector<double> saved_rest_time_;
+  std::vector<ContactPoint> saved_points_;  ///< only when a prediction reads them next step
+  double saved_cache_h_ = 0.0;
+  double saved_time_ = 0.0;
+  std::uint64_t saved_frame_count_ = 0;
+};
+
+}  // namespace detail
+}  // namespace collision2d

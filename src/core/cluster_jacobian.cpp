@@ -9,7 +9,7 @@ namespace
 constexpr int kDofPerBody = 3;  // vx, vy, omega
 }  // namespace
 
-void begin_jacobian(const std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+void begin_jacobian(const std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
                     Eigen::Index directions, ClusterJacobian& j)
 {
   if (j.local_body.size() < state.size())
@@ -39,7 +39,7 @@ void add_jacobian_entry(ClusterJacobian& j, Eigen::Index row, std::size_t body, 
   j.jacobian(row, column + 2) = sign * cross(r, dir);
 }
 
-void finish_jacobian(const std::vector<ContactRow>& rows, ClusterRange cluster, ClusterJacobian& j)
+void finish_jacobian(const std::vector<ContactPoint>& rows, ClusterRange cluster, ClusterJacobian& j)
 {
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
   {

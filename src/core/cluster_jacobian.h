@@ -26,7 +26,7 @@ struct ClusterJacobian
 /// Numbers the cluster's dynamic bodies (static and kinematic ones get no
 /// columns: their velocities never change), fills W and sets the jacobian to
 /// zero with `directions` rows.
-void begin_jacobian(const std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+void begin_jacobian(const std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
                     Eigen::Index directions, ClusterJacobian& j);
 
 /// Writes sign * (dir, r x dir) into row `row` at the body's columns; nothing
@@ -35,7 +35,7 @@ void add_jacobian_entry(ClusterJacobian& j, Eigen::Index row, std::size_t body, 
 
 /// Computes the Delassus matrix and forgets the numbering, leaving
 /// local_body all -1 for the next cluster.
-void finish_jacobian(const std::vector<ContactRow>& rows, ClusterRange cluster, ClusterJacobian& j);
+void finish_jacobian(const std::vector<ContactPoint>& rows, ClusterRange cluster, ClusterJacobian& j);
 
 }  // namespace detail
 }  // namespace collision2d

@@ -38,13 +38,6 @@ void unite(std::vector<std::size_t>& parent, std::size_t i, std::size_t j)
     parent[ri] = rj;
 }
 
-/// Inverse effective mass of an impulse along `dir` at lever arms r_a, r_b.
-double inverse_effective_mass(const BodyVelocity& a, const BodyVelocity& b, Vec2 r_a, Vec2 r_b, Vec2 dir)
-{
-  const double ra_dir = cross(r_a, dir);
-  const double rb_dir = cross(r_b, dir);
-  return a.inv_mass + b.inv_mass + a.inv_inertia * ra_dir * ra_dir + b.inv_inertia * rb_dir * rb_dir;
-}
 }  // namespace
 
 void validate_contact(const Contact& c, std::size_t index, std::size_t body_count)
@@ -108,23 +101,23 @@ double total_kinetic_energy(const std::vector<Body>& bodies)
 }
 
 void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>& contacts, double restitution,
-                     ContactProblem& problem)
+                     double mu, ContactProblem& problem)
 {
   load_velocities(bodies, problem.state);
-  build_rows(bodies, problem.state, contacts, restitution, problem.rows);
+  build_rows(bodies, problem.state, contacts, restitution, mu, problem.rows);
   partition_clusters(problem.state, problem.rows, problem.clusters, problem.parent);
 }
 
-void store_impulses(const std::vector<ContactRow>& rows, std::size_t contact_count,
+void store_impulses(const std::vector<ContactPoint>& rows, std::size_t contact_count,
                     std::vector<ContactImpulse>& impulses)
 {
   impulses.assign(contact_count, ContactImpulse{});
-  for (const ContactRow& row : rows)
+  for (const ContactPoint& row : rows)
     impulses[row.contact] = {row.lambda_n, row.lambda_t};
 }
 
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
-                const std::vector<Contact>& contacts, double restitution, std::vector<ContactRow>& rows)
+                const std::vector<Contact>& contacts, double restitution, double mu, std::vector<ContactPoint>& rows)
 {
   rows.clear();
   rows.reserve(contacts.size());
@@ -132,39 +125,46 @@ void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>
   {
     const Contact& c = contacts[i];
     validate_contact(c, i, bodies.size());
-    ContactRow row;
-    row.contact = i;
-    row.a = c.a;
-    row.b = c.b;
-    row.normal = c.normal;
-    row.tangent = perp(c.normal);
-    row.r_a = c.point - bodies[c.a].position();
-    row.r_b = c.point - bodies[c.b].position();
-    row.k_n = inverse_effective_mass(state[c.a], state[c.b], row.r_a, row.r_b, row.normal);
-    if (!(row.k_n > 0.0))
-      continue;  // neither body can move: nothing to solve
-    row.k_t = inverse_effective_mass(state[c.a], state[c.b], row.r_a, row.r_b, row.tangent);
-    // Measured once, before any impulse: later impulses never move the target.
-    const double approach = dot(relative_velocity(row, state), row.normal);
-    row.target = approach < 0.0 ? -restitution * approach : 0.0;
-    rows.push_back(row);
+    ContactPoint p;
+    p.contact = i;
+    p.a = c.a;
+    p.b = c.b;
+    p.normal = c.normal;
+    p.point = c.point;
+    p.penetration = c.penetration;
+    p.feature = c.feature;
+    p.r_a = c.point - bodies[c.a].position();
+    p.r_b = c.point - bodies[c.b].position();
+    p.inv_mass_a = state[c.a].inv_mass;
+    p.inv_mass_b = state[c.b].inv_mass;
+    p.inv_inertia_a = state[c.a].inv_inertia;
+    p.inv_inertia_b = state[c.b].inv_inertia;
+    p.mu_s = mu;
+    p.mu_k = mu;
+    // Every approach counts (threshold 0): an instantaneous solve has no
+    // resting contacts to protect from jitter.
+    prepare_point(p, state, restitution, 0.0);
+    if (p.k_n > 0.0)
+    {
+      rows.push_back(p);
+    }
   }
 }
 
-void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactRow>& rows,
+void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
                         std::vector<ClusterRange>& clusters, std::vector<std::size_t>& parent)
 {
   parent.resize(state.size());
   for (std::size_t i = 0; i < parent.size(); ++i)
     parent[i] = i;
-  for (const ContactRow& row : rows)
+  for (const ContactPoint& row : rows)
     if (is_dynamic(state[row.a]) && is_dynamic(state[row.b]))
       unite(parent, row.a, row.b);
-  for (ContactRow& row : rows)
+  for (ContactPoint& row : rows)
     row.cluster = find_root(parent, is_dynamic(state[row.a]) ? row.a : row.b);
 
   // Contact index last makes the order total, so the solve is deterministic.
-  std::sort(rows.begin(), rows.end(), [](const ContactRow& l, const ContactRow& r) {
+  std::sort(rows.begin(), rows.end(), [](const ContactPoint& l, const ContactPoint& r) {
     if (l.cluster != r.cluster)
       return l.cluster < r.cluster;
     if (l.a != r.a)
@@ -184,47 +184,6 @@ void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<Cont
     clusters.push_back({begin, end});
     begin = end;
   }
-}
-
-// Residual of one row (m/s), zero exactly at a solution of the contact problem
-// with fixed targets:
-//  - normal: with impulse (lambda_n > 0) the contact must reach its target,
-//    |vn - target|; without impulse it must not fall short of it,
-//    max(0, target - vn).
-//  - friction (mu > 0 only):
-//    * lambda_n == 0: no friction may act; |lambda_t| * k_t is the velocity
-//      change the stray impulse causes;
-//    * strictly inside the cone (|lambda_t| < mu lambda_n): the contact sticks,
-//      |vt|;
-//    * on the cone: it must slide against the impulse, max(0, vt sign(lambda_t)),
-//      plus (|lambda_t| - mu lambda_n) k_t for any excursion outside the cone.
-// The row's residual is the larger of the two; a cluster's is the largest row's.
-double row_residual(const ContactRow& row, const std::vector<BodyVelocity>& state, double mu)
-{
-  const Vec2 dv = relative_velocity(row, state);
-  const double vn = dot(dv, row.normal);
-  const double normal = row.lambda_n > 0.0 ? std::abs(vn - row.target) : std::max(0.0, row.target - vn);
-  if (mu <= 0.0)
-    return normal;
-
-  const double friction_bound = mu * row.lambda_n;
-  const double magnitude = std::abs(row.lambda_t);
-  double friction = 0.0;
-  if (row.lambda_n <= 0.0)
-  {
-    friction = magnitude * row.k_t;
-  }
-  else if (magnitude < friction_bound)
-  {
-    friction = std::abs(dot(dv, row.tangent));
-  }
-  else
-  {
-    const double vt = dot(dv, row.tangent);
-    const double along_impulse = row.lambda_t > 0.0 ? vt : (row.lambda_t < 0.0 ? -vt : 0.0);
-    friction = std::max(0.0, along_impulse) + (magnitude - friction_bound) * row.k_t;
-  }
-  return std::max(normal, friction);
 }
 
 }  // namespace detail

@@ -1,7 +1,6 @@
-// Internal to the core: the per-contact rows the velocity solver iterates on,
-// the coupled clusters they form, and the residual that decides convergence.
-// Shared by the iterative solver and any other solver mode that works on the
-// same rows and fixed targets.
+// Internal to the core: ContactSolver's setup around the kernel: input
+// checks, the kernel points of a contact list, the coupled clusters they form,
+// and loading and storing the bodies' velocities.
 #pragma once
 
 #include <cstddef>
@@ -16,29 +15,6 @@ namespace collision2d
 {
 namespace detail
 {
-/// One contact point: geometry, effective masses, the fixed Newton target and
-/// the accumulated impulses.
-struct ContactRow
-{
-  std::size_t contact = 0;  ///< index into the caller's contact list
-  std::size_t cluster = 0;  ///< representative body of the coupled cluster
-  std::size_t a = 0;
-  std::size_t b = 0;
-  Vec2 normal;
-  Vec2 tangent;  ///< perp(normal)
-  Vec2 r_a;      ///< lever arm from a's centre to the contact point
-  Vec2 r_b;
-  double k_n = 0.0;     ///< inverse effective mass along the normal (1/kg)
-  double k_t = 0.0;     ///< inverse effective mass along the tangent (1/kg)
-  double target = 0.0;  ///< post-solve normal separation speed to reach (m/s)
-  double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
-  double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
-  /// Coulomb coefficient of this contact's cone. The exact solver gives every
-  /// row the same value; the World's exact mode gives each its materials' one.
-  double mu = 0.0;
-  bool sliding = false;  ///< exact solve: the contact slides (on its cone)
-};
-
 /// Rows [begin, end) of the solver's row list form one coupled cluster.
 struct ClusterRange
 {
@@ -99,18 +75,19 @@ void store_velocities(const std::vector<BodyVelocity>& state, std::vector<Body>&
 /// Sum of the bodies' kinetic energies (J).
 double total_kinetic_energy(const std::vector<Body>& bodies);
 
-/// Builds one row per contact whose normal effective mass is positive (a pair of
-/// two non-dynamic bodies is skipped). Targets are e times the approach speed
-/// measured now, before any impulse; 0 for separating or resting contacts.
+/// Builds one kernel point per contact whose normal effective mass is
+/// positive (a pair of two non-dynamic bodies is skipped), with Coulomb
+/// coefficient mu and the Newton target of restitution e from the velocities
+/// now, before any impulse.
 /// Throws std::invalid_argument for a contact naming a missing or the same body.
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
-                const std::vector<Contact>& contacts, double restitution, std::vector<ContactRow>& rows);
+                const std::vector<Contact>& contacts, double restitution, double mu, std::vector<ContactPoint>& rows);
 
 /// Reorders `rows` so each coupled cluster is contiguous (and, inside it, rows
 /// of the same pair are adjacent) and fills `clusters`. Only dynamic bodies
 /// couple: contacts that share just a static or kinematic body stay apart,
 /// because that body's velocity never changes. `parent` is working storage.
-void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactRow>& rows,
+void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
                         std::vector<ClusterRange>& clusters, std::vector<std::size_t>& parent);
 
 /// Everything a velocity solve works on, sized once per call so the
@@ -118,7 +95,7 @@ void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<Cont
 struct ContactProblem
 {
   std::vector<BodyVelocity> state;
-  std::vector<ContactRow> rows;
+  std::vector<ContactPoint> rows;
   std::vector<ClusterRange> clusters;
   std::vector<std::size_t> parent;  ///< union-find working storage
 };
@@ -126,35 +103,11 @@ struct ContactProblem
 /// Loads the velocities, builds the rows with their fixed Newton targets and
 /// groups them into coupled clusters: the setup both solver modes share.
 void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>& contacts, double restitution,
-                     ContactProblem& problem);
+                     double mu, ContactProblem& problem);
 
 /// One ContactImpulse per input contact (zero for contacts that made no row).
-void store_impulses(const std::vector<ContactRow>& rows, std::size_t contact_count,
+void store_impulses(const std::vector<ContactPoint>& rows, std::size_t contact_count,
                     std::vector<ContactImpulse>& impulses);
-
-/// Relative velocity of b with respect to a at the row's contact point.
-inline Vec2 relative_velocity(const ContactRow& row, const std::vector<BodyVelocity>& state)
-{
-  const BodyVelocity& a = state[row.a];
-  const BodyVelocity& b = state[row.b];
-  return (b.v + cross(b.omega, row.r_b)) - (a.v + cross(a.omega, row.r_a));
-}
-
-/// Applies impulse p to b at the contact point and -p to a, so linear and
-/// angular momentum are unchanged.
-inline void apply_impulse(const ContactRow& row, Vec2 p, std::vector<BodyVelocity>& state)
-{
-  BodyVelocity& a = state[row.a];
-  BodyVelocity& b = state[row.b];
-  a.v -= a.inv_mass * p;
-  a.omega -= a.inv_inertia * cross(row.r_a, p);
-  b.v += b.inv_mass * p;
-  b.omega += b.inv_inertia * cross(row.r_b, p);
-}
-
-/// Complementarity residual of one row at the current velocities (m/s); see
-/// the definition in contact_rows.cpp.
-double row_residual(const ContactRow& row, const std::vector<BodyVelocity>& state, double mu);
 
 }  // namespace detail
 }  // namespace collision2d

@@ -61,9 +61,9 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
 
   // All working storage is sized here, once per call; the sweeps allocate nothing.
   detail::ContactProblem problem;
-  detail::prepare_problem(bodies, contacts, e_, problem);
+  detail::prepare_problem(bodies, contacts, e_, mu_, problem);
   std::vector<detail::BodyVelocity>& state = problem.state;
-  std::vector<detail::ContactRow>& rows = problem.rows;
+  std::vector<detail::ContactPoint>& rows = problem.rows;
   report.cluster_count = problem.clusters.size();
 
   for (const detail::ClusterRange& cluster : problem.clusters)
@@ -73,7 +73,7 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
     report.max_residual = std::max(report.max_residual, result.residual);
     report.converged = report.converged && result.converged;
   }
-  for (const detail::ContactRow& row : rows)
+  for (const detail::ContactPoint& row : rows)
     report.total_normal_impulse += row.lambda_n;
 
   detail::store_velocities(state, bodies);

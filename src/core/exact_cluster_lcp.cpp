@@ -9,14 +9,14 @@ namespace detail
 namespace
 {
 /// G = J W J^T over the cluster's normal and tangent directions.
-void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                        const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   const Eigen::Index contacts = static_cast<Eigen::Index>(cluster.end - cluster.begin);
   begin_jacobian(rows, cluster, state, 2 * contacts, lcp);
   for (Eigen::Index i = 0; i < contacts; ++i)
   {
-    const ContactRow& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[cluster.begin + i];
     add_jacobian_entry(lcp, 2 * i, row.b, 1.0, row.normal, row.r_b);
     add_jacobian_entry(lcp, 2 * i, row.a, -1.0, row.normal, row.r_a);
     add_jacobian_entry(lcp, 2 * i + 1, row.b, 1.0, row.tangent, row.r_b);
@@ -25,7 +25,7 @@ void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster
   finish_jacobian(rows, cluster, lcp);
 }
 
-void assemble_frictionless(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_frictionless(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                            const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
@@ -33,7 +33,7 @@ void assemble_frictionless(const std::vector<ContactRow>& rows, ClusterRange clu
   lcp.q.resize(m);
   for (Eigen::Index i = 0; i < m; ++i)
   {
-    const ContactRow& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[cluster.begin + i];
     const double s_i = 1.0 / std::sqrt(row.k_n);
     for (Eigen::Index j = 0; j < m; ++j)
       lcp.M(i, j) = lcp.delassus(2 * i, 2 * j) * s_i / std::sqrt(rows[cluster.begin + j].k_n);
@@ -41,7 +41,7 @@ void assemble_frictionless(const std::vector<ContactRow>& rows, ClusterRange clu
   }
 }
 
-void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_frictional(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                          const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
@@ -50,7 +50,7 @@ void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange clust
   lcp.q.resize(k * m);
   for (Eigen::Index i = 0; i < m; ++i)
   {
-    const ContactRow& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[cluster.begin + i];
     const double s_i = 1.0 / std::sqrt(row.k_n);
     const Eigen::Index n_i = k * i;  // then t+ at n_i + 1, t- at n_i + 2, beta at n_i + 3
     for (Eigen::Index j = 0; j < m; ++j)
@@ -69,7 +69,7 @@ void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange clust
     // beta + vt >= 0 and beta - vt >= 0; mu lambda_n - lambda_t+ - lambda_t- >= 0.
     lcp.M(n_i + 1, n_i + 3) = 1.0;
     lcp.M(n_i + 2, n_i + 3) = 1.0;
-    lcp.M(n_i + 3, n_i) = row.mu;
+    lcp.M(n_i + 3, n_i) = cone(row);
     lcp.M(n_i + 3, n_i + 1) = -1.0;
     lcp.M(n_i + 3, n_i + 2) = -1.0;
 
@@ -83,21 +83,21 @@ void assemble_frictional(const std::vector<ContactRow>& rows, ClusterRange clust
 }
 }  // namespace
 
-bool cluster_has_friction(const std::vector<ContactRow>& rows, ClusterRange cluster)
+bool cluster_has_friction(const std::vector<ContactPoint>& rows, ClusterRange cluster)
 {
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    if (rows[r].mu > 0.0)
+    if (cone(rows[r]) > 0.0)
       return true;
   return false;
 }
 
-std::size_t cluster_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster)
+std::size_t cluster_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster)
 {
   const int k = cluster_has_friction(rows, cluster) ? kFrictionalUnknowns : kFrictionlessUnknowns;
   return (cluster.end - cluster.begin) * static_cast<std::size_t>(k);
 }
 
-void assemble_cluster_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_cluster_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                           const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
 {
   assemble_delassus(rows, cluster, state, lcp);
@@ -107,12 +107,12 @@ void assemble_cluster_lcp(const std::vector<ContactRow>& rows, ClusterRange clus
     assemble_frictionless(rows, cluster, state, lcp);
 }
 
-void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std::vector<ContactRow>& rows)
+void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std::vector<ContactPoint>& rows)
 {
   const int k = cluster_has_friction(rows, cluster) ? kFrictionalUnknowns : kFrictionlessUnknowns;
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
   {
-    ContactRow& row = rows[r];
+    ContactPoint& row = rows[r];
     const Eigen::Index n_i = k * static_cast<Eigen::Index>(r - cluster.begin);
     const double s = 1.0 / std::sqrt(row.k_n);
     row.lambda_n = z(n_i) * s;
@@ -124,7 +124,7 @@ void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std:
     const double t_minus = z(n_i + 2) * s;
     row.sliding = z(n_i + 3) > 0.0;
     if (row.sliding)
-      row.lambda_t = (t_plus >= t_minus ? 1.0 : -1.0) * row.mu * row.lambda_n;
+      row.lambda_t = (t_plus >= t_minus ? 1.0 : -1.0) * cone(row) * row.lambda_n;
     else
       row.lambda_t = t_plus - t_minus;
   }

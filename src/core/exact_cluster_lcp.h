@@ -39,22 +39,22 @@ inline int unknowns_per_contact(double mu) { return mu > 0.0 ? kFrictionalUnknow
 /// True when any row of the cluster has a friction cone (row.mu > 0): the
 /// cluster is then assembled with friction unknowns for every contact, and a
 /// row with mu = 0 gets a cone that admits no tangential impulse.
-bool cluster_has_friction(const std::vector<ContactRow>& rows, ClusterRange cluster);
+bool cluster_has_friction(const std::vector<ContactPoint>& rows, ClusterRange cluster);
 
 /// Unknowns of the cluster's LCP.
-std::size_t cluster_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster);
+std::size_t cluster_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster);
 
 /// Fills lcp.M and lcp.q for rows [cluster.begin, cluster.end) at the
 /// velocities in `state` (the pre-solve ones: targets are already fixed in
 /// the rows). Each contact's cone uses its row.mu.
-void assemble_cluster_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_cluster_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                           const std::vector<BodyVelocity>& state, ClusterLcp& lcp);
 
 /// Writes the impulses of solution z into the rows' lambda_n, lambda_t and
 /// sliding. A sliding contact (beta > 0) is put exactly on its cone,
 /// |lambda_t| = mu lambda_n: the LCP says so, and the solve's round-off must
 /// not move it strictly inside, where the contact would count as sticking.
-void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std::vector<ContactRow>& rows);
+void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std::vector<ContactPoint>& rows);
 
 }  // namespace detail
 }  // namespace collision2d

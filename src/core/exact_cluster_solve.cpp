@@ -35,7 +35,7 @@ LcpResult pivot_with_retry(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, i
   return result;
 }
 
-bool solve_cluster(std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+bool solve_cluster(std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
                    ClusterLcp& lcp, int& pivots)
 {
   pivots = 0;
@@ -49,7 +49,7 @@ bool solve_cluster(std::vector<ContactRow>& rows, ClusterRange cluster, const st
   return true;
 }
 
-double contact_speed_scale(const std::vector<ContactRow>& rows, ClusterRange cluster,
+double contact_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                            const std::vector<BodyVelocity>& state)
 {
   double scale = 0.0;
@@ -62,7 +62,7 @@ double contact_speed_scale(const std::vector<ContactRow>& rows, ClusterRange clu
   return scale;
 }
 
-double impulse_speed_scale(const std::vector<ContactRow>& rows, ClusterRange cluster)
+double impulse_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange cluster)
 {
   double scale = 0.0;
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
@@ -70,12 +70,12 @@ double impulse_speed_scale(const std::vector<ContactRow>& rows, ClusterRange clu
   return scale;
 }
 
-double cluster_residual(const std::vector<ContactRow>& rows, ClusterRange cluster,
+double cluster_residual(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                         const std::vector<BodyVelocity>& state)
 {
   double residual = 0.0;
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
-    residual = std::max(residual, row_residual(rows[r], state, rows[r].mu));
+    residual = std::max(residual, point_residual(rows[r], state, cone(rows[r])));
   return residual;
 }
 

@@ -21,18 +21,18 @@ LcpResult pivot_with_retry(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, i
 /// impulses in its rows (each contact's cone from row.mu). Returns false when
 /// pivoting failed or the cluster has more than kMaxExactUnknowns unknowns;
 /// sets `pivots` to the pivots done.
-bool solve_cluster(std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+bool solve_cluster(std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
                    ClusterLcp& lcp, int& pivots);
 
 /// Largest contact speed (normal or tangential, or target) in the cluster at `state`.
-double contact_speed_scale(const std::vector<ContactRow>& rows, ClusterRange cluster,
+double contact_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                            const std::vector<BodyVelocity>& state);
 
 /// Largest speed change an impulse of the cluster causes on its own contact.
-double impulse_speed_scale(const std::vector<ContactRow>& rows, ClusterRange cluster);
+double impulse_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange cluster);
 
 /// Largest row_residual over the cluster (each row against its own mu).
-double cluster_residual(const std::vector<ContactRow>& rows, ClusterRange cluster,
+double cluster_residual(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                         const std::vector<BodyVelocity>& state);
 
 }  // namespace detail

@@ -33,12 +33,10 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   report.kinetic_energy_before = detail::total_kinetic_energy(bodies);
 
   detail::ContactProblem problem;
-  detail::prepare_problem(bodies, contacts, e, problem);
+  detail::prepare_problem(bodies, contacts, e, mu, problem);
   std::vector<detail::BodyVelocity>& state = problem.state;
-  std::vector<detail::ContactRow>& rows = problem.rows;
+  std::vector<detail::ContactPoint>& rows = problem.rows;
   const std::vector<detail::ClusterRange>& clusters = problem.clusters;
-  for (detail::ContactRow& row : rows)
-    row.mu = mu;
   report.cluster_count = clusters.size();
 
   // Every cluster is solved before any impulse is applied, so a failure
@@ -57,7 +55,7 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   }
 
   // Applied to the working copy only: the bodies change once all is checked.
-  for (const detail::ContactRow& row : rows)
+  for (const detail::ContactPoint& row : rows)
   {
     detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent, state);
     report.total_normal_impulse += row.lambda_n;

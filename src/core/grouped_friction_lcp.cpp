@@ -32,7 +32,7 @@ Layout layout_of(ClusterRange cluster, const GroupedLcp& lcp)
   return Layout{static_cast<Eigen::Index>(cluster.end - cluster.begin), static_cast<Eigen::Index>(lcp.groups.size())};
 }
 
-void find_groups(const std::vector<ContactRow>& rows, ClusterRange cluster, GroupedLcp& lcp)
+void find_groups(const std::vector<ContactPoint>& rows, ClusterRange cluster, GroupedLcp& lcp)
 {
   lcp.groups.clear();
   for (std::size_t r = cluster.begin; r < cluster.end;)
@@ -47,20 +47,20 @@ void find_groups(const std::vector<ContactRow>& rows, ClusterRange cluster, Grou
   }
 }
 
-void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                        const std::vector<BodyVelocity>& state, GroupedLcp& lcp, Layout layout)
 {
   begin_jacobian(rows, cluster, state, layout.points + layout.groups, lcp);
   for (Eigen::Index i = 0; i < layout.points; ++i)
   {
-    const ContactRow& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[cluster.begin + i];
     add_jacobian_entry(lcp, i, row.b, 1.0, row.normal, row.r_b);
     add_jacobian_entry(lcp, i, row.a, -1.0, row.normal, row.r_a);
   }
   for (Eigen::Index g = 0; g < layout.groups; ++g)
   {
     const FrictionGroup& group = lcp.groups[g];
-    const ContactRow& row = rows[group.first];
+    const ContactPoint& row = rows[group.first];
     add_jacobian_entry(lcp, layout.points + g, row.b, 1.0, row.tangent, group.r_b);
     add_jacobian_entry(lcp, layout.points + g, row.a, -1.0, row.tangent, group.r_a);
   }
@@ -69,7 +69,7 @@ void assemble_delassus(const std::vector<ContactRow>& rows, ClusterRange cluster
 
 /// Unscaled M and q; beta couples with +1 into the tangent rows and the cone
 /// row reads mu sum(lambda_n) - lambda_t+ - lambda_t-.
-void fill_unscaled(const std::vector<ContactRow>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+void fill_unscaled(const std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
                    GroupedLcp& lcp, Layout layout)
 {
   const Eigen::Index points = layout.points;
@@ -84,16 +84,14 @@ void fill_unscaled(const std::vector<ContactRow>& rows, ClusterRange cluster, co
       -lcp.M.block(points, 0, groups, layout.size() - groups);
   for (Eigen::Index i = 0; i < points; ++i)
   {
-    const ContactRow& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[cluster.begin + i];
     lcp.q(i) = dot(relative_velocity(row, state), row.normal) - row.target;
   }
   for (Eigen::Index g = 0; g < groups; ++g)
   {
     const FrictionGroup& group = lcp.groups[g];
-    const ContactRow& row = rows[group.first];
-    const BodyVelocity& a = state[row.a];
-    const BodyVelocity& b = state[row.b];
-    const double vt = dot(b.v + cross(b.omega, group.r_b) - a.v - cross(a.omega, group.r_a), row.tangent);
+    const ContactPoint& row = rows[group.first];
+    const double vt = dot(relative_velocity_at(row, group.r_a, group.r_b, state), row.tangent);
     lcp.q(layout.t_plus(g)) = vt;
     lcp.q(layout.t_minus(g)) = -vt;
     lcp.M(layout.t_plus(g), layout.beta(g)) = 1.0;
@@ -101,13 +99,13 @@ void fill_unscaled(const std::vector<ContactRow>& rows, ClusterRange cluster, co
     lcp.M(layout.beta(g), layout.t_plus(g)) = -1.0;
     lcp.M(layout.beta(g), layout.t_minus(g)) = -1.0;
     for (std::size_t k = 0; k < group.count; ++k)
-      lcp.M(layout.beta(g), static_cast<Eigen::Index>(group.first + k - cluster.begin)) = row.mu;
+      lcp.M(layout.beta(g), static_cast<Eigen::Index>(group.first + k - cluster.begin)) = cone(row);
   }
 }
 
 }  // namespace
 
-std::size_t grouped_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster)
+std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster)
 {
   constexpr std::size_t kUnknownsPerGroup = 3;  // lambda_t+, lambda_t-, beta
   std::size_t unknowns = 0;
@@ -119,7 +117,7 @@ std::size_t grouped_unknowns(const std::vector<ContactRow>& rows, ClusterRange c
   return unknowns;
 }
 
-void assemble_grouped_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                           const std::vector<BodyVelocity>& state, GroupedLcp& lcp)
 {
   find_groups(rows, cluster, lcp);
@@ -136,7 +134,7 @@ void assemble_grouped_lcp(const std::vector<ContactRow>& rows, ClusterRange clus
 }
 
 void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, ClusterRange cluster,
-                            std::vector<ContactRow>& rows)
+                            std::vector<ContactPoint>& rows)
 {
   const Layout layout = layout_of(cluster, lcp);
   for (Eigen::Index i = 0; i < layout.points; ++i)
@@ -149,14 +147,14 @@ void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, Clu
       normal_sum += rows[group.first + k].lambda_n;
     const double t_plus = z(layout.t_plus(g)) * lcp.scale(layout.t_plus(g));
     const double t_minus = z(layout.t_minus(g)) * lcp.scale(layout.t_minus(g));
-    const double bound = rows[group.first].mu * normal_sum;
+    const double bound = cone(rows[group.first]) * normal_sum;
     const bool sliding = z(layout.beta(g)) > 0.0 && std::abs(t_plus - t_minus) >= kConeReached * bound;
     // On the cone exactly when sliding (see store_cluster_impulses).
     const double total =
         sliding ? (t_plus >= t_minus ? 1.0 : -1.0) * bound : t_plus - t_minus;
     for (std::size_t k = 0; k < group.count; ++k)
     {
-      ContactRow& row = rows[group.first + k];
+      ContactPoint& row = rows[group.first + k];
       const double share = normal_sum > 0.0 ? row.lambda_n / normal_sum : 1.0 / group.count;
       row.lambda_t = share * total;
       row.sliding = sliding;
@@ -164,7 +162,7 @@ void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, Clu
   }
 }
 
-double grouped_residual(const std::vector<ContactRow>& rows, const GroupedLcp& lcp,
+double grouped_residual(const std::vector<ContactPoint>& rows, const GroupedLcp& lcp,
                         const std::vector<BodyVelocity>& state)
 {
   double residual = 0.0;
@@ -174,17 +172,14 @@ double grouped_residual(const std::vector<ContactRow>& rows, const GroupedLcp& l
     double tangent_sum = 0.0;
     for (std::size_t k = 0; k < group.count; ++k)
     {
-      const ContactRow& row = rows[group.first + k];
-      const double vn = dot(relative_velocity(row, state), row.normal);
-      residual = std::max(residual, row.lambda_n > 0.0 ? std::abs(vn - row.target) : std::max(0.0, row.target - vn));
+      const ContactPoint& row = rows[group.first + k];
+      residual = std::max(residual, normal_residual(row, state));
       normal_sum += row.lambda_n;
       tangent_sum += row.lambda_t;
     }
-    const ContactRow& row = rows[group.first];
-    const BodyVelocity& a = state[row.a];
-    const BodyVelocity& b = state[row.b];
-    const double vt = dot(b.v + cross(b.omega, group.r_b) - a.v - cross(a.omega, group.r_a), row.tangent);
-    const double bound = row.mu * normal_sum;
+    const ContactPoint& row = rows[group.first];
+    const double vt = dot(relative_velocity_at(row, group.r_a, group.r_b, state), row.tangent);
+    const double bound = cone(row) * normal_sum;
     const double magnitude = std::abs(tangent_sum);
     // The split into shares rounds, so the sliding flag (not |sum| == bound)
     // says which side of the cone the group is on.

@@ -51,23 +51,23 @@ struct GroupedLcp : ClusterJacobian
 };
 
 /// Unknowns of the cluster's grouped LCP: one per point, three per body pair.
-std::size_t grouped_unknowns(const std::vector<ContactRow>& rows, ClusterRange cluster);
+std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster);
 
 /// Fills groups, M and q for rows [cluster.begin, cluster.end) at the
 /// pre-solve velocities in `state`.
-void assemble_grouped_lcp(const std::vector<ContactRow>& rows, ClusterRange cluster,
+void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
                           const std::vector<BodyVelocity>& state, GroupedLcp& lcp);
 
 /// Writes solution z into the rows: lambda_n per point, the group's
 /// tangential impulse split in proportion to the normal impulses (each point
 /// inside its share of the cone), sliding when the group slides.
 void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, ClusterRange cluster,
-                            std::vector<ContactRow>& rows);
+                            std::vector<ContactPoint>& rows);
 
 /// Residual (m/s) of the solved cluster at `state` (the velocities after the
 /// impulses): per point the normal part of row_residual, per group its
 /// friction part at the midpoint against the group's summed impulses.
-double grouped_residual(const std::vector<ContactRow>& rows, const GroupedLcp& lcp,
+double grouped_residual(const std::vector<ContactPoint>& rows, const GroupedLcp& lcp,
                         const std::vector<BodyVelocity>& state);
 
 }  // namespace detail

@@ -21,7 +21,7 @@ struct ClusterResult
 /// sweeps are done (or a sweep changes no impulse, when more sweeps cannot
 /// help). Normal impulses stay >= 0 and tangential ones inside mu times the
 /// normal one. Allocates nothing.
-ClusterResult solve_cluster_pgs(std::vector<ContactRow>& rows, ClusterRange cluster,
+ClusterResult solve_cluster_pgs(std::vector<ContactPoint>& rows, ClusterRange cluster,
                                 std::vector<BodyVelocity>& state, double mu, int max_sweeps, double tol);
 
 }  // namespace detail

@@ -45,59 +45,54 @@ namespace
 struct ExactIslands
 {
   std::vector<detail::BodyVelocity> state;
-  std::vector<detail::ContactRow> rows;
+  std::vector<detail::ContactPoint> rows;
   std::vector<detail::ClusterRange> clusters;
   std::vector<std::size_t> parent;
   detail::ClusterLcp lcp;
   detail::GroupedLcp grouped;
 };
 
-/// The world's contact row `w` (row k of the substep) as a row of the exact
-/// solver. A template because the world's row type is private to World.
-template <class WorldRow>
-detail::ContactRow exact_row(const WorldRow& w, std::size_t k, bool friction)
+/// Copies of the active points, partitioned into islands. A body's inertia
+/// comes from its points: a frictionless disk's points drop it
+/// (prepare_points), and so must its LCP; every copy then sees the island's
+/// one inertia per body. Without friction (positions) the copies carry no cone.
+void build_islands(const std::vector<detail::BodyVelocity>& velocity, const std::vector<detail::ContactPoint>& points,
+                   bool friction, ExactIslands& out)
 {
-  detail::ContactRow row;
-  row.contact = k;
-  row.a = w.a;
-  row.b = w.b;
-  row.normal = w.normal;
-  row.tangent = perp(w.normal);
-  row.r_a = w.r_a;
-  row.r_b = w.r_b;
-  row.k_n = 1.0 / w.normal_mass;
-  row.k_t = 1.0 / w.tangent_mass;
-  row.target = w.target;
-  row.mu = friction ? (w.kinetic ? w.mu_k : w.mu_s) : 0.0;
-  return row;
-}
-
-/// Rows of the active contacts, partitioned into islands. A body's inertia
-/// comes from its rows: a frictionless disk's rows drop it (prepare_rows), and
-/// so must its LCP.
-template <class WorldRow>
-void build_islands(const std::vector<Body>& bodies, const std::vector<WorldRow>& world_rows, bool friction,
-                   ExactIslands& out)
-{
-  out.state.resize(bodies.size());
-  for (std::size_t i = 0; i < bodies.size(); ++i)
+  out.state.resize(velocity.size());
+  for (std::size_t i = 0; i < velocity.size(); ++i)
   {
-    out.state[i] = detail::BodyVelocity{bodies[i].velocity(), bodies[i].omega(), bodies[i].inv_mass(), 0.0};
+    out.state[i] = detail::BodyVelocity{velocity[i].v, velocity[i].omega, velocity[i].inv_mass, 0.0};
   }
-  out.rows.clear();
-  out.rows.reserve(world_rows.size());
-  for (std::size_t k = 0; k < world_rows.size(); ++k)
+  for (const detail::ContactPoint& p : points)
   {
-    const WorldRow& w = world_rows[k];
-    if (w.active)
+    if (p.active)
     {
-      out.state[w.a].inv_inertia = std::max(out.state[w.a].inv_inertia, w.inv_inertia_a);
-      out.state[w.b].inv_inertia = std::max(out.state[w.b].inv_inertia, w.inv_inertia_b);
-      out.rows.push_back(exact_row(w, k, friction));
+      out.state[p.a].inv_inertia = std::max(out.state[p.a].inv_inertia, p.inv_inertia_a);
+      out.state[p.b].inv_inertia = std::max(out.state[p.b].inv_inertia, p.inv_inertia_b);
     }
   }
+  out.rows.clear();
+  out.rows.reserve(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    if (!points[k].active)
+    {
+      continue;
+    }
+    detail::ContactPoint copy = points[k];
+    copy.contact = k;
+    copy.inv_inertia_a = out.state[copy.a].inv_inertia;
+    copy.inv_inertia_b = out.state[copy.b].inv_inertia;
+    if (!friction)
+    {
+      copy.mu_s = 0.0;
+      copy.mu_k = 0.0;
+    }
+    out.rows.push_back(copy);
+  }
   detail::partition_clusters(out.state, out.rows, out.clusters, out.parent);
-  out.lcp.local_body.assign(bodies.size(), -1);
+  out.lcp.local_body.assign(velocity.size(), -1);
 }
 
 /// Pivots the island's velocity LCP and stores the impulses in its rows;
@@ -131,10 +126,11 @@ double island_residual(const ExactIslands& islands, detail::ClusterRange cluster
 }
 
 /// Velocity solve of one island: impulses in the rows and velocities in
-/// `state`, or false with the island's velocities back at the bodies' ones.
+/// `state`, or false with the island's velocities back where they started.
 /// The residual recomputed from the velocities must be round-off of the
 /// speeds involved, as in solve_exact.
-bool solve_velocity_island(const std::vector<Body>& bodies, ExactIslands& islands, detail::ClusterRange cluster)
+bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, ExactIslands& islands,
+                           detail::ClusterRange cluster)
 {
   if (!pivot_velocity_island(islands, cluster))
   {
@@ -143,7 +139,7 @@ bool solve_velocity_island(const std::vector<Body>& bodies, ExactIslands& island
   const double speed_before = detail::contact_speed_scale(islands.rows, cluster, islands.state);
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
   {
-    const detail::ContactRow& row = islands.rows[r];
+    const detail::ContactPoint& row = islands.rows[r];
     detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent, islands.state);
   }
   const double scale = std::max({speed_before, detail::contact_speed_scale(islands.rows, cluster, islands.state),
@@ -156,8 +152,8 @@ bool solve_velocity_island(const std::vector<Body>& bodies, ExactIslands& island
   {
     for (std::size_t i : {islands.rows[r].a, islands.rows[r].b})
     {
-      islands.state[i].v = bodies[i].velocity();
-      islands.state[i].omega = bodies[i].omega();
+      islands.state[i].v = velocity[i].v;
+      islands.state[i].omega = velocity[i].omega;
     }
   }
   return false;
@@ -168,14 +164,14 @@ bool solve_velocity_island(const std::vector<Body>& bodies, ExactIslands& island
 void WorldImpl::solve_exact_islands(StepReport& report)
 {
   ExactIslands islands;
-  build_islands(bodies_, points_, true, islands);
+  build_islands(velocity_, points_, true, islands);
   for (const detail::ClusterRange& cluster : islands.clusters)
   {
-    const bool solved = solve_velocity_island(bodies_, islands, cluster);
+    const bool solved = solve_velocity_island(velocity_, islands, cluster);
     ++(solved ? report.exact_islands : report.exact_fallbacks);
     for (std::size_t r = cluster.begin; solved && r < cluster.end; ++r)
     {
-      const detail::ContactRow& row = islands.rows[r];
+      const detail::ContactPoint& row = islands.rows[r];
       ContactPoint& w = points_[row.contact];
       w.exact = true;
       w.lambda_n = row.lambda_n;
@@ -193,7 +189,7 @@ void WorldImpl::solve_exact_islands(StepReport& report)
 void WorldImpl::solve_position_islands(double softness, StepReport& report)
 {
   ExactIslands islands;
-  build_islands(bodies_, points_, false, islands);
+  build_islands(velocity_, points_, false, islands);
   detail::ClusterLcp& lcp = islands.lcp;
   for (const detail::ClusterRange& cluster : islands.clusters)
   {

@@ -26,6 +26,16 @@ struct SolveReport
   bool exact_fallback = false;           ///< exact mode: pivoting failed, iterative result used
 };
 
+/// Everything one resolve() or step() computed, for callers that report more
+/// than the bodies (the ROS service, the command-line tool).
+struct Resolution
+{
+  std::vector<Contact> contacts;         ///< the contacts solved, at the poses they were detected at
+  std::vector<ContactImpulse> impulses;  ///< one per contact (N s)
+  std::vector<Body> after_solve;         ///< the bodies after the velocity solve, before position correction
+  SolveReport report;
+};
+
 /// Every entry point rejects non-finite bodies or contacts with
 /// std::invalid_argument naming the body or contact. Finite input far beyond
 /// the README's supported ranges can overflow mid-solve: the call then throws
@@ -58,12 +68,17 @@ public:
   void correct_positions(std::vector<Body>& bodies, const std::vector<Contact>& contacts) const;
   /// detect, solve, correct.
   SolveReport resolve(std::vector<Body>& bodies) const;
+  /// The same, also handing back the contacts, their impulses and the bodies
+  /// between solve and correction in `out`.
+  SolveReport resolve(std::vector<Body>& bodies, Resolution& out) const;
   /// Earliest t in [0, 1] at which any pair first touches when every body
   /// translates by its velocity over one unit step.
   static double time_of_impact(const std::vector<Body>& bodies);
   /// Move every body to the time of impact, then resolve contacts there
   /// (pairs within a tiny relative tolerance of touching count as contacts).
   SolveReport step(std::vector<Body>& bodies) const;
+  /// The same, with everything computed in `out` (contacts at the time of impact).
+  SolveReport step(std::vector<Body>& bodies, Resolution& out) const;
 
   double restitution() const { return e_; }
   double friction() const { return mu_; }
@@ -75,6 +90,8 @@ public:
   void set_mode(SolverMode mode) { mode_ = mode; }
 
 private:
+  /// Detect, solve and correct at the current poses; fills `out` when given.
+  SolveReport resolve_here(std::vector<Body>& bodies, double touch_tolerance, Resolution* out) const;
   SolveReport solve_iterative(std::vector<Body>& bodies, const std::vector<Contact>& contacts,
                               std::vector<ContactImpulse>* impulses) const;
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "contact_rows.h"
 #include "pgs_solver.h"
@@ -85,12 +86,29 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
 
 SolveReport ContactSolver::resolve(std::vector<Body>& bodies) const
 {
-  return detail::all_or_nothing(bodies, [&] {
-    const std::vector<Contact> contacts = detect_contacts(bodies);
-    const SolveReport report = solve(bodies, contacts);
-    correct_positions(bodies, contacts);
-    return report;
-  });
+  return detail::all_or_nothing(bodies, [&] { return resolve_here(bodies, 0.0, nullptr); });
+}
+
+SolveReport ContactSolver::resolve(std::vector<Body>& bodies, Resolution& out) const
+{
+  return detail::all_or_nothing(bodies, [&] { return resolve_here(bodies, 0.0, &out); });
+}
+
+SolveReport ContactSolver::resolve_here(std::vector<Body>& bodies, double touch_tolerance, Resolution* out) const
+{
+  std::vector<Contact> contacts = detect_contacts(bodies, touch_tolerance);
+  const SolveReport report = solve(bodies, contacts, out != nullptr ? &out->impulses : nullptr);
+  if (out != nullptr)
+  {
+    out->after_solve = bodies;
+  }
+  correct_positions(bodies, contacts);
+  if (out != nullptr)
+  {
+    out->contacts = std::move(contacts);
+    out->report = report;
+  }
+  return report;
 }
 
 }  // namespace collision2d

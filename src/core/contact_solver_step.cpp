@@ -57,6 +57,12 @@ double ContactSolver::time_of_impact(const std::vector<Body>& bodies)
 
 SolveReport ContactSolver::step(std::vector<Body>& bodies) const
 {
+  Resolution out;
+  return step(bodies, out);
+}
+
+SolveReport ContactSolver::step(std::vector<Body>& bodies, Resolution& out) const
+{
   return detail::all_or_nothing(bodies, [&] {
     const double t = time_of_impact(bodies);
     for (Body& body : bodies)
@@ -65,10 +71,9 @@ SolveReport ContactSolver::step(std::vector<Body>& bodies) const
     }
     // The impacting pair touches exactly at t, which strict detection would
     // miss: count pairs within the touch tolerance as contacts.
-    const std::vector<Contact> contacts = detect_contacts(bodies, kRelativeTouchTolerance);
-    SolveReport report = solve(bodies, contacts);
-    correct_positions(bodies, contacts);
+    SolveReport report = resolve_here(bodies, kRelativeTouchTolerance, &out);
     report.time_of_impact = t;
+    out.report.time_of_impact = t;
     return report;
   });
 }

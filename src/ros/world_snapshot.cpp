@@ -31,13 +31,6 @@ namespace fs = std::filesystem;
 
 constexpr int kSnapshotVersion = 1;
 const char* const kVersionKey = "collision2d_snapshot";
-/// Ids a snapshot may skip (bodies removed over the world's life): restoring
-/// skips each by adding and removing a placeholder, about 0.1 us apiece, so
-/// this bounds a restore to about a second whatever the file says.
-constexpr std::uint64_t kMaxSkippedIds = 10000000;
-/// The placeholder that takes a skipped id for an instant (kg, m).
-constexpr double kPlaceholderMass = 1.0;
-constexpr double kPlaceholderRadius = 1.0;
 constexpr mode_t kSnapshotMode = 0644;  ///< rw-r--r--
 
 [[noreturn]] void malformed(const std::string& source, const std::string& problem)
@@ -112,10 +105,6 @@ void check_ids(const WorldSnapshot& snapshot, const std::string& source)
   {
     malformed(source, "next_id = " + std::to_string(snapshot.next_id) + " must exceed every id");
   }
-  if (snapshot.next_id - snapshot.ids.size() > kMaxSkippedIds)
-  {
-    malformed(source, "more than " + std::to_string(kMaxSkippedIds) + " skipped ids");
-  }
 }
 
 void read_clock(const YAML::Node& doc, const std::string& source, WorldSnapshot& snapshot)
@@ -138,22 +127,6 @@ void read_clock(const YAML::Node& doc, const std::string& source, WorldSnapshot&
   snapshot.ids = read_field<std::vector<BodyId>>(doc, "ids", source);
   snapshot.next_id = read_field<BodyId>(doc, "next_id", source);
   check_ids(snapshot, source);
-}
-
-Body placeholder_body()
-{
-  return Body(kPlaceholderMass, kPlaceholderRadius, Vec2{0.0, 0.0}, Vec2{0.0, 0.0});
-}
-
-/// Takes ids up to `target` (exclusive) by adding and removing a placeholder,
-/// since a world hands out ids only in sequence.
-void skip_ids(World& world, BodyId& next, BodyId target)
-{
-  const Body placeholder = placeholder_body();
-  for (; next < target; ++next)
-  {
-    world.remove_body(world.add_body(placeholder));
-  }
 }
 
 [[noreturn]] void io_error(const std::string& path, const std::string& what)
@@ -236,24 +209,19 @@ WorldSnapshot take_snapshot(const World& world, const std::string& scene_name, c
   snapshot.scene = to_scene(world, scene_name);
   snapshot.ids = world.body_ids();
   snapshot.clock = clock;
-  // The world hands out its next id only by adding a body, so ask a copy:
-  // ids of removed bodies then stay unused after a restore too.
-  World probe = world;
-  snapshot.next_id = probe.add_body(placeholder_body());
+  // Ids of removed bodies stay unused after a restore too.
+  snapshot.next_id = world.next_id();
   return snapshot;
 }
 
 World restore_world(const WorldSnapshot& snapshot)
 {
   World world(snapshot.scene.settings);
-  BodyId next = 0;
   for (std::size_t i = 0; i < snapshot.scene.bodies.size(); ++i)
   {
-    skip_ids(world, next, snapshot.ids[i]);
-    world.add_body(snapshot.scene.bodies[i].body, snapshot.scene.bodies[i].material);
-    ++next;
+    world.add_body(snapshot.ids[i], snapshot.scene.bodies[i].body, snapshot.scene.bodies[i].material);
   }
-  skip_ids(world, next, snapshot.next_id);
+  world.set_next_id(snapshot.next_id);
   return world;
 }
 

@@ -130,21 +130,6 @@ double largest_move(const std::vector<Body>& from, const std::vector<Body>& to)
   return std::sqrt(largest_sq);
 }
 
-/// One continuous step; the reported contacts are those step() resolved, at
-/// the time of impact.
-SolveReport step_scenario(const ContactSolver& solver, const Scenario& scenario, std::vector<Body>& bodies,
-                          std::vector<Contact>& contacts)
-{
-  const SolveReport report = solver.step(bodies);
-  std::vector<Body> at_impact = scenario.bodies;
-  for (Body& body : at_impact)
-  {
-    body.set_position(body.position() + report.time_of_impact * body.velocity());
-  }
-  contacts = ContactSolver::detect_contacts(at_impact, kRelativeTouchTolerance);
-  return report;
-}
-
 /// Resolves (or steps) the scenario and prints the report. When resolving,
 /// the totals are taken after the velocity solve: position correction then
 /// moves bodies, which shifts the angular momentum about the origin
@@ -154,20 +139,17 @@ void run(const Options& options)
   const Scenario scenario = load_scenario(options.path);
   const ContactSolver solver(scenario.restitution, scenario.friction, options.iterations, options.tol);
   std::vector<Body> bodies = scenario.bodies;
-  std::vector<Contact> contacts;
+  Resolution out;
   std::cout << "scenario: " << options.path << (options.step ? " (one step)" : " (resolve)") << "\n";
   if (options.step)
   {
-    const SolveReport report = step_scenario(solver, scenario, bodies, contacts);
-    write_report(std::cout, scenario.bodies, bodies, contacts, report);
+    solver.step(bodies, out);
+    write_report(std::cout, scenario.bodies, bodies, out.contacts, out.report);
     return;
   }
-  contacts = ContactSolver::detect_contacts(bodies);
-  const SolveReport report = solver.solve(bodies, contacts);
-  write_report(std::cout, scenario.bodies, bodies, contacts, report);
-  const std::vector<Body> solved = bodies;
-  solver.correct_positions(bodies, contacts);
-  std::cout << "position correction: largest move " << largest_move(solved, bodies) << " m\n";
+  solver.resolve(bodies, out);
+  write_report(std::cout, scenario.bodies, out.after_solve, out.contacts, out.report);
+  std::cout << "position correction: largest move " << largest_move(out.after_solve, bodies) << " m\n";
 }
 
 }  // namespace

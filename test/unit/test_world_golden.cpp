@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <ostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -149,6 +150,9 @@ const Golden kGolden[] = {
      },
      60, 0xf15b95fb7dcb07b0ULL},
 };
+
+/// gtest names a failing case by its scene and settings, not its bytes.
+void PrintTo(const Golden& golden, std::ostream* os) { *os << golden.name; }
 
 class WorldGolden : public ::testing::TestWithParam<Golden>
 {

@@ -93,7 +93,8 @@ StepContext WorldImpl::select_effects() const
   e.effects.sleeping = resolve(s.sleeping, sleeping_wanted());
   // Time of impact is decided per substep from the bodies' speeds (world_toi.cpp).
   e.effects.time_of_impact = false;
-  e.warm_available = e.effects.warm_starting && !cache_.empty() && cache_h_ > 0.0;
+  // The last substep's contacts become the first substep's cache (world_step.cpp).
+  e.warm_available = e.effects.warm_starting && !contacts_.empty() && cache_h_ > 0.0;
   return e;
 }
 

@@ -83,6 +83,19 @@ struct WorldContact
   bool sliding = false;  ///< friction was at its bound (the contact slips)
 };
 
+/// What a step carries into the next besides the bodies, settings and clock:
+/// the last substep's contacts with their impulses and friction state (warm
+/// starting and sleeping islands read them), the substep length those
+/// impulses were made over, and each body's sleep state. A snapshot that
+/// keeps it steps on bit for bit like the world it was taken from.
+struct StepState
+{
+  std::vector<WorldContact> contacts;  ///< contact.a/b are ignored on restore (taken from the ids)
+  double contact_substep = 0.0;        ///< s; 0 before the first step
+  std::vector<BodyId> asleep;          ///< ids of sleeping bodies
+  std::vector<double> rest_time;       ///< s, one per body in body_ids() order
+};
+
 }  // namespace collision2d
 
 namespace collision2d
@@ -155,6 +168,14 @@ public:
   void set_clock(double time, std::uint64_t frame_count);
   /// True while the body's island sleeps (never for static or kinematic bodies).
   bool is_sleeping(BodyId id) const;
+  StepState step_state() const;
+  /// Restores what step_state() gave, after the bodies. Throws
+  /// std::invalid_argument naming the entry that names an unknown body or is
+  /// not finite; the world is unchanged then. With
+  /// warm_start_before_integration the first substep after a restore starts
+  /// without its prediction (it reads the previous substep's solver points,
+  /// which a snapshot does not keep).
+  void set_step_state(const StepState& state);
 
 private:
   std::unique_ptr<detail::WorldImpl> impl_;

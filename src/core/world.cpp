@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "world_impl.h"
 
@@ -149,6 +150,76 @@ void World::set_clock(double time, std::uint64_t frame_count)
   }
   impl_->time_ = time;
   impl_->frame_count_ = frame_count;
+}
+
+StepState World::step_state() const
+{
+  const detail::WorldImpl& w = *impl_;
+  StepState state;
+  state.contacts = w.contacts_;
+  state.contact_substep = w.cache_h_;
+  for (std::size_t i = 0; i < w.ids_.size(); ++i)
+  {
+    if (w.asleep_[i])
+    {
+      state.asleep.push_back(w.ids_[i]);
+    }
+  }
+  state.rest_time = w.rest_time_;
+  return state;
+}
+
+void World::set_step_state(const StepState& state)
+{
+  detail::WorldImpl& w = *impl_;
+  const std::string where = "set_step_state: ";
+  if (!(std::isfinite(state.contact_substep) && state.contact_substep >= 0.0))
+  {
+    throw std::invalid_argument(where + "contact_substep must be finite and >= 0");
+  }
+  if (state.rest_time.size() != w.bodies_.size())
+  {
+    throw std::invalid_argument(where + std::to_string(state.rest_time.size()) + " rest times for " +
+                                std::to_string(w.bodies_.size()) + " bodies");
+  }
+  std::vector<WorldContact> contacts = state.contacts;
+  for (std::size_t k = 0; k < contacts.size(); ++k)
+  {
+    WorldContact& c = contacts[k];
+    if (!has_body(c.a) || !has_body(c.b) || !(c.a < c.b))
+    {
+      throw std::invalid_argument(where + "contacts[" + std::to_string(k) + "] names bodies " + std::to_string(c.a) +
+                                  " and " + std::to_string(c.b) + " (known ids, a < b)");
+    }
+    if (!is_finite(c.contact.normal) || !is_finite(c.contact.point) || !std::isfinite(c.contact.penetration) ||
+        !std::isfinite(c.impulse.normal) || !std::isfinite(c.impulse.tangent))
+    {
+      throw std::invalid_argument(where + "contacts[" + std::to_string(k) + "] is not finite");
+    }
+    c.contact.a = w.index_of(c.a);
+    c.contact.b = w.index_of(c.b);
+  }
+  std::vector<bool> asleep(w.bodies_.size(), false);
+  for (BodyId id : state.asleep)
+  {
+    if (!has_body(id))
+    {
+      throw std::invalid_argument(where + "asleep names unknown body " + std::to_string(id));
+    }
+    asleep[w.index_of(id)] = true;
+  }
+  for (double t : state.rest_time)
+  {
+    if (!(std::isfinite(t) && t >= 0.0))
+    {
+      throw std::invalid_argument(where + "a rest time is not finite and >= 0");
+    }
+  }
+  w.contacts_ = std::move(contacts);
+  w.cache_h_ = state.contact_substep;
+  w.asleep_ = std::move(asleep);
+  w.rest_time_ = state.rest_time;
+  w.points_.clear();
 }
 
 namespace detail

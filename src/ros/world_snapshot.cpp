@@ -18,6 +18,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "collision2d/ros/step_state_yaml.h"
 #include "collision2d/ros/validation.h"
 #include "collision2d/scenes/scene_file.h"
 
@@ -51,6 +52,7 @@ std::string clock_to_yaml(const WorldSnapshot& snapshot)
     out << (i == 0 ? "" : ", ") << snapshot.ids[i];
   }
   out << "]\nnext_id: " << snapshot.next_id << "\n";
+  write_step_state(out, snapshot.step);
   return out.str();
 }
 
@@ -74,7 +76,9 @@ T read_field(const YAML::Node& doc, const char* key, const std::string& source)
 
 void check_keys(const YAML::Node& doc, const std::string& source)
 {
-  static const std::vector<std::string> kKeys = {kVersionKey, "frame_count", "sim_time", "ids", "next_id"};
+  static const std::vector<std::string> kKeys = {kVersionKey,          "frame_count",         "sim_time",
+                                                 "ids",                "next_id",             kStepStateKeys[0],
+                                                 kStepStateKeys[1],    kStepStateKeys[2],     kStepStateKeys[3]};
   for (const auto& entry : doc)
   {
     const std::string key = entry.first.as<std::string>();
@@ -127,6 +131,7 @@ void read_clock(const YAML::Node& doc, const std::string& source, WorldSnapshot&
   snapshot.ids = read_field<std::vector<BodyId>>(doc, "ids", source);
   snapshot.next_id = read_field<BodyId>(doc, "next_id", source);
   check_ids(snapshot, source);
+  snapshot.step = read_step_state(doc, source);
 }
 
 [[noreturn]] void io_error(const std::string& path, const std::string& what)
@@ -211,6 +216,7 @@ WorldSnapshot take_snapshot(const World& world, const std::string& scene_name, c
   snapshot.clock = clock;
   // Ids of removed bodies stay unused after a restore too.
   snapshot.next_id = world.next_id();
+  snapshot.step = world.step_state();
   return snapshot;
 }
 
@@ -222,6 +228,11 @@ World restore_world(const WorldSnapshot& snapshot)
     world.add_body(snapshot.ids[i], snapshot.scene.bodies[i].body, snapshot.scene.bodies[i].material);
   }
   world.set_next_id(snapshot.next_id);
+  // An older snapshot (or a plain scene) has no step state: it starts cold.
+  if (!snapshot.step.rest_time.empty() || snapshot.step.contact_substep > 0.0)
+  {
+    world.set_step_state(snapshot.step);
+  }
   return world;
 }
 

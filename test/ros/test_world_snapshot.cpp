@@ -114,10 +114,35 @@ TEST(WorldSnapshotFile, RoundTripKeepsBodiesIdsSettingsAndClock)
   EXPECT_EQ(read.ids, (std::vector<BodyId>{0, 2, 3}));
   EXPECT_EQ(read.next_id, 5u);
 
-  const World restored = restore_world(read);
+  World restored = restore_world(read);
   EXPECT_EQ(restored.body_ids(), world.body_ids());
   EXPECT_EQ(scene_text(restored), scene_text(world));
   EXPECT_EQ(next_id_of(restored), next_id_of(world)) << "a removed body's id would be reused";
+
+  // Once the bodies rest on the ground, warm-start impulses and sleep come
+  // through the text exactly: the restored world steps on bit for bit.
+  World original = world;
+  original.step(60);
+  ASSERT_FALSE(original.contacts().empty());
+  restored = restore_world(parse_snapshot_yaml(snapshot_to_yaml(take_snapshot(original, "busy", clock))));
+  for (int frame = 0; frame < 20; ++frame)
+  {
+    original.step();
+    restored.step();
+    ASSERT_EQ(scene_text(restored), scene_text(original)) << "frame " << frame;
+  }
+}
+
+TEST(WorldSnapshotFile, AFileWithoutStepStateStillLoadsAndStartsCold)
+{
+  const WorldSnapshot saved = take_snapshot(busy_world(), "busy", WorldClock{3, 0.3});
+  std::string text = snapshot_to_yaml(saved);
+  text = text.substr(0, text.find("# Warm starting and sleep"));
+  const WorldSnapshot read = parse_snapshot_yaml(text);
+  EXPECT_TRUE(read.step.contacts.empty());
+  World restored = restore_world(read);
+  EXPECT_TRUE(restored.contacts().empty());
+  EXPECT_NO_THROW(restored.step());
 }
 
 TEST(WorldSnapshotFile, IsStillAPlainSceneFileAndAPlainSceneIsASnapshot)
@@ -344,6 +369,30 @@ TEST_F(WorldServiceSnapshotTest, SaveThenLoadBringsBackTheSavedFrame)
   std_srvs::Trigger::Response reset;
   service.reset(reset);
   expect_restored(saved, service.state());
+}
+
+TEST_F(WorldServiceSnapshotTest, ALoadedSnapshotStepsOnLikeTheSavedWorld)
+{
+  WorldService service(options(0));
+  load_demo(service);
+  step(service, 10);
+  SaveWorld::Request save;
+  SaveWorld::Response saved;
+  service.save_world(save, saved);
+  ASSERT_TRUE(saved.success) << saved.message;
+  const WorldState uninterrupted = step(service, 30);
+
+  LoadWorld::Request load;
+  LoadWorld::Response loaded;
+  service.load_world(load, loaded);
+  ASSERT_TRUE(loaded.success) << loaded.message;
+  const WorldState resumed = step(service, 30);
+  EXPECT_EQ(resumed.frame_count, uninterrupted.frame_count);
+  ASSERT_EQ(resumed.bodies.size(), uninterrupted.bodies.size());
+  for (std::size_t i = 0; i < resumed.bodies.size(); ++i)
+  {
+    EXPECT_TRUE(resumed.bodies[i] == uninterrupted.bodies[i]) << "body " << resumed.bodies[i].id << " differs";
+  }
 }
 
 TEST_F(WorldServiceSnapshotTest, FailedLoadsLeaveTheWorldAsItWas)

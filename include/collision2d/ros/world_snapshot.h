@@ -49,6 +49,7 @@ struct WorldSnapshot
   std::vector<BodyId> ids;   ///< id of scene.bodies[i], ascending
   BodyId next_id = 0;        ///< the id the world gives its next body
   WorldClock clock;
+  StepState step;            ///< warm-start contacts and sleep; empty in older files
 };
 
 /// The world's bodies, ids and settings; `clock` is the caller's (the world

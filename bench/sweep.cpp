@@ -24,8 +24,8 @@ constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an 
 constexpr int kWarmIntegrationSubsteps = 8;
 constexpr int kWarmIntegrationIterations = 4;
 
-/// SFINAE: true when WorldSettings has a `solver_mode` field (issue 6 adds
-/// it); the benchmark then sweeps it without needing a code change.
+/// SFINAE: true when WorldSettings has a `solver_mode` field; the benchmark
+/// then sweeps it without needing a code change.
 template <typename S, typename = void>
 struct HasSolverMode : std::false_type
 {

@@ -1,4 +1,4 @@
-// collision2d_sweep_bench: the speed/accuracy sweep of issue 6. Prints CSV.
+// collision2d_sweep_bench: the speed/accuracy sweep. Prints CSV.
 //
 //   collision2d_sweep_bench PART... [--quick] [--scene NAME]... [--reps N] [--out FILE]
 //     with PART among world, peers, stand (one CSV, one header)

@@ -1,4 +1,4 @@
-// Instantaneous contact resolution (SPEC section 2): detection, a velocity
+// Instantaneous contact resolution: detection, a velocity
 // solve with per-contact Newton restitution and Coulomb friction iterated to a
 // consistent fixed point, position correction and exact time of impact.
 #pragma once
@@ -17,7 +17,7 @@ struct SolveReport
   double max_residual = 0.0;          ///< complementarity residual at exit (m/s)
   double total_normal_impulse = 0.0;  ///< sum of normal impulses (N s)
   bool converged = true;              ///< residual fell below tol before the cap
-  // Additions beyond SPEC's four fields.
+  // Additions beyond the four original fields.
   std::size_t contact_count = 0;
   std::size_t cluster_count = 0;         ///< coupled clusters (islands) solved
   double kinetic_energy_before = 0.0;    ///< J

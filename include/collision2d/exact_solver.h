@@ -22,8 +22,7 @@ constexpr std::size_t kMaxExactUnknowns = 1200;
 /// failure (a well-posed cluster lands near 1e-15).
 constexpr double kTrustedResidual = 1e-6;
 
-/// Velocity solve with the same contract as ContactSolver::solve (SPEC
-/// section 2): Newton targets e * (approach speed) fixed from the velocities
+/// Velocity solve with the same contract as ContactSolver::solve: Newton targets e * (approach speed) fixed from the velocities
 /// before the solve (0 for separating or resting contacts), normal impulses
 /// that only push, complementarity against those targets, and Coulomb
 /// friction, which in 2D is exact: per contact the cone is two half-planes,

@@ -1,4 +1,4 @@
-// `.collision` scenario files (SPEC section 2) and the text report.
+// `.collision` scenario files and the text report.
 #pragma once
 
 #include <iosfwd>

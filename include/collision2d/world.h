@@ -1,4 +1,4 @@
-// A stateful world advanced in frames of substeps (SPEC section 3): gravity,
+// A stateful world advanced in frames of substeps: gravity,
 // materials, static and kinematic bodies, warm starting, and only the physics
 // a scene needs.
 #pragma once
@@ -109,10 +109,10 @@ struct WorldImpl;
 /// A World is a value: copying it snapshots the whole state, which is how a
 /// caller can try a change and roll back.
 ///
-/// Each substep follows the Fx2D order of SPEC section 3.2 (integrate,
+/// Each substep follows the Fx2D order (integrate,
 /// detect, penetration resolution, velocity resolution with warm starting) on
 /// the shared contact-solver kernel; src/core/world_step.cpp lists the stages
-/// in order and says where each refinement of SPEC's order is coded.
+/// in order and says where each refinement of that order is coded.
 class World
 {
 public:

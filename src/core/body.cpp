@@ -1,4 +1,4 @@
-// Rigid body construction and validation (SPEC section 2 "Body").
+// Rigid body construction and validation (polygons recentred on their centroid, their own inertia).
 //
 // Polygon outlines are cleaned before use: repeated vertices and vertices on a
 // straight line between their neighbours are DROPPED (not rejected), because a

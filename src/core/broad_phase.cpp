@@ -1,4 +1,4 @@
-// Broad phase on a uniform grid (SPEC section 2 "Detection"). Each box is
+// Broad phase on a uniform grid. Each box is
 // entered in the cells it covers and only boxes sharing a cell are compared,
 // so a scattered scene costs O(n + pairs) instead of the O(n^1.5) a sweep
 // along one axis costs when the bodies fill a square.

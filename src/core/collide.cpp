@@ -1,4 +1,4 @@
-// Narrow phase (SPEC section 2 "Detection"): contact manifolds for
+// Narrow phase: contact manifolds for
 // disk-disk, polygon-disk (either order) and polygon-polygon pairs.
 //
 // Contact points are placed halfway between the two outlines along the

@@ -1,4 +1,4 @@
-// Internal to the core: the one contact-solver kernel (SPEC section 3). One
+// Internal to the core: the one contact-solver kernel. One
 // constraint-point type and the verbs every solver uses on it: ContactSolver's
 // Gauss-Seidel sweeps, the World's substeps and the exact mode's LCP builders.
 // Nothing outside this file builds a Newton target, clamps Coulomb friction

@@ -1,4 +1,4 @@
-// ContactSolver::detect_contacts (SPEC section 2 "Detection"): bounding boxes,
+// ContactSolver::detect_contacts: bounding boxes,
 // sort-and-sweep broad phase, then collide() on every candidate pair.
 #include <cmath>
 #include <cstddef>

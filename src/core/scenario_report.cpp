@@ -98,7 +98,7 @@ void write_energy_change(std::ostream& out, double before, double after)
   }
   if (change > kEnergyRoundOff * before)
   {
-    // SPEC section 2: a contact that was resting or separating before the
+    // By the solver's contract, a contact that was resting or separating before the
     // solve, pushed by its neighbours, has target 0 and can add energy.
     out << ": energy rose, a resting contact was pushed into action by its neighbours";
   }

@@ -18,7 +18,7 @@
 // passes as in iterative mode.
 //
 // Positions (WorldSettings::exact_position_correction): the same island's
-// penetrations beyond slop, linearised as in SPEC step 3 with compliance on
+// penetrations beyond slop, linearised as in the penetration pass (world_position.cpp) with compliance on
 // the diagonal, solved at once: K lambda + softness lambda >= depth - slop,
 // lambda >= 0, complementary. A Gauss-Seidel position pass moves the light
 // body of a 1e6 mass-ratio pair and almost never the heavy one, so without

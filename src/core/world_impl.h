@@ -101,7 +101,7 @@ struct WorldImpl
   void solve_velocities(bool friction);
   double velocity_residual() const;
 
-  // world_position.cpp: penetration resolution (SPEC 3.2 step 3).
+  // world_position.cpp: penetration resolution (Fx2D step 3).
   void correct_positions(const StepContext& ctx, StepReport& report);
   void correct_pass(double softness, bool hold, bool resting_only);
   Vec2 integration_move(std::size_t i, Vec2 r) const;

@@ -1,4 +1,4 @@
-// Penetration resolution of a substep (SPEC section 3.2, step 3): positions
+// Penetration resolution of a substep (Fx2D step 3): positions
 // only, each move paired with the previous-pose shift so it never becomes
 // velocity. Several passes, an optional two-point block, and a sticking
 // contact taking back the tangential part of its integration move.
@@ -98,7 +98,7 @@ void WorldImpl::hold_static_friction(const ContactPoint& first, const ContactPoi
   // surface, and undone only in the normal direction it would become a creep
   // of g h sin(theta) downhill. A sticking contact therefore also takes back
   // the tangential move, as long as it stays inside the static cone of the
-  // normal approach it came with (Coulomb at the position level, as XPBD's
+  // normal approach it came with (Coulomb at the position level, as position-based
   // static friction).
   const Vec2 ra = 0.5 * (first.r_a + second.r_a);
   const Vec2 rb = 0.5 * (first.r_b + second.r_b);

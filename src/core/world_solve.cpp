@@ -1,4 +1,4 @@
-// The velocity stage of a substep (SPEC section 3.2, steps 5 and 6) on the
+// The velocity stage of a substep (Fx2D steps 5 and 6) on the
 // contact-solver kernel: velocities loaded once, points prepared with fixed
 // Newton targets, warm started, solved in passes, stored back.
 #include <algorithm>

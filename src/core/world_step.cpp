@@ -1,8 +1,8 @@
-// The World's step, top-down: frames of substeps in the Fx2D order of SPEC
-// section 3.2. Each stage is a call below, in the order it runs; the file
-// named beside it holds its code.
+// The World's step, top-down: frames of substeps in the Fx2D order. Each
+// stage is a call below, in the order it runs; the file named beside it holds
+// its code.
 //
-// Refinements of SPEC's order, each a setting or explained where coded:
+// Refinements of the plain Fx2D order, each a setting or explained where coded:
 //  - warm starting also on later substeps (warm_start_every_substep);
 //  - several penetration passes (position_iterations), optionally with a
 //    manifold's two points as one block (position_block), and a sticking
@@ -14,7 +14,7 @@
 //  - poses advanced with predicted velocities (warm_start_before_integration,
 //    world_warm_integration.cpp).
 //
-// Velocity derivation (SPEC step 4): the penetration resolution shifts the
+// Velocity derivation (Fx2D step 4): the penetration resolution shifts the
 // previous pose by exactly the correction it applies, so (pose - previous) / h
 // equals the velocity integrated in step 1. That integrated velocity is kept
 // instead of the difference quotient, which would lose digits far from the

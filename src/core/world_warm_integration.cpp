@@ -1,7 +1,7 @@
 // WorldSettings::warm_start_before_integration: the poses of step 1 advance
 // with a velocity predicted from the previous substep's contacts.
 //
-// In SPEC's order a resting body is moved by its gravity kick g h^2 before
+// In the Fx2D order a resting body is moved by its gravity kick g h^2 before
 // the velocity solve cancels the kick, and the position passes must lift it
 // back; a Gauss-Seidel pass carries that lift up a tall stack only in part.
 // Here the previous substep's contact rows are warm-started with the

@@ -262,7 +262,7 @@ TEST(ResolveContacts, RandomScenesExact) { check_random_scenes(SolverSettings::E
 
 TEST(ResolveContacts, ThreeDisksInARowReachTheSpecFixedPoint)
 {
-  // SPEC section 2: equal disks along x, velocities (1, 0, 0.1), e = 1: the
+  // The contract's case: equal disks along x, velocities (1, 0, 0.1), e = 1: the
   // fixed point is (-0.3, 0.7, 0.7) and kinetic energy rises 0.505 -> 0.535,
   // because the resting middle contact is pushed into action.
   constexpr double kOverlap = 1e-4;  // m: exact touching is not a contact

@@ -1,6 +1,6 @@
 // Exact (pivoting) contact solve: closed-form cases, resting and stacked
 // boxes with redundant contacts, extreme mass ratios, Coulomb friction and
-// random clusters, each checked by recomputing the SPEC section 2 contract
+// random clusters, each checked by recomputing the solver's contract
 // from the bodies and impulses the solver returns.
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ void expect_impulses_explain_velocities(const std::vector<Body>& before, const s
   }
 }
 
-/// SPEC section 2 at exit, per contact, in speeds (m/s): Newton target
+/// The solver's contract at exit, per contact, in speeds (m/s): Newton target
 /// reached, push only, complementarity, Coulomb cone, stick inside it, slide
 /// against the impulse on it. Returns the velocity scale used.
 double expect_contract(const std::vector<Body>& before, const std::vector<Body>& after,

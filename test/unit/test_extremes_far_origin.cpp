@@ -1,4 +1,4 @@
-// Far from the origin (issue 7): at 1e6 m, where one ulp of a coordinate is
+// Far from the origin: at 1e6 m, where one ulp of a coordinate is
 // 1.2e-10 m, contacts, impacts and a resting stack behave as at the origin.
 // Each scene is built twice, at the origin and shifted by kOffset, and the
 // results are compared after removing the shift.

@@ -1,4 +1,4 @@
-// Extreme geometry (issue 7): sliver polygons of aspect 1000, 64-gons,
+// Extreme geometry: sliver polygons of aspect 1000, 64-gons,
 // nearly parallel faces, exact touching, deep overlap (a centre inside the
 // other body) and coincident centres (a clear error, never NaN).
 #include <gtest/gtest.h>
@@ -125,7 +125,7 @@ SliverRest drop_sliver(int substeps, double slop, long frames)
 }
 
 // The world's resting depth is about slop + g h^2 (1 + m r^2 / I) / 4 per
-// two-point contact (SPEC section 3's correction shares each point's effective
+// two-point contact (the Fx2D correction shares each point's effective
 // mass with rotation), an absolute length: about 1.5 mm with the defaults
 // (slop 1 mm, 4 substeps). A sliver 1 mm thick therefore comes to rest fully
 // embedded in its support (stable, not falling through); with the slop scaled

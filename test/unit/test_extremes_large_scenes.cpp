@@ -1,4 +1,4 @@
-// Large scenes (issue 7): 1e4 and 1e5 bodies (disks and boxes in a static
+// Large scenes: 1e4 and 1e5 bodies (disks and boxes in a static
 // container, gravity on) step without error and stay finite, and the
 // process's peak resident memory (VmHWM from /proc/self/status) stays below
 // a stated bound: a fixed allowance for the test process plus a budget per

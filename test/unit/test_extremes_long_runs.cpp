@@ -1,4 +1,4 @@
-// Long runs (issue 7): 1e5 frames (about 28 minutes of simulated time) of a
+// Long runs: 1e5 frames (about 28 minutes of simulated time) of a
 // resting stack and of a small elastic gas, with the world's default
 // settings. Sizes are chosen so each run takes a few seconds in Release.
 //

@@ -1,4 +1,4 @@
-// Extreme mass ratios (issue 7): 1D impacts from 1e-6 to 1e6 against the
+// Extreme mass ratios: 1D impacts from 1e-6 to 1e6 against the
 // closed-form Newton impact, with the iterative and the exact solver, and
 // heavy-on-light stacks, where the two solvers differ and the tests state
 // what each holds.

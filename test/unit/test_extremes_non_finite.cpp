@@ -1,4 +1,4 @@
-// Non-finite input (issue 7, robustness): every core entry point rejects NaN
+// Non-finite input (robustness): every core entry point rejects NaN
 // and infinities with an error that names what was wrong, finite input whose
 // derived mass properties leave the double range is rejected rather than
 // turned into NaN, and a random soak asserts that finite input never gives a

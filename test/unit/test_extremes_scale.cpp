@@ -1,4 +1,4 @@
-// Scale (issue 7): the same scene at sizes 1e-4 m to 1e4 m gives the same
+// Scale: the same scene at sizes 1e-4 m to 1e4 m gives the same
 // dimensionless result. Lengths, speeds and gravity scale with the size L
 // (times and masses do not); every setting that is a length or a speed must
 // scale with it too, and the tests do so:

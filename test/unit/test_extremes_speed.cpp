@@ -1,4 +1,4 @@
-// Extreme speeds (issue 7): bodies at 1e4 m/s do not tunnel with time of
+// Extreme speeds: bodies at 1e4 m/s do not tunnel with time of
 // impact on (ContactSolver::step and World with time_of_impact On or Auto),
 // the same World scene with it Off does tunnel (so the check can fail), and
 // spin at 1e4 rad/s stays finite without gaining energy.

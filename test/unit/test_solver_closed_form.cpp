@@ -1,5 +1,5 @@
 // The velocity solve against textbook closed forms: 1D impacts, off-centre
-// hits, frictionless spin, Coulomb sliding and sticking, and SPEC's three-disk
+// hits, frictionless spin, Coulomb sliding and sticking, and the contract's three-disk
 // fixed point where a resting contact is pushed into action.
 #include <gtest/gtest.h>
 
@@ -222,7 +222,7 @@ TEST(SolverClosedForm, ThreeDisksInARowReachTheFixedPointAndGainEnergy)
   ASSERT_TRUE(report.converged);
   for (int i = 0; i < 3; ++i)
     EXPECT_NEAR(bodies[i].velocity().x, v[i], kTight);
-  EXPECT_NEAR(v[0], -0.3, kTight);  // SPEC's quoted values
+  EXPECT_NEAR(v[0], -0.3, kTight);  // the contract's quoted values
   EXPECT_NEAR(v[1], 0.7, kTight);
   EXPECT_NEAR(impulses[0].normal, lambda_left, kTight);
   EXPECT_NEAR(impulses[1].normal, lambda_right, kTight);

@@ -16,7 +16,7 @@ using test::make_contact;
 
 constexpr double kVelocityTol = 1e-12;  // m/s
 
-// SPEC's three equal touching disks, velocities (1, 0, 0.1), e = 1.
+// The contract's three equal touching disks, velocities (1, 0, 0.1), e = 1.
 std::vector<Body> three_disks()
 {
   return {Body(1.0, 0.5, {0.0, 0.0}, {1.0, 0.0}), Body(1.0, 0.5, {1.0, 0.0}, {0.0, 0.0}),

@@ -1,5 +1,5 @@
 // The World in SolverMode::Exact: what it buys (a heavy-on-light stack at a
-// 1e6 mass ratio settles where the compliance of SPEC section 3 puts it and
+// 1e6 mass ratio settles where the contact compliance puts it and
 // stays there, where the iterative passes let the heavy box fall through the
 // light one), and that it keeps the contract of the iterative mode (Coulomb
 // stick/slip on an incline with mu_s/mu_k, fallback when pivoting fails).
@@ -56,7 +56,7 @@ Stack heavy_on_light(SolverMode mode, double compliance)
 }
 
 /// Rest depth of a box's two-point contact under `load` (N): each point is a
-/// spring of compliance epsilon (SPEC step 3's epsilon / h^2 term), the two
+/// spring of compliance epsilon (the penetration pass's epsilon / h^2 term), the two
 /// share the load, and the correction stops at slop.
 double rest_depth(const WorldSettings& s, double load)
 {

@@ -137,14 +137,14 @@ TEST(WorldStacking, Base20PyramidStandsTenSeconds)
 {
   const WorldSettings defaults;
   const Scene pyramid = scenes::pyramid(20);
-  // One pass (SPEC), for the record; each pyramid run costs about a second,
+  // One pass (the plain Fx2D order), for the record; each pyramid run costs about a second,
   // so the substep sweep is left to the benchmark (8 substeps, 4 passes:
   // 0.024 m, 0.0003 m after settling).
   const StackRun spec_pass = run_stack(pyramid, defaults.substeps, 1, false);
   const StackRun run = run_stack(pyramid, defaults.substeps, defaults.position_iterations, defaults.position_block);
   // Measured at the defaults (4 substeps, 4 position passes): 0.029 m, most of
   // it the first second's settling onto slop-deep contacts (20 rows); 0.0015 m
-  // after it. One pass (SPEC): 0.056 m, 0.006 m after settling.
+  // after it. One pass (plain Fx2D): 0.056 m, 0.006 m after settling.
   EXPECT_LT(run.from_start.distance, 0.04);
   EXPECT_LT(run.since_settled.distance, 0.003);
   EXPECT_LT(run.from_start.lateral, 0.015);
@@ -169,7 +169,7 @@ TEST(WorldStacking, TwentyBoxColumnStandsTenSeconds)
   const StackRun run = run_stack(column, defaults.substeps, defaults.position_iterations, defaults.position_block);
   // Each of the 20 contacts keeps up to slop (1 mm) of penetration by design,
   // so the top box sinks about 20 mm even when every correction converges. One
-  // position pass per substep (SPEC) leaves part of each substep's gravity sag
+  // position pass per substep (plain Fx2D) leaves part of each substep's gravity sag
   // g h^2 in every contact: 0.15 m. Four passes (default): 0.054 m, 0.008 m of
   // it after the first second; a 2x2 block per manifold: 0.052 m in one pass.
   EXPECT_LT(run.from_start.distance, 0.07);

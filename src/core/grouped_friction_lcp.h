@@ -4,9 +4,8 @@
 // The two points of a manifold lie on one face and share its tangent; two
 // friction rows there are one constraint twice. Their impulses may grow
 // equal and opposite without changing any velocity, and at a 1e6 mass ratio
-// that null space leaves pivoting with a singular basis and an answer whose
-// recomputed residual is 10% of its speeds (measured on the heavy-on-light
-// scene). One friction row at the pair's midpoint, against the cone of the
+// that null space leaves pivoting with a singular basis and an answer far
+// from the contract (on the heavy-on-light scene). One friction row at the pair's midpoint, against the cone of the
 // pair's summed normal impulse, removes it: the same model as the World's
 // iterative pair friction (world_solve.cpp, solve_friction_pair).
 #pragma once

@@ -1,29 +1,13 @@
-// WorldSettings::warm_start_before_integration: the poses of step 1 advance
-// with a velocity predicted from the previous substep's contacts.
-//
-// In the Fx2D order a resting body is moved by its gravity kick g h^2 before
-// the velocity solve cancels the kick, and the position passes must lift it
-// back; a Gauss-Seidel pass carries that lift up a tall stack only in part.
-// Here the previous substep's contact rows are warm-started with the
-// impulses they carried and solved once more (with rest targets) before the
-// poses move, so a resting body's kick is cancelled first and it stays where
-// it rests; Box2D moves its poses with solved velocities in the same way.
-//
-// Warm-starting alone is not enough: a box on two points carries its weight
-// in a split the Gauss-Seidel passes leave undetermined, and the split they
-// end on changes from substep to substep. Moving a pose with the impulses of
-// the previous split (not solved against each other) rocked the base-20
-// pyramid at 4x2 until its top slid off (0.46 m in 10 s). The solve makes the
-// predicted velocity consistent with the contacts (0.15 m: at 4x2 the pyramid
-// still rattles, see WorldSettings), and it takes an impact's
-// impulse back (the contact now separates), where warm-starting alone would
-// lift the body by (1 + e) v h.
-//
+// WorldSettings::warm_start_before_integration: step 1 advances the poses
+// with velocities predicted from the previous substep's contacts, warm-started
+// and solved once with rest targets, so a resting body's gravity kick is
+// cancelled before it moves instead of being lifted back by the position
+// passes. The solve matters, not the warm start alone: the split of a box's
+// weight over its two points changes from substep to substep, and moving with
+// an unsolved split rocks a pyramid (docs/performance.md has the figures).
 // Only the poses change: after detection every velocity is set back to its
-// value after the gravity kick, so the Newton targets (measured before any
-// impulse of the substep), the warm start of the velocity solve, the friction
-// state and a cached contact that detection does not find again are exactly
-// those of the default order.
+// value after the kick, so the Newton targets, the warm start, the friction
+// state and the cache are exactly those of the default order.
 
 #include "world_impl.h"
 

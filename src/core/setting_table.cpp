@@ -17,11 +17,6 @@ std::string bound_text(double value)
   return std::isinf(value) ? (value > 0 ? "inf" : "-inf") : number_text(value);
 }
 
-bool is_choice(SettingKind kind)
-{
-  return kind == SettingKind::Flag || kind == SettingKind::Toggle || kind == SettingKind::SolverMode;
-}
-
 }  // namespace
 
 bool in_range(const SettingRange& range, double value)
@@ -64,10 +59,6 @@ std::string range_text(const SettingRange& range, SettingKind kind)
       return "iterative | exact";
     default:
       break;
-  }
-  if (is_choice(kind))
-  {
-    return "";
   }
   const char open = range.min_exclusive || !std::isfinite(range.min) ? '(' : '[';
   const char close = std::isfinite(range.max) ? ']' : ')';

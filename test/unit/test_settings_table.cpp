@@ -31,6 +31,8 @@ TEST(SettingsTable, DefaultsAndOffDefaultValuesAreValid)
 /// Index of each field whose range has a bound, with a value beyond it.
 struct BadValueOf
 {
+  explicit BadValueOf(std::size_t field) : target(field) {}
+
   std::size_t target;
   std::size_t index = 0;
   std::string name;  ///< set when the target field took a bad value
@@ -71,7 +73,7 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
   for (std::size_t field = 0;; ++field)
   {
     WorldSettings settings;
-    BadValueOf visitor{field};
+    BadValueOf visitor(field);
     visit_world_settings(settings, visitor);
     if (field >= visitor.index)
     {

@@ -1,86 +1,252 @@
-// The world_* fields of the config mirror WorldConfig, so the world settings
-// go through the message conversion and share its validation.
+// The config's fields by name (through dynamic_reconfigure's generic Config
+// message), so each table drives its group: "<group>_<field>".
 #include "collision2d/ros/reconfigure.h"
 
+#include <algorithm>
+#include <limits>
+
+#include <dynamic_reconfigure/config_tools.h>
+#include <ros/console.h>
+
 #include "collision2d/ros/settings_conversions.h"
+#include "collision2d/ros/validation.h"
 
 namespace collision2d
 {
 namespace ros_interface
 {
-SolverSettings solver_settings_from_config(const Collision2dConfig& config)
+namespace
 {
-  SolverSettings msg;
-  msg.restitution = config.solver_restitution;
-  msg.friction = config.solver_friction;
-  msg.iterations = config.solver_iterations;
-  msg.tolerance = config.solver_tolerance;
-  msg.bias_factor = config.solver_bias_factor;
-  msg.slop = config.solver_slop;
-  msg.use_time_of_impact = config.solver_use_time_of_impact;
-  msg.mode = static_cast<std::uint8_t>(config.solver_mode);
-  return msg;
+using dynamic_reconfigure::ConfigTools;
+
+const char* const kSolverPrefix = "solver_";
+const char* const kWorldPrefix = "world_";
+const char* const kWhere = "dynamic_reconfigure";
+
+/// The names a table field takes in the config (two for a vector).
+std::vector<std::string> parameter_names(const std::string& prefix, const SettingInfo& info)
+{
+  const std::string name = prefix + info.name;
+  if (info.kind == SettingKind::Vector)
+  {
+    return {name + "_x", name + "_y"};
+  }
+  return {name};
 }
 
-WorldSettings world_settings_from_config(const Collision2dConfig& config, const WorldSettings& base)
+[[noreturn]] void refuse(const std::string& name, const std::string& value, const std::string& range)
 {
-  WorldConfig msg = world_settings_to_msg(base);
-  msg.gravity.x = config.world_gravity_x;
-  msg.gravity.y = config.world_gravity_y;
-  msg.dt = config.world_dt;
-  msg.substeps = config.world_substeps;
-  msg.velocity_iterations = config.world_velocity_iterations;
-  msg.solver_mode = static_cast<std::uint8_t>(config.world_solver_mode);
-  msg.position_iterations = config.world_position_iterations;
-  msg.position_block = config.world_position_block;
-  msg.exact_position_correction = config.world_exact_position_correction;
-  msg.warm_start_before_integration = config.world_warm_start_before_integration;
-  msg.slop = config.world_slop;
-  msg.compliance = config.world_compliance;
-  msg.restitution_threshold = config.world_restitution_threshold;
-  msg.rotation = static_cast<std::uint8_t>(config.world_rotation);
-  msg.friction = static_cast<std::uint8_t>(config.world_friction);
-  msg.restitution = static_cast<std::uint8_t>(config.world_restitution);
-  msg.position_correction = static_cast<std::uint8_t>(config.world_position_correction);
-  msg.time_of_impact = static_cast<std::uint8_t>(config.world_time_of_impact);
-  msg.warm_starting = static_cast<std::uint8_t>(config.world_warm_starting);
-  msg.sleeping = static_cast<std::uint8_t>(config.world_sleeping);
-  msg.warm_start_factor = config.world_warm_start_factor;
-  msg.warm_start_every_substep = config.world_warm_start_every_substep;
-  msg.sleep_linear_speed = config.world_sleep_linear_speed;
-  msg.sleep_angular_speed = config.world_sleep_angular_speed;
-  msg.sleep_time = config.world_sleep_time;
-  return world_settings_from_msg(msg);
+  reject(kWhere, name + " = " + value + " is outside " + range);
+}
+
+/// Reads each field of a table from the config, checking it against its range.
+class ConfigReader
+{
+public:
+  ConfigReader(const Collision2dConfig& config, const char* prefix) : prefix_(prefix) { config.__toMessage__(msg_); }
+
+  void operator()(const SettingInfo& info, double& value) const
+  {
+    value = get<double>(name(info));
+    check(info, name(info), value);
+  }
+  void operator()(const SettingInfo& info, int& value) const
+  {
+    value = get<int>(name(info));
+    check(info, name(info), value);
+  }
+  void operator()(const SettingInfo& info, std::size_t& value) const
+  {
+    const int raw = get<int>(name(info));
+    check(info, name(info), raw);
+    value = static_cast<std::size_t>(raw);
+  }
+  void operator()(const SettingInfo& info, bool& value) const { value = get<bool>(name(info)); }
+  void operator()(const SettingInfo& info, Toggle& value) const { value = static_cast<Toggle>(choice(info, 2)); }
+  void operator()(const SettingInfo& info, SolverMode& value) const
+  {
+    value = static_cast<SolverMode>(choice(info, 1));
+  }
+  void operator()(const SettingInfo& info, Vec2& value) const
+  {
+    const std::vector<std::string> names = parameter_names(prefix_, info);
+    value = Vec2{get<double>(names[0]), get<double>(names[1])};
+    check(info, names[0], value.x);
+    check(info, names[1], value.y);
+  }
+
+private:
+  std::string name(const SettingInfo& info) const { return prefix_ + info.name; }
+
+  template <typename T>
+  T get(const std::string& name) const
+  {
+    T value{};
+    if (!ConfigTools::getParameter(msg_, name, value))
+    {
+      reject(kWhere, name + " is missing from cfg/Collision2d.cfg");
+    }
+    return value;
+  }
+
+  static void check(const SettingInfo& info, const std::string& name, double value)
+  {
+    if (!in_range(info.range, value))
+    {
+      refuse(name, format_number(value), range_text(info.range, info.kind));
+    }
+  }
+
+  /// The index of an enumerated choice, in [0, last].
+  int choice(const SettingInfo& info, int last) const
+  {
+    const int value = get<int>(name(info));
+    if (value < 0 || value > last)
+    {
+      refuse(name(info), std::to_string(value), "[0, " + std::to_string(last) + "] (" +
+                                                    range_text(info.range, info.kind) + ")");
+    }
+    return value;
+  }
+
+  std::string prefix_;
+  dynamic_reconfigure::Config msg_;
+};
+
+/// Writes each field of a table into the config.
+class ConfigWriter
+{
+public:
+  ConfigWriter(const Collision2dConfig& config, const char* prefix) : prefix_(prefix) { config.__toMessage__(msg_); }
+
+  void operator()(const SettingInfo& info, double value) { set(prefix_ + info.name, value); }
+  void operator()(const SettingInfo& info, int value) { set(prefix_ + info.name, value); }
+  void operator()(const SettingInfo& info, std::size_t value)
+  {
+    set(prefix_ + info.name, static_cast<int>(std::min<std::size_t>(value, std::numeric_limits<int>::max())));
+  }
+  void operator()(const SettingInfo& info, bool value) { set(prefix_ + info.name, value); }
+  void operator()(const SettingInfo& info, Toggle value) { set(prefix_ + info.name, static_cast<int>(value)); }
+  void operator()(const SettingInfo& info, SolverMode value) { set(prefix_ + info.name, static_cast<int>(value)); }
+  void operator()(const SettingInfo& info, Vec2 value)
+  {
+    const std::vector<std::string> names = parameter_names(prefix_, info);
+    set(names[0], value.x);
+    set(names[1], value.y);
+  }
+
+  void store(Collision2dConfig& config) { config.__fromMessage__(msg_); }
+
+private:
+  template <typename T>
+  void set(const std::string& name, T value)
+  {
+    for (auto& parameter : ConfigTools::getVectorForType(msg_, value))
+    {
+      if (parameter.name == name)
+      {
+        parameter.value = value;
+        return;
+      }
+    }
+    reject(kWhere, name + " is missing from cfg/Collision2d.cfg");
+  }
+
+  std::string prefix_;
+  dynamic_reconfigure::Config msg_;
+};
+
+}  // namespace
+
+ResolveSettings resolve_settings_from_config(const Collision2dConfig& config)
+{
+  ResolveSettings settings;
+  visit_resolve_settings(settings, ConfigReader(config, kSolverPrefix));
+  return settings;
+}
+
+void resolve_settings_to_config(const ResolveSettings& settings, Collision2dConfig& config)
+{
+  ConfigWriter writer(config, kSolverPrefix);
+  visit_resolve_settings(settings, writer);
+  writer.store(config);
+}
+
+WorldSettings world_settings_from_config(const Collision2dConfig& config)
+{
+  WorldSettings settings;
+  visit_world_settings(settings, ConfigReader(config, kWorldPrefix));
+  try
+  {
+    validate_world_settings(settings);  // the same ranges; the authority all the same
+  }
+  catch (const std::invalid_argument& e)
+  {
+    reject(kWhere, e.what());
+  }
+  return settings;
 }
 
 void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& config)
 {
-  const WorldConfig msg = world_settings_to_msg(settings);
-  config.world_gravity_x = msg.gravity.x;
-  config.world_gravity_y = msg.gravity.y;
-  config.world_dt = msg.dt;
-  config.world_substeps = msg.substeps;
-  config.world_velocity_iterations = msg.velocity_iterations;
-  config.world_solver_mode = msg.solver_mode;
-  config.world_position_iterations = msg.position_iterations;
-  config.world_position_block = msg.position_block;
-  config.world_exact_position_correction = msg.exact_position_correction;
-  config.world_warm_start_before_integration = msg.warm_start_before_integration;
-  config.world_slop = msg.slop;
-  config.world_compliance = msg.compliance;
-  config.world_restitution_threshold = msg.restitution_threshold;
-  config.world_rotation = msg.rotation;
-  config.world_friction = msg.friction;
-  config.world_restitution = msg.restitution;
-  config.world_position_correction = msg.position_correction;
-  config.world_time_of_impact = msg.time_of_impact;
-  config.world_warm_starting = msg.warm_starting;
-  config.world_sleeping = msg.sleeping;
-  config.world_warm_start_factor = msg.warm_start_factor;
-  config.world_warm_start_every_substep = msg.warm_start_every_substep;
-  config.world_sleep_linear_speed = msg.sleep_linear_speed;
-  config.world_sleep_angular_speed = msg.sleep_angular_speed;
-  config.world_sleep_time = msg.sleep_time;
+  ConfigWriter writer(config, kWorldPrefix);
+  visit_world_settings(settings, writer);
+  writer.store(config);
+}
+
+SolverSettings accept_solver_config(Collision2dConfig& config, const SolverSettings& current)
+{
+  try
+  {
+    return resolve_settings_to_msg(resolve_settings_from_config(config));
+  }
+  catch (const InvalidRequest& e)
+  {
+    ROS_WARN("%s: refused, the solver settings stay as they were", e.what());
+  }
+  ResolveSettings kept;
+  try
+  {
+    kept = resolve_settings_from_msg(current);
+  }
+  catch (const InvalidRequest&)
+  {
+    // Nothing valid was set before (a bad initial parameter): the table's defaults.
+  }
+  resolve_settings_to_config(kept, config);
+  return resolve_settings_to_msg(kept);
+}
+
+void accept_world_config(Collision2dConfig& config, const WorldSettings& current,
+                         const std::function<void(const WorldSettings&)>& apply)
+{
+  try
+  {
+    apply(world_settings_from_config(config));
+  }
+  catch (const InvalidRequest& e)
+  {
+    ROS_WARN("%s: refused, the world's settings stay as they were", e.what());
+    world_settings_to_config(current, config);
+  }
+}
+
+std::vector<std::string> table_parameter_names()
+{
+  std::vector<std::string> names;
+  auto collect = [&names](const char* prefix) {
+    return [&names, prefix](const SettingInfo& info, const auto&) {
+      for (const std::string& name : parameter_names(prefix, info))
+      {
+        names.push_back(name);
+      }
+    };
+  };
+  const ResolveSettings resolve;
+  visit_resolve_settings(resolve, collect(kSolverPrefix));
+  const WorldSettings world;
+  visit_world_settings(world, collect(kWorldPrefix));
+  return names;
 }
 
 }  // namespace ros_interface

@@ -1,7 +1,10 @@
-// SolverSettings / WorldConfig <-> ContactSolver / WorldSettings.
+// SolverSettings / WorldConfig <-> ResolveSettings / WorldSettings, field by
+// field from the tables (resolve_settings.h, world_settings.h): each message
+// field has its setting's name, so a field missing on either side does not compile.
 #include "collision2d/ros/settings_conversions.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -15,88 +18,140 @@ namespace ros_interface
 namespace
 {
 const char* const kSettings = "settings";
+const char* const kWorldModes = "SOLVER_ITERATIVE (0) or SOLVER_EXACT (1)";
+const char* const kSolverModes = "ITERATIVE (0) or EXACT (1)";
 
-SolverMode solver_mode_from_msg(std::uint8_t mode)
+// The enumerators are the messages' constants.
+static_assert(static_cast<int>(Toggle::Auto) == WorldConfig::AUTO && static_cast<int>(Toggle::On) == WorldConfig::ON &&
+              static_cast<int>(Toggle::Off) == WorldConfig::OFF);
+static_assert(static_cast<int>(SolverMode::Iterative) == WorldConfig::SOLVER_ITERATIVE &&
+              static_cast<int>(SolverMode::Exact) == WorldConfig::SOLVER_EXACT &&
+              static_cast<int>(SolverMode::Iterative) == SolverSettings::ITERATIVE &&
+              static_cast<int>(SolverMode::Exact) == SolverSettings::EXACT);
+
+void from_msg(double& out, double in, const char*, const char*) { out = in; }
+void from_msg(int& out, std::int32_t in, const char*, const char*) { out = in; }
+void from_msg(std::size_t& out, std::uint32_t in, const char*, const char*) { out = in; }
+void from_msg(bool& out, std::uint8_t in, const char*, const char*) { out = in != 0; }
+
+void from_msg(Vec2& out, const geometry_msgs::Vector3& in, const char* name, const char*)
 {
-  switch (mode)
+  require_finite(in.x, kSettings, std::string(name) + ".x");
+  require_finite(in.y, kSettings, std::string(name) + ".y");
+  out = Vec2{in.x, in.y};
+}
+
+void from_msg(Toggle& out, std::uint8_t in, const char* name, const char*)
+{
+  if (in > WorldConfig::OFF)
   {
-    case SolverSettings::ITERATIVE:
-      return SolverMode::Iterative;
-    case SolverSettings::EXACT:
-      return SolverMode::Exact;
-    default:
-      reject(kSettings, "mode = " + std::to_string(mode) + " is not ITERATIVE (0) or EXACT (1)");
+    reject(kSettings, std::string(name) + " = " + std::to_string(in) + " is not AUTO (0), ON (1) or OFF (2)");
   }
+  out = static_cast<Toggle>(in);
 }
 
-SolverMode world_solver_mode_from_msg(std::uint8_t mode)
+void from_msg(SolverMode& out, std::uint8_t in, const char* name, const char* modes)
 {
-  switch (mode)
+  if (in > WorldConfig::SOLVER_EXACT)
   {
-    case WorldConfig::SOLVER_ITERATIVE:
-      return SolverMode::Iterative;
-    case WorldConfig::SOLVER_EXACT:
-      return SolverMode::Exact;
-    default:
-      reject(kSettings,
-             "solver_mode = " + std::to_string(mode) + " is not SOLVER_ITERATIVE (0) or SOLVER_EXACT (1)");
+    reject(kSettings, std::string(name) + " = " + std::to_string(in) + " is not " + modes);
   }
+  out = static_cast<SolverMode>(in);
 }
 
-std::uint8_t world_solver_mode_to_msg(SolverMode mode)
+double to_msg(double value) { return value; }
+std::int32_t to_msg(int value) { return value; }
+bool to_msg(bool value) { return value; }
+std::uint8_t to_msg(Toggle value) { return static_cast<std::uint8_t>(value); }
+std::uint8_t to_msg(SolverMode value) { return static_cast<std::uint8_t>(value); }
+
+std::uint32_t to_msg(std::size_t value)
 {
-  return mode == SolverMode::Exact ? WorldConfig::SOLVER_EXACT : WorldConfig::SOLVER_ITERATIVE;
+  return static_cast<std::uint32_t>(std::min<std::size_t>(value, std::numeric_limits<std::uint32_t>::max()));
 }
 
-Toggle toggle_from_msg(std::uint8_t value, const char* field)
+geometry_msgs::Vector3 to_msg(Vec2 value)
 {
-  switch (value)
+  geometry_msgs::Vector3 out;
+  out.x = value.x;
+  out.y = value.y;
+  return out;
+}
+
+/// The request's view of a range: "settings: friction = -1 must be >= 0".
+struct RequireInRange
+{
+  void operator()(const SettingInfo& info, double value) const
   {
-    case WorldConfig::AUTO:
-      return Toggle::Auto;
-    case WorldConfig::ON:
-      return Toggle::On;
-    case WorldConfig::OFF:
-      return Toggle::Off;
-    default:
-      reject(kSettings, std::string(field) + " = " + std::to_string(value) + " is not AUTO (0), ON (1) or OFF (2)");
+    const SettingRange& r = info.range;
+    if (std::isfinite(r.max))
+    {
+      require_in_range(value, r.min, r.max, kSettings, info.name);
+    }
+    else if (r.min == 0.0 && r.min_exclusive)
+    {
+      require_positive(value, kSettings, info.name);
+    }
+    else if (r.min == 0.0)
+    {
+      require_non_negative(value, kSettings, info.name);
+    }
+    else
+    {
+      require_finite(value, kSettings, info.name);
+      if (!in_range(r, value))
+      {
+        reject(kSettings, std::string(info.name) + " = " + format_number(value) + " must be " +
+                              describe_range(r, info.kind));
+      }
+    }
   }
-}
-
-std::uint8_t toggle_to_msg(Toggle toggle)
-{
-  switch (toggle)
+  void operator()(const SettingInfo& info, int value) const
   {
-    case Toggle::On:
-      return WorldConfig::ON;
-    case Toggle::Off:
-      return WorldConfig::OFF;
-    case Toggle::Auto:
-      break;
+    const SettingRange& r = info.range;
+    if (in_range(r, value))
+    {
+      return;
+    }
+    const auto bound = [](double b) { return std::to_string(static_cast<long long>(b)); };
+    const std::string rule =
+        std::isfinite(r.max) ? "in [" + bound(r.min) + ", " + bound(r.max) + "]" : ">= " + bound(r.min);
+    reject(kSettings, std::string(info.name) + " = " + std::to_string(value) + " must be " + rule);
   }
-  return WorldConfig::AUTO;
-}
+  template <typename Choice>
+  void operator()(const SettingInfo&, Choice) const
+  {
+  }
+};
 
 }  // namespace
 
+#define COLLISION2D_FROM_MSG(name, type, default_value, range, unit, doc) \
+  from_msg(settings.name, msg.name, #name, kModes);
+#define COLLISION2D_TO_MSG(name, type, default_value, range, unit, doc) msg.name = to_msg(settings.name);
+
+ResolveSettings resolve_settings_from_msg(const SolverSettings& msg)
+{
+  const char* const kModes = kSolverModes;
+  ResolveSettings settings;
+  COLLISION2D_RESOLVE_SETTINGS(COLLISION2D_FROM_MSG)
+  visit_resolve_settings(settings, RequireInRange{});
+  return settings;
+}
+
+SolverSettings resolve_settings_to_msg(const ResolveSettings& settings)
+{
+  SolverSettings msg;
+  COLLISION2D_RESOLVE_SETTINGS(COLLISION2D_TO_MSG)
+  return msg;
+}
+
 ContactSolver solver_from_msg(const SolverSettings& msg)
 {
-  require_in_range(msg.restitution, 0.0, 1.0, kSettings, "restitution");
-  require_non_negative(msg.friction, kSettings, "friction");
-  if (msg.iterations < 1 || msg.iterations > kMaxSolverIterations)
-  {
-    reject(kSettings, "iterations = " + std::to_string(msg.iterations) + " must be in [1, " +
-                          std::to_string(kMaxSolverIterations) + "]");
-  }
-  require_positive(msg.tolerance, kSettings, "tolerance");
-  require_in_range(msg.bias_factor, 0.0, 1.0, kSettings, "bias_factor");
-  require_non_negative(msg.slop, kSettings, "slop");
-  const SolverMode mode = solver_mode_from_msg(msg.mode);
+  const ResolveSettings settings = resolve_settings_from_msg(msg);
   try
   {
-    ContactSolver solver(msg.restitution, msg.friction, msg.iterations, msg.tolerance, msg.bias_factor, msg.slop);
-    solver.set_mode(mode);
-    return solver;
+    return make_contact_solver(settings);
   }
   catch (const std::invalid_argument& e)
   {
@@ -106,35 +161,9 @@ ContactSolver solver_from_msg(const SolverSettings& msg)
 
 WorldSettings world_settings_from_msg(const WorldConfig& msg)
 {
-  require_finite(msg.gravity.x, kSettings, "gravity.x");
-  require_finite(msg.gravity.y, kSettings, "gravity.y");
+  const char* const kModes = kWorldModes;
   WorldSettings settings;
-  settings.gravity = Vec2{msg.gravity.x, msg.gravity.y};
-  settings.dt = msg.dt;
-  settings.substeps = msg.substeps;
-  settings.velocity_iterations = msg.velocity_iterations;
-  settings.slop = msg.slop;
-  settings.compliance = msg.compliance;
-  settings.restitution_threshold = msg.restitution_threshold;
-  settings.solver_mode = world_solver_mode_from_msg(msg.solver_mode);
-  settings.position_iterations = msg.position_iterations;
-  settings.position_block = msg.position_block;
-  settings.exact_position_correction = msg.exact_position_correction;
-  settings.warm_start_before_integration = msg.warm_start_before_integration;
-  settings.rotation = toggle_from_msg(msg.rotation, "rotation");
-  settings.friction = toggle_from_msg(msg.friction, "friction");
-  settings.restitution = toggle_from_msg(msg.restitution, "restitution");
-  settings.position_correction = toggle_from_msg(msg.position_correction, "position_correction");
-  settings.time_of_impact = toggle_from_msg(msg.time_of_impact, "time_of_impact");
-  settings.warm_starting = toggle_from_msg(msg.warm_starting, "warm_starting");
-  settings.sleeping = toggle_from_msg(msg.sleeping, "sleeping");
-  settings.warm_start_factor = msg.warm_start_factor;
-  settings.warm_start_every_substep = msg.warm_start_every_substep;
-  settings.toi_displacement_fraction = msg.toi_displacement_fraction;
-  settings.sleep_linear_speed = msg.sleep_linear_speed;
-  settings.sleep_angular_speed = msg.sleep_angular_speed;
-  settings.sleep_time = msg.sleep_time;
-  settings.sleep_auto_min_bodies = msg.sleep_auto_min_bodies;
+  COLLISION2D_WORLD_SETTINGS(COLLISION2D_FROM_MSG)
   try
   {
     // The world's own ranges are the authority; its message names the field.
@@ -150,34 +179,7 @@ WorldSettings world_settings_from_msg(const WorldConfig& msg)
 WorldConfig world_settings_to_msg(const WorldSettings& settings)
 {
   WorldConfig msg;
-  msg.gravity.x = settings.gravity.x;
-  msg.gravity.y = settings.gravity.y;
-  msg.dt = settings.dt;
-  msg.substeps = settings.substeps;
-  msg.velocity_iterations = settings.velocity_iterations;
-  msg.slop = settings.slop;
-  msg.compliance = settings.compliance;
-  msg.restitution_threshold = settings.restitution_threshold;
-  msg.solver_mode = world_solver_mode_to_msg(settings.solver_mode);
-  msg.position_iterations = settings.position_iterations;
-  msg.position_block = settings.position_block;
-  msg.exact_position_correction = settings.exact_position_correction;
-  msg.warm_start_before_integration = settings.warm_start_before_integration;
-  msg.rotation = toggle_to_msg(settings.rotation);
-  msg.friction = toggle_to_msg(settings.friction);
-  msg.restitution = toggle_to_msg(settings.restitution);
-  msg.position_correction = toggle_to_msg(settings.position_correction);
-  msg.time_of_impact = toggle_to_msg(settings.time_of_impact);
-  msg.warm_starting = toggle_to_msg(settings.warm_starting);
-  msg.sleeping = toggle_to_msg(settings.sleeping);
-  msg.warm_start_factor = settings.warm_start_factor;
-  msg.warm_start_every_substep = settings.warm_start_every_substep;
-  msg.toi_displacement_fraction = settings.toi_displacement_fraction;
-  msg.sleep_linear_speed = settings.sleep_linear_speed;
-  msg.sleep_angular_speed = settings.sleep_angular_speed;
-  msg.sleep_time = settings.sleep_time;
-  msg.sleep_auto_min_bodies = static_cast<std::uint32_t>(
-      std::min<std::size_t>(settings.sleep_auto_min_bodies, std::numeric_limits<std::uint32_t>::max()));
+  COLLISION2D_WORLD_SETTINGS(COLLISION2D_TO_MSG)
   return msg;
 }
 

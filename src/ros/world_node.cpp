@@ -12,6 +12,7 @@
 #include "collision2d/ros/resolve_contacts.h"
 #include "collision2d/ros/settings_conversions.h"
 #include "collision2d/ros/validation.h"
+#include "collision2d/scenes/scene_file.h"
 
 namespace collision2d
 {
@@ -100,6 +101,8 @@ WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHand
   , rate_(0.0)
   , world_(options_from_params(private_handle))
 {
+  // Scene and snapshot files naming a setting's former name say so on /rosout.
+  scenes::set_warning_handler([](const std::string& message) { ROS_WARN("%s", message.c_str()); });
   private_handle_.param("rate", rate_, 0.0);
   state_publisher_ = node_handle_.advertise<WorldState>("world_state", 1, /*latch=*/true);
   world_.set_change_listener([this](const WorldState& state) { state_publisher_.publish(state); });
@@ -228,31 +231,16 @@ void WorldNode::start_timer()
 
 void WorldNode::on_reconfigure(Collision2dConfig& config, std::uint32_t level)
 {
+  // A refused value is put back in `config`, which the server then publishes.
   if (level & kSolverLevel)
   {
-    const SolverSettings settings = solver_settings_from_config(config);
-    try
-    {
-      solver_from_msg(settings);  // validates
-      std::lock_guard<std::mutex> lock(solver_mutex_);
-      solver_settings_ = settings;
-    }
-    catch (const InvalidRequest& e)
-    {
-      ROS_ERROR("solver settings not changed: %s", e.what());
-    }
+    const SolverSettings settings = accept_solver_config(config, solver_settings());
+    std::lock_guard<std::mutex> lock(solver_mutex_);
+    solver_settings_ = settings;
   }
   if (reconfigure_started_ && (level & kWorldLevel))
   {
-    try
-    {
-      world_.set_settings(world_settings_from_config(config, world_.settings()));
-    }
-    catch (const InvalidRequest& e)
-    {
-      ROS_ERROR("world settings not changed: %s", e.what());
-      world_settings_to_config(world_.settings(), config);
-    }
+    accept_world_config(config, world_.settings(), [this](const WorldSettings& s) { world_.set_settings(s); });
   }
   config_ = config;
 }

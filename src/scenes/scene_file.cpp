@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 
@@ -24,6 +26,9 @@ const std::vector<std::string>& scene_extensions()
   static const std::vector<std::string> kExtensions = {".yaml", ".yml", ".collision"};
   return kExtensions;
 }
+
+std::mutex warning_mutex;
+std::function<void(const std::string&)> warning_handler;  ///< empty: std::cerr
 
 std::string read_text(const std::string& path)
 {
@@ -58,6 +63,30 @@ Scene load_collision_file(const std::string& path)
 }
 
 }  // namespace
+
+void set_warning_handler(std::function<void(const std::string&)> handler)
+{
+  std::lock_guard<std::mutex> lock(warning_mutex);
+  warning_handler = std::move(handler);
+}
+
+void SceneReading::warn(const std::string& message) const
+{
+  if (warnings != nullptr)
+  {
+    warnings->push_back(message);
+    return;
+  }
+  std::lock_guard<std::mutex> lock(warning_mutex);
+  if (warning_handler)
+  {
+    warning_handler(message);
+  }
+  else
+  {
+    std::cerr << "warning: " << message << "\n";
+  }
+}
 
 Scene load_scene_file(const std::string& path)
 {

@@ -18,99 +18,6 @@ namespace
 /// Static and kinematic bodies never use their mass; Body needs a positive one.
 constexpr double kDefaultMass = 1.0;  // kg
 
-Toggle read_toggle(FieldReader& fields, const std::string& key, Toggle fallback)
-{
-  const std::string text = fields.text(key, "");
-  if (text.empty())
-  {
-    return fallback;
-  }
-  if (text == "auto")
-  {
-    return Toggle::Auto;
-  }
-  if (text == "on")
-  {
-    return Toggle::On;
-  }
-  if (text == "off")
-  {
-    return Toggle::Off;
-  }
-  fields.fail_at(key, "must be auto, on or off (got '" + text + "')");
-}
-
-SolverMode read_solver_mode(FieldReader& fields, const std::string& key, SolverMode fallback)
-{
-  const std::string text = fields.text(key, "");
-  if (text.empty())
-  {
-    return fallback;
-  }
-  if (text == "iterative")
-  {
-    return SolverMode::Iterative;
-  }
-  if (text == "exact")
-  {
-    return SolverMode::Exact;
-  }
-  fields.fail_at(key, "must be iterative or exact (got '" + text + "')");
-}
-
-bool read_flag(FieldReader& fields, const std::string& key, bool fallback)
-{
-  const std::string text = fields.text(key, "");
-  if (text.empty())
-  {
-    return fallback;
-  }
-  if (text == "true")
-  {
-    return true;
-  }
-  if (text == "false")
-  {
-    return false;
-  }
-  fields.fail_at(key, "must be true or false (got '" + text + "')");
-}
-
-WorldSettings read_settings(const YAML::Node& node, const std::string& source, WorldSettings s)
-{
-  FieldReader f(node, "settings", source);
-  s.dt = f.positive("dt", s.dt);
-  s.substeps = f.integer("substeps", s.substeps, 1, kMaxSceneSubsteps);
-  s.velocity_iterations = f.integer("velocity_iterations", s.velocity_iterations, 1, kMaxSceneIterations);
-  s.position_iterations = f.integer("position_iterations", s.position_iterations, 1, kMaxSceneIterations);
-  s.position_block = read_flag(f, "position_block", s.position_block);
-  s.slop = f.non_negative("slop", s.slop);
-  s.compliance = f.non_negative("compliance", s.compliance);
-  s.restitution_threshold = f.non_negative("restitution_threshold", s.restitution_threshold);
-  s.rotation = read_toggle(f, "rotation", s.rotation);
-  s.friction = read_toggle(f, "friction", s.friction);
-  s.restitution = read_toggle(f, "restitution", s.restitution);
-  s.position_correction = read_toggle(f, "position_correction", s.position_correction);
-  s.time_of_impact = read_toggle(f, "time_of_impact", s.time_of_impact);
-  s.warm_starting = read_toggle(f, "warm_starting", s.warm_starting);
-  s.sleeping = read_toggle(f, "sleeping", s.sleeping);
-  s.warm_start_factor = f.non_negative("warm_start_factor", s.warm_start_factor);
-  if (s.warm_start_factor > 1.0)
-  {
-    f.fail_at("warm_start_factor", "must be in [0, 1]");
-  }
-  s.warm_start_before_integration = read_flag(f, "warm_start_before_integration", s.warm_start_before_integration);
-  s.toi_displacement_fraction = f.positive("toi_displacement_fraction", s.toi_displacement_fraction);
-  s.sleep_linear_speed = f.non_negative("sleep_linear_speed", s.sleep_linear_speed);
-  s.sleep_angular_speed = f.non_negative("sleep_angular_speed", s.sleep_angular_speed);
-  s.sleep_time = f.non_negative("sleep_time", s.sleep_time);
-  s.sleep_auto_min_bodies = f.unsigned_integer("sleep_auto_min_bodies", s.sleep_auto_min_bodies);
-  s.solver_mode = read_solver_mode(f, "solver_mode", s.solver_mode);
-  s.exact_position_correction = read_flag(f, "exact_position_correction", s.exact_position_correction);
-  f.finish();
-  return s;
-}
-
 BodyType read_body_type(FieldReader& fields)
 {
   const std::string text = fields.text("type", "dynamic");
@@ -232,7 +139,7 @@ void for_each_item(const YAML::Node& list, const std::string& path, const std::s
   }
 }
 
-Scene read_scene(const YAML::Node& root, const std::string& source)
+Scene read_scene(const YAML::Node& root, const std::string& source, const SceneReading& reading)
 {
   if (root.IsNull())
   {
@@ -245,7 +152,7 @@ Scene read_scene(const YAML::Node& root, const std::string& source)
   scene.settings.gravity = top.vec2("gravity", Vec2{0.0, kGravity});
   if (top.has("settings"))
   {
-    scene.settings = read_settings(top.node("settings"), source, scene.settings);
+    scene.settings = read_settings(top.node("settings"), source, reading, scene.settings);
   }
   if (top.has("materials"))
   {
@@ -313,6 +220,11 @@ Material read_material(FieldReader& fields, const std::string& key, const Materi
 
 Scene parse_scene_yaml(const std::string& text, const std::string& source_name)
 {
+  return parse_scene_yaml(text, source_name, SceneReading{});
+}
+
+Scene parse_scene_yaml(const std::string& text, const std::string& source_name, const SceneReading& reading)
+{
   YAML::Node root;
   try
   {
@@ -322,7 +234,7 @@ Scene parse_scene_yaml(const std::string& text, const std::string& source_name)
   {
     detail::fail(source_name, error.mark.line + 1, "", "YAML syntax: " + error.msg);
   }
-  return detail::read_scene(root, source_name);
+  return detail::read_scene(root, source_name, reading);
 }
 
 }  // namespace scenes

@@ -391,40 +391,7 @@ TEST(WorldSettingsMsg, BadSolverFieldsNameTheField)
   EXPECT_NE(world_rejection(WorldConfig()), "");
 }
 
-TEST(WorldReconfigure, DefaultsAreTheWorldDefaults)
-{
-  // The base differs from the defaults in every field the config leaves out
-  // and in the config's own, so only the config's defaults can make them equal.
-  WorldSettings base;
-  base.solver_mode = SolverMode::Exact;
-  base.position_iterations = 1;
-  base.position_block = true;
-  base.exact_position_correction = false;
-  base.warm_start_before_integration = true;
-  const WorldSettings from_defaults = world_settings_from_config(Collision2dConfig::__getDefault__(), base);
-  EXPECT_EQ(world_settings_to_msg(from_defaults), world_settings_to_msg(WorldSettings()));
-}
-
-TEST(WorldReconfigure, SolverFieldsReachTheWorldAndShowInTheConfig)
-{
-  WorldSettings settings;
-  settings.solver_mode = SolverMode::Exact;
-  settings.position_iterations = 9;
-  settings.position_block = true;
-  settings.exact_position_correction = false;
-  settings.warm_start_before_integration = true;
-  Collision2dConfig config = Collision2dConfig::__getDefault__();
-  world_settings_to_config(settings, config);
-  EXPECT_EQ(config.world_solver_mode, static_cast<int>(WorldConfig::SOLVER_EXACT));
-  EXPECT_EQ(config.world_position_iterations, 9);
-  EXPECT_TRUE(config.world_position_block);
-  EXPECT_FALSE(config.world_exact_position_correction);
-  EXPECT_TRUE(config.world_warm_start_before_integration);
-  const WorldSettings back = world_settings_from_config(config, WorldSettings());
-  EXPECT_EQ(world_settings_to_msg(back), world_settings_to_msg(settings));
-  config.world_solver_mode = 3;
-  EXPECT_THROW(world_settings_from_config(config, WorldSettings()), InvalidRequest);
-}
+// Reconfigure and every-field round trips: test_settings_tables.cpp.
 
 class WorldServiceTest : public ::testing::Test
 {

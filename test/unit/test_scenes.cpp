@@ -16,6 +16,7 @@
 #include "collision2d/scenes/scene_file.h"
 #include "collision2d/scenes/scene_parts.h"
 #include "collision2d/scenes/standard_scenes.h"
+#include "settings_test_support.h"
 
 namespace collision2d
 {
@@ -116,31 +117,7 @@ void expect_same_body(const SceneBody& a, const SceneBody& b, const std::string&
 
 void expect_same_settings(const WorldSettings& a, const WorldSettings& b)
 {
-  EXPECT_EQ(a.gravity, b.gravity);
-  EXPECT_EQ(a.dt, b.dt);
-  EXPECT_EQ(a.substeps, b.substeps);
-  EXPECT_EQ(a.velocity_iterations, b.velocity_iterations);
-  EXPECT_EQ(a.slop, b.slop);
-  EXPECT_EQ(a.compliance, b.compliance);
-  EXPECT_EQ(a.restitution_threshold, b.restitution_threshold);
-  EXPECT_EQ(a.rotation, b.rotation);
-  EXPECT_EQ(a.friction, b.friction);
-  EXPECT_EQ(a.restitution, b.restitution);
-  EXPECT_EQ(a.position_correction, b.position_correction);
-  EXPECT_EQ(a.time_of_impact, b.time_of_impact);
-  EXPECT_EQ(a.warm_starting, b.warm_starting);
-  EXPECT_EQ(a.sleeping, b.sleeping);
-  EXPECT_EQ(a.warm_start_factor, b.warm_start_factor);
-  EXPECT_EQ(a.toi_displacement_fraction, b.toi_displacement_fraction);
-  EXPECT_EQ(a.sleep_linear_speed, b.sleep_linear_speed);
-  EXPECT_EQ(a.sleep_angular_speed, b.sleep_angular_speed);
-  EXPECT_EQ(a.sleep_time, b.sleep_time);
-  EXPECT_EQ(a.sleep_auto_min_bodies, b.sleep_auto_min_bodies);
-  EXPECT_EQ(a.position_iterations, b.position_iterations);
-  EXPECT_EQ(a.position_block, b.position_block);
-  EXPECT_EQ(a.solver_mode, b.solver_mode);
-  EXPECT_EQ(a.exact_position_correction, b.exact_position_correction);
-  EXPECT_EQ(a.warm_start_before_integration, b.warm_start_before_integration);
+  test::expect_same_world_settings(a, b);
 }
 
 void expect_same_scene(const Scene& a, const Scene& b, double vertex_tolerance = 0.0)

@@ -1,10 +1,18 @@
-// dynamic_reconfigure (cfg/Collision2d.cfg) <-> the settings messages.
+// dynamic_reconfigure (cfg/Collision2d.cfg) <-> the settings tables. The cfg
+// declares solver_<name> for each ResolveSettings field and world_<name> for
+// each WorldSettings field (world_gravity_x / _y for the vector), read from the
+// tables themselves, and sets no limits, so the node sees what the user sent.
 #pragma once
 
-#include <collision2d/Collision2dConfig.h>
-#include "collision2d/ros/messages.h"
+#include <functional>
+#include <string>
+#include <vector>
 
-#include "collision2d/world.h"
+#include <collision2d/Collision2dConfig.h>
+
+#include "collision2d/resolve_settings.h"
+#include "collision2d/ros/messages.h"
+#include "collision2d/world_settings.h"
 
 namespace collision2d
 {
@@ -14,12 +22,26 @@ namespace ros_interface
 constexpr unsigned kSolverLevel = 1;
 constexpr unsigned kWorldLevel = 2;
 
-SolverSettings solver_settings_from_config(const Collision2dConfig& config);
-/// `base` with the fields the config carries replaced (the config leaves out
-/// the rarely tuned ones). Throws InvalidRequest naming the field.
-WorldSettings world_settings_from_config(const Collision2dConfig& config, const WorldSettings& base);
-/// Shows the world's settings in the config (its solver fields untouched).
+/// The solver_* fields. Throws InvalidRequest "solver_x = v is outside [lo, hi]".
+ResolveSettings resolve_settings_from_config(const Collision2dConfig& config);
+void resolve_settings_to_config(const ResolveSettings& settings, Collision2dConfig& config);
+/// The world_* fields, validated against the table. Throws InvalidRequest
+/// "world_dt = -1 is outside (0, inf)".
+WorldSettings world_settings_from_config(const Collision2dConfig& config);
 void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& config);
+
+/// What the node keeps after a reconfigure request: the solver settings
+/// `config` asks for, or, when one is out of range, `current` (the table's
+/// defaults if `current` itself is invalid) after a WARN naming the field, the
+/// value and the range, written back into `config` so clients see it.
+SolverSettings accept_solver_config(Collision2dConfig& config, const SolverSettings& current);
+/// Calls apply() with the world settings `config` asks for; when one is out of
+/// range (or apply throws InvalidRequest) WARNs and writes `current` back into `config`.
+void accept_world_config(Collision2dConfig& config, const WorldSettings& current,
+                         const std::function<void(const WorldSettings&)>& apply);
+
+/// Names of the parameters the tables ask of the cfg, in table order.
+std::vector<std::string> table_parameter_names();
 
 }  // namespace ros_interface
 }  // namespace collision2d

@@ -5,16 +5,17 @@
 #include "collision2d/ros/messages.h"
 
 #include "collision2d/contact_solver.h"
+#include "collision2d/resolve_settings.h"
 #include "collision2d/world.h"
 
 namespace collision2d
 {
 namespace ros_interface
 {
-/// Upper bound on SolverSettings.iterations: a cap beyond it only lets one
-/// request hold a service thread for minutes.
-constexpr int kMaxSolverIterations = 100000;
-
+/// Every field but use_node_settings. Throws InvalidRequest naming the field.
+ResolveSettings resolve_settings_from_msg(const SolverSettings& msg);
+/// use_node_settings false.
+SolverSettings resolve_settings_to_msg(const ResolveSettings& settings);
 /// A solver configured as `msg` says (mode included). Throws InvalidRequest.
 ContactSolver solver_from_msg(const SolverSettings& msg);
 

@@ -5,8 +5,9 @@
 //   gravity: [0, -9.81]                 # m/s^2
 //   settings: {dt: 0.0166, substeps: 4, velocity_iterations: 2, slop: 0.001,
 //              rotation: auto, friction: on, sleep_time: 0.5, ...}
-//              # every WorldSettings field but gravity, by its name;
-//              # toggles are auto | on | off
+//              # every WorldSettings field but gravity, by its name
+//              # (world_settings.h); toggles are auto | on | off;
+//              # a former name warns (SceneReading)
 //   materials:
 //     rough: {restitution: 0, static_friction: 0.6, kinetic_friction: 0.5}
 //   generate:                           # expanded first, in order
@@ -22,6 +23,7 @@
 // Errors throw std::runtime_error "source:line: key.path: message".
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -37,7 +39,25 @@ constexpr int kMaxSceneBodies = 1000000;
 constexpr int kMaxSceneSubsteps = 1000;
 constexpr int kMaxSceneIterations = 10000;
 
+/// What a reader reports besides errors: a setting named as an earlier version
+/// named it (renamed: read under its new name; retired: ignored) loads with a
+/// warning naming its replacement, so old scenes and snapshots keep loading.
+struct SceneReading
+{
+  /// Collects the warnings; null sends each to the warning handler.
+  std::vector<std::string>* warnings = nullptr;
+  /// Names of earlier versions (former_world_settings() unless a test says otherwise).
+  const std::vector<FormerSetting>* former = &former_world_settings();
+
+  void warn(const std::string& message) const;
+};
+
+/// Where warnings of readers given no vector go (load_scene_file, snapshots):
+/// std::cerr until set; the ROS node sets rosconsole's WARN. Thread-safe.
+void set_warning_handler(std::function<void(const std::string&)> handler);
+
 Scene parse_scene_yaml(const std::string& text, const std::string& source_name = "<yaml>");
+Scene parse_scene_yaml(const std::string& text, const std::string& source_name, const SceneReading& reading);
 /// .yaml/.yml as YAML; .collision via parse_scenario (its restitution and
 /// friction become every body's material, gravity zero).
 Scene load_scene_file(const std::string& path);

@@ -11,6 +11,7 @@ struct ManifoldPoint
 {
   Vec2 point;                  ///< world contact point (m)
   double penetration = 0.0;    ///< depth along the normal (m), >= 0
+  double separation = 0.0;     ///< signed gap along the normal (m): -depth, > 0 for a point within reach
   std::uint32_t feature = 0;   ///< which features made this point (for warm starting)
 };
 

@@ -89,6 +89,7 @@ void add_point(Manifold& m, Vec2 point, double depth, std::uint32_t feature)
   ManifoldPoint& p = m.points[m.count++];
   p.point = point;
   p.penetration = std::max(0.0, depth);
+  p.separation = -depth;
   p.feature = feature;
 }
 

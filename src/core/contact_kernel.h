@@ -23,7 +23,32 @@ struct BodyVelocity
   double omega = 0.0;
   double inv_mass = 0.0;
   double inv_inertia = 0.0;
+  // Soft step only: the pose change since the frame's contacts were prepared.
+  Vec2 moved;                ///< translation (m)
+  double turned_cos = 1.0;   ///< rotation, as its cosine and sine
+  double turned_sin = 0.0;
 };
+
+inline BodyVelocity body_velocity(Vec2 v, double omega, double inv_mass, double inv_inertia)
+{
+  BodyVelocity state;
+  state.v = v;
+  state.omega = omega;
+  state.inv_mass = inv_mass;
+  state.inv_inertia = inv_inertia;
+  return state;
+}
+
+/// Soft-constraint coefficients of a contact, from a stiffness (Hz), a
+/// damping ratio and the substep: a contact acts as a damped spring, so a
+/// resting stack neither sinks nor is kicked apart by its corrections.
+struct Softness
+{
+  double bias_rate = 0.0;      ///< 1/s: push-out speed per metre of penetration
+  double mass_scale = 1.0;     ///< dimensionless
+  double impulse_scale = 0.0;  ///< dimensionless
+};
+Softness make_softness(double hertz, double damping_ratio, double h);
 
 /// One contact point: geometry, the masses seen through it, the fixed Newton
 /// target, the friction state and the accumulated impulses.
@@ -38,6 +63,7 @@ struct ContactPoint
   Vec2 r_a;           ///< lever arm from a's centre to the point (m)
   Vec2 r_b;
   double penetration = 0.0;  ///< depth at detection (m)
+  double separation = 0.0;   ///< signed gap at detection (m): -depth, > 0 for a speculative point
   std::uint32_t feature = 0;
 
   // Masses. Per point, because the World drops a body's inertia where it
@@ -60,6 +86,14 @@ struct ContactPoint
   bool sliding = false;   ///< friction at its bound in the last solve
   double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
   double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
+
+  // Soft step: the gap at prepare less the anchors' offset, so the current gap
+  // follows from the bodies' pose changes; the pre-solve normal speed; the
+  // impulse the frame applied (restitution only acts where it pushed).
+  double base_separation = 0.0;  ///< m
+  double approach_speed = 0.0;   ///< normal relative speed at prepare (m/s), < 0 approaching
+  double frame_impulse = 0.0;    ///< normal impulse applied over the frame, warm starts included (N s)
+  Softness softness;
 
   // Bookkeeping of the solvers that own the point.
   std::size_t contact = 0;  ///< index into the caller's contact list
@@ -132,7 +166,7 @@ void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, doub
 void prepare_pair(ContactPoint& first, const ContactPoint& second);
 
 /// Applies the accumulated impulses (warm starting from a previous solve).
-void warm_start(const ContactPoint& p, std::vector<BodyVelocity>& state);
+void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state);
 
 /// One Gauss-Seidel update of the normal impulse toward the target, kept
 /// >= 0 (a contact pushes, never pulls). Returns whether the impulse changed.
@@ -166,6 +200,24 @@ double pair_coupling(const ContactPoint& first, const ContactPoint& second);
 void solve_lcp2(double k11, double k12, double k22, double q1, double q2, double& y1, double& y2);
 /// Whether a 2x2 block with these entries is well enough conditioned to solve.
 bool block_solvable(double k11, double k12, double k22);
+
+/// Soft step: the point's gap now, from the bodies' pose changes since
+/// prepare (m, < 0 overlapping).
+double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>& state);
+/// One soft update of the normal impulse. A speculative point (gap > 0) only
+/// removes the approach that would close its gap within the substep; an
+/// overlapping one, with `use_bias`, is pushed out at most at `max_push` (m/s)
+/// through the point's softness; without bias (the relax pass) it only stops
+/// the approach.
+void solve_soft_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias);
+/// A manifold's two points solved together (the 2x2 LCP of the rigid update,
+/// each point's result scaled by its softness), so neither point's impulse
+/// tilts the body against the other; nearly dependent points go one by one.
+void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
+                             double inv_h, double max_push, bool use_bias);
+/// Drives a point that pushed this frame toward its Newton target (normal
+/// impulse only, accumulated >= 0). Returns its residual before the update.
+double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state);
 
 /// Normal residual (m/s): a pushing point must meet its target exactly, an
 /// idle one must not fall short of it.

@@ -44,13 +44,13 @@ bool WorldImpl::is_mover(std::size_t i) const
   return false;
 }
 
-void WorldImpl::detect(const StepContext& ctx, StepReport& report)
+void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report)
 {
   const std::size_t n = bodies_.size();
   boxes_.resize(n);
   for (std::size_t i = 0; i < n; ++i)
   {
-    boxes_[i] = bodies_[i].aabb();
+    boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin) : bodies_[i].aabb();
   }
   broad_phase_.find_pairs(boxes_, pairs_);
   points_.clear();
@@ -71,8 +71,11 @@ void WorldImpl::detect(const StepContext& ctx, StepReport& report)
       carry_sleeping_pair(i, j);
       continue;
     }
+    // The soft step keeps pairs within its speculative margin; the Fx2D step
+    // keeps a body stopped at its time of impact touching its obstacle.
     const bool touch = clamped(i) || clamped(j);
-    const double tolerance = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
+    const double touching = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
+    const double tolerance = std::max(margin, touching);
     add_manifold(i, j, tolerance, warm_scale, ctx.effects.friction);
   }
   for (const ContactPoint& row : points_)
@@ -115,6 +118,7 @@ void WorldImpl::add_manifold(std::size_t i, std::size_t j, double tolerance, dou
     row.normal = m.normal;
     row.point = m.points[k].point;
     row.penetration = m.points[k].penetration;
+    row.separation = m.points[k].separation;
     row.feature = m.points[k].feature;
     row.count = m.count;
     const WorldContact* cached = warm_scale > 0.0 || friction ? find_cached(ids_[i], ids_[j], row.feature) : nullptr;

@@ -62,7 +62,7 @@ void build_islands(const std::vector<detail::BodyVelocity>& velocity, const std:
   out.state.resize(velocity.size());
   for (std::size_t i = 0; i < velocity.size(); ++i)
   {
-    out.state[i] = detail::BodyVelocity{velocity[i].v, velocity[i].omega, velocity[i].inv_mass, 0.0};
+    out.state[i] = detail::body_velocity(velocity[i].v, velocity[i].omega, velocity[i].inv_mass, 0.0);
   }
   for (const detail::ContactPoint& p : points)
   {

@@ -52,6 +52,7 @@ struct WorldImpl
   // world_step.cpp: the step, top-down.
   StepReport step(int frames);
   void step_frame(StepReport& report);
+  void fx2d_frame(StepReport& report);
   void substep(StepContext& ctx, StepReport& report);
   void kick(const StepContext& ctx);
   void advance(StepContext& ctx, StepReport& report);
@@ -61,6 +62,14 @@ struct WorldImpl
   void require_finite_state() const;
   void save_motion();
   void restore_motion();
+
+  // world_soft_step.cpp: the soft step, top-down.
+  void soft_frame(StepReport& report);
+  void prepare_soft_points(const StepContext& ctx);
+  void integrate_velocities(const StepContext& ctx);
+  void solve_soft(const StepContext& ctx, bool use_bias);
+  void integrate_positions(StepContext& ctx, StepReport& report);
+  void restitution_pass(StepReport& report);
 
   // world_effects.cpp
   StepContext select_effects() const;
@@ -85,7 +94,8 @@ struct WorldImpl
 
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;
-  void detect(const StepContext& ctx, StepReport& report);
+  /// Contacts at the current poses; pairs within `margin` (m) are kept too.
+  void detect(const StepContext& ctx, double margin, StepReport& report);
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
   void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction);
   void carry_sleeping_pair(std::size_t i, std::size_t j);
@@ -147,6 +157,11 @@ struct WorldImpl
   std::vector<ContactPoint> points_;  ///< this substep's contact points
   std::vector<BodyVelocity> velocity_;  ///< velocities during the velocity stage
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
+  std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared
+  std::vector<double> prepared_theta_;
+  std::vector<bool> stopped_;            ///< soft step: stopped at its time of impact this frame
+  std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
+  std::vector<double> held_theta_;
   std::vector<double> prev_theta_;
   std::vector<Vec2> moved_;           ///< position correction applied this substep (m)
   std::vector<double> turned_;        ///< rotation correction applied this substep (rad)

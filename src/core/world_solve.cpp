@@ -16,7 +16,7 @@ void WorldImpl::load_velocities()
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     const Body& b = bodies_[i];
-    velocity_[i] = BodyVelocity{b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia()};
+    velocity_[i] = body_velocity(b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
   }
 }
 
@@ -74,7 +74,7 @@ void WorldImpl::prepare_points(const ActiveEffects& effects)
 
 void WorldImpl::warm_start()
 {
-  for (const ContactPoint& p : points_)
+  for (ContactPoint& p : points_)
   {
     if (p.active && !p.exact)
     {

@@ -59,6 +59,19 @@ StepReport WorldImpl::step(int frames)
 
 void WorldImpl::step_frame(StepReport& report)
 {
+  // The exact mode solves islands on the Fx2D step's per-substep contacts.
+  if (settings_.soft_step && settings_.solver_mode == SolverMode::Iterative)
+  {
+    soft_frame(report);                                   // world_soft_step.cpp
+  }
+  else
+  {
+    fx2d_frame(report);
+  }
+}
+
+void WorldImpl::fx2d_frame(StepReport& report)
+{
   StepContext ctx = select_effects();                     // world_effects.cpp
   if (!ctx.effects.sleeping)
   {
@@ -98,7 +111,7 @@ void WorldImpl::substep(StepContext& ctx, StepReport& report)
   }
   advance(ctx, report);
   // 2. Detect: broad then narrow phase, impulses matched from the cache.
-  detect(ctx, report);                                    // world_contacts.cpp
+  detect(ctx, 0.0, report);                               // world_contacts.cpp
   if (predict)
   {
     restore_velocities();

@@ -97,8 +97,10 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
   }
   // gravity, dt, substeps, velocity_iterations, slop, compliance,
   // restitution_threshold, warm_start_factor, toi_displacement_fraction, three
-  // sleep thresholds and position_iterations have bounds or must be finite.
-  EXPECT_EQ(refused, 13u);
+  // sleep thresholds, position_iterations and the soft step's contact_hertz,
+  // contact_damping_ratio, contact_push_speed and speculative_margin have
+  // bounds or must be finite.
+  EXPECT_EQ(refused, 17u);
 }
 
 TEST(SettingsTable, ValidationMessagesKeepTheirWording)

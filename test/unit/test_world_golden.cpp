@@ -126,6 +126,7 @@ const Golden kGolden[] = {
        s.sleep_time = 0.1;
      },
      150, 0x35af0d8c6bc1d06bULL},
+    {"pyramid_soft_step", [] { return scenes::pyramid(10); }, [](WorldSettings& s) { s.soft_step = true; }, 120, 0x321113ed91a710a4ULL},
     {"column_defaults", [] { return scenes::column(20); }, defaults, 120, 0xac173e8a2b9d9916ULL},
     {"gas_defaults", [] { return scenes::elastic_gas(200); }, defaults, 120, 0x1a7cb0f191395fe9ULL},
     {"gas_no_toggles", [] { return scenes::elastic_gas(100); },

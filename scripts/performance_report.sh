@@ -8,12 +8,13 @@
 #   scripts/performance_report.sh [--quick] [--no-build]
 #
 # --quick thins every grid and shortens the long runs (a few minutes instead
-# of about fifteen on two cores). Environment: COLLISION2D_PERF_BUILD (build
-# folder, default .build/perf), COLLISION2D_JOBS (default 2),
-# COLLISION2D_BOX2D_V3_DIR (optional: a Box2D v3 checkout with its Release
-# static library built under it, in build/src/, lib/ or src/, made by you in
-# a scratch folder outside this repository; Box2D v3 then joins the stacks
-# and the scaling runs as a third peer, and the report says so) and
+# of about fifteen on two cores, plus about twelve for the stacks' 60 s runs
+# in every peer). Environment: COLLISION2D_PERF_BUILD (build folder, default
+# .build/perf), COLLISION2D_JOBS (default 2), COLLISION2D_BOX2D_V3_DIR
+# (optional: a Box2D v3 checkout with its Release static library built under
+# it, in build/src/, lib/ or src/, made by you in a scratch folder outside
+# this repository; Box2D v3 then joins the peer sweep, the stacks and the
+# scaling runs as a third peer, and the report says so) and
 # COLLISION2D_BOX2D_V3_LIBRARY (that library's path, if it is elsewhere).
 # Without them the report is made without Box2D v3.
 # Installs what it needs when missing (apt: the package's build dependencies,

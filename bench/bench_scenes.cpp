@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "collision2d/scenes/standard_scenes.h"
+#include "stack_scenes.h"
 
 namespace collision2d
 {
@@ -103,6 +104,10 @@ BenchScene make_bench_scene(const std::string& name)
     BenchScene s{name, scenes::bullet_wall(kBulletSpeed), SceneKind::Bullet, kBulletSeconds};
     s.wall_x = kBulletWallX;
     return s;
+  }
+  if (is_stack_scene(name))
+  {
+    return make_stack_scene(name);
   }
   const std::string prefix = "heavy_on_light_";
   if (name.compare(0, prefix.size(), prefix) == 0)

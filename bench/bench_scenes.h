@@ -32,7 +32,8 @@ struct BenchScene
   double wall_x = 0.0;            ///< Bullet: x of the wall's centre (m)
 };
 
-/// Names accepted by make_bench_scene, in report order.
+/// Names the sweep runs, in report order; make_bench_scene also accepts the
+/// Box2D v3 comparison stacks of stack_scenes.h.
 std::vector<std::string> bench_scene_names();
 /// Throws std::invalid_argument for an unknown name.
 BenchScene make_bench_scene(const std::string& name);

@@ -24,18 +24,22 @@ struct BodyState
 enum class EngineKind
 {
   Collision2d,
-  Box2d,
-  Chipmunk
+  Box2d,     ///< Box2D 2.4.1
+  Chipmunk,  ///< Chipmunk 7
+  Box2dV3    ///< Box2D v3, only when the build was given COLLISION2D_BOX2D_V3_DIR
 };
 
 /// How a peer is configured. Defaults: the engine's own recommended values
 /// (one step per frame, its iteration counts, slop and sleeping). Matched:
 /// the substeps, velocity iterations and slop of `settings`, sleeping off.
-/// Ours always runs with `settings` exactly.
+/// Substepped: the engine's defaults except `settings.substeps` steps (or
+/// substeps) per frame and sleeping off, the rule the stack comparison with
+/// Box2D v3 states for every engine. Ours always runs with `settings` exactly.
 enum class PeerVariant
 {
   Defaults,
-  Matched
+  Matched,
+  Substepped
 };
 
 struct EngineConfig

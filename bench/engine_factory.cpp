@@ -8,6 +8,9 @@
 #ifdef COLLISION2D_HAVE_CHIPMUNK
 #include "peers/chipmunk_engine.h"
 #endif
+#ifdef COLLISION2D_HAVE_BOX2D_V3
+#include "peers/box2d_v3_engine.h"
+#endif
 
 namespace collision2d
 {
@@ -33,6 +36,12 @@ bool engine_available(EngineKind kind)
 #else
       return false;
 #endif
+    case EngineKind::Box2dV3:
+#ifdef COLLISION2D_HAVE_BOX2D_V3
+      return true;
+#else
+      return false;
+#endif
   }
   return false;
 }
@@ -51,6 +60,10 @@ std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineConfig& conf
     case EngineKind::Chipmunk:
       return make_chipmunk_engine(scene, config);
 #endif
+#ifdef COLLISION2D_HAVE_BOX2D_V3
+    case EngineKind::Box2dV3:
+      return make_box2d_v3_engine(scene, config);
+#endif
     default:
       throw std::runtime_error(engine_name(config.kind) + " was not found when this benchmark was built");
   }
@@ -66,13 +79,24 @@ std::string engine_name(EngineKind kind)
       return "box2d";
     case EngineKind::Chipmunk:
       return "chipmunk";
+    case EngineKind::Box2dV3:
+      return "box2d_v3";
   }
   return "?";
 }
 
 std::string variant_name(PeerVariant variant)
 {
-  return variant == PeerVariant::Defaults ? "defaults" : "matched";
+  switch (variant)
+  {
+    case PeerVariant::Defaults:
+      return "defaults";
+    case PeerVariant::Matched:
+      return "matched";
+    case PeerVariant::Substepped:
+      return "substepped";
+  }
+  return "?";
 }
 
 }  // namespace bench

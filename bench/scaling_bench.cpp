@@ -2,7 +2,7 @@
 // scene of n scattered disks (scenes::elastic_gas), one size per process so
 // that the peak resident set (VmHWM) belongs to that size alone.
 //
-//   collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk] [--reps R] [--header]
+//   collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]
 //
 // Prints one CSV row: engine,bodies,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib.
 #include <algorithm>
@@ -39,7 +39,7 @@ struct Arguments
 [[noreturn]] void usage(const std::string& problem)
 {
   std::fprintf(stderr,
-               "%s\nusage: collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk] [--reps R] "
+               "%s\nusage: collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] "
                "[--header]\n",
                problem.c_str());
   std::exit(2);
@@ -47,7 +47,7 @@ struct Arguments
 
 EngineKind parse_engine(const std::string& name)
 {
-  for (EngineKind kind : {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk})
+  for (EngineKind kind : {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk, EngineKind::Box2dV3})
   {
     if (engine_name(kind) == name)
     {

@@ -1,6 +1,7 @@
 // Sweep grids (see sweep.h).
 #include "sweep.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <type_traits>
 #include <utility>
@@ -250,15 +251,23 @@ std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick)
 std::vector<RunSpec> peer_runs(const BenchScene& scene, bool quick)
 {
   std::vector<RunSpec> runs;
-  for (EngineKind kind : {EngineKind::Box2d, EngineKind::Chipmunk})
+  for (EngineKind kind : {EngineKind::Box2d, EngineKind::Chipmunk, EngineKind::Box2dV3})
   {
     if (!engine_available(kind))
     {
       continue;
     }
     runs.push_back(RunSpec{"defaults", "", EngineConfig{kind, PeerVariant::Defaults, scene.scene.settings}});
+    std::vector<int> substeps_done;
     for (const auto& point : matched_points(scene, quick))
     {
+      // Box2D v3 has no iteration count: points differing only in it would repeat one run.
+      if (kind == EngineKind::Box2dV3 &&
+          std::find(substeps_done.begin(), substeps_done.end(), point.first) != substeps_done.end())
+      {
+        continue;
+      }
+      substeps_done.push_back(point.first);
       const WorldSettings s = with_steps(scene.scene.settings, point.first, point.second);
       runs.push_back(RunSpec{"matched", steps_text(point.first, point.second),
                              EngineConfig{kind, PeerVariant::Matched, s}});

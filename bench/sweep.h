@@ -24,8 +24,9 @@ struct RunSpec
 /// Ours: one knob at a time around the scene's settings, plus a substeps x
 /// iterations grid on the headline scenes. `quick` thins every grid.
 std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick);
-/// Box2D and Chipmunk (those built in): their defaults, and matched to a few
-/// of our (substeps, iterations) points; ours at the same points is in world_runs.
+/// Box2D 2.4.1, Chipmunk and Box2D v3 (those built in): their defaults, and
+/// matched to a few of our (substeps, iterations) points (Box2D v3: to their
+/// substeps only); ours at the same points is in world_runs.
 std::vector<RunSpec> peer_runs(const BenchScene& scene, bool quick);
 /// Long runs of the stacks (pyramid, column) for the stand-for-60-s target.
 std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick);

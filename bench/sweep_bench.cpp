@@ -10,8 +10,9 @@
 // world:  our World over one-knob-at-a-time sweeps (iterations, substeps,
 //         slop, warm starting, time of impact, solver mode when the world has
 //         one) and a substeps x iterations grid;
-// peers:  Box2D and Chipmunk with their defaults and matched to a few of our
-//         points, and ours at the same points, all in this one process;
+// peers:  Box2D 2.4.1, Chipmunk and (when built in) Box2D v3 with their
+//         defaults and matched to a few of our points, and ours at the same
+//         points, all in this one process;
 // stand:  the stacks for 60 s at a few settings (the drift target);
 // solver: the instantaneous ContactSolver on random clusters per mode,
 //         iteration cap and tolerance: Newton-target and complementarity residuals.
@@ -131,7 +132,9 @@ void print_run(const std::string& part, const BenchScene& scene, const RunSpec& 
   const bool ours = run.config.kind == EngineKind::Collision2d;
   // A peer's defaults use its own steps and iterations: leave ours out.
   const std::string substeps = peer_defaults ? "" : std::to_string(s.substeps);
-  const std::string iterations = peer_defaults ? "" : std::to_string(s.velocity_iterations);
+  // Box2D v3 has no velocity-iteration count to match.
+  const bool no_iterations = peer_defaults || run.config.kind == EngineKind::Box2dV3;
+  const std::string iterations = no_iterations ? "" : std::to_string(s.velocity_iterations);
   std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
                part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
                variant_name(run.config.variant).c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),

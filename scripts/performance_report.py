@@ -2,7 +2,7 @@
 """Writes docs/performance.md and the PNG plots from the benchmark CSVs.
 
 Called by scripts/performance_report.sh after the measurements; reads
-runs.csv, solver.csv and scaling.csv from --perf-dir. Only the standard
+runs.csv, solver.csv, scaling.csv and stacks.csv from --perf-dir. Only the standard
 library and gnuplot are used. Every number in the report comes from those
 CSVs: nothing here is typed in by hand.
 """
@@ -23,6 +23,12 @@ DRIFT_TARGET_M = 1e-3       # stacks stand 60 s with drift below this
 SLOPE_TARGET = 1.1          # log time vs log n
 PLOT_FLOOR = 1e-9           # zero errors are drawn here on the log axes
 PEERS = ["box2d", "chipmunk"]
+# Box2D v3 joins only when the script was given a build of it (sweep, stacks,
+# scaling). Issue 6's time target stays against PEERS.
+OPTIONAL_PEERS = ["box2d_v3"]
+STACK_DRIFT_TARGET_M = {"stack_pyramid_100": 1e-2}  # the others: DRIFT_TARGET_M
+STACK_PENETRATION_TARGET_M = 5e-3
+STACK_TIME_TARGET = 2.0     # our ms/frame / Box2D v3's on each stack
 ERROR_UNITS = {"drift_m": "drift after settling (m)", "energy_error": "relative energy error",
                "bounce_error": "|measured e - e|", "incline_accel_error": "acceleration error (m/s^2)",
                "tunnelled": "tunnelled (1 = yes)"}
@@ -70,6 +76,8 @@ def table(header, rows):
 def setting(run):
     if run["engine"] != "collision2d" and run["variant"] == "defaults":
         return "defaults"
+    if run["engine"] in OPTIONAL_PEERS:
+        return f"{run['substeps']} substeps"  # Box2D v3 has no iteration count
     label = f"{run['substeps']}x{run['iterations']}"
     extras = []
     if run["engine"] == "collision2d":
@@ -126,7 +134,7 @@ def time_target_rows(runs, scene):
     """Per peer run: our cheapest run at equal or better error, and the ratio."""
     rows = []
     mine = ours(runs, scene)
-    for p in peers(runs, scene):
+    for p in [r for r in peers(runs, scene) if r["engine"] in PEERS]:
         best = cheapest_at(mine, p["err"])
         best_cpu = cheapest_at(mine, p["err"], "cpu")
         ratio = best["ms"] / p["ms"] if best else float("inf")
@@ -169,9 +177,14 @@ def plot_pareto(runs, scene, png, workdir):
     if not mine:
         return False
     files = {"ours": mine, "front": pareto(mine)}
-    for p in PEERS:
+    for p in PEERS + OPTIONAL_PEERS:
         for variant in ["defaults", "matched"]:
             files[f"{p}_{variant}"] = [r for r in peers(runs, scene) if r["engine"] == p and r["variant"] == variant]
+    v3_series = ""
+    if files["box2d_v3_defaults"] or files["box2d_v3_matched"]:
+        v3_series = (f", \\\n     '{workdir}/box2d_v3_defaults.dat' with points pt 13 ps 1.6 lc rgb '#6a3d9a' "
+                     f"title 'Box2D v3 defaults', \\\n     '{workdir}/box2d_v3_matched.dat' with points pt 12 ps 1.4 "
+                     f"lc rgb '#6a3d9a' title 'Box2D v3 matched'")
     for name, points in files.items():
         write_points(os.path.join(workdir, name + ".dat"), points)
     ylabel = ERROR_UNITS.get(mine[0]["error_name"], mine[0]["error_name"])
@@ -189,14 +202,14 @@ plot '{d}/ours.dat' with points pt 7 ps 0.8 lc rgb '#9ecae1' title 'ours (all se
      '{d}/box2d_defaults.dat' with points pt 5 ps 1.6 lc rgb '#d94801' title 'Box2D defaults', \\
      '{d}/box2d_matched.dat' with points pt 4 ps 1.4 lc rgb '#d94801' title 'Box2D matched', \\
      '{d}/chipmunk_defaults.dat' with points pt 9 ps 1.6 lc rgb '#238b45' title 'Chipmunk defaults', \\
-     '{d}/chipmunk_matched.dat' with points pt 8 ps 1.4 lc rgb '#238b45' title 'Chipmunk matched'
+     '{d}/chipmunk_matched.dat' with points pt 8 ps 1.4 lc rgb '#238b45' title 'Chipmunk matched'{v3_series}
 """, workdir)
     return True
 
 
 def plot_scaling(scaling, png, workdir):
     lines = []
-    for engine in ["collision2d"] + PEERS:
+    for engine in ["collision2d"] + PEERS + OPTIONAL_PEERS:
         rows = [r for r in scaling if r["engine"] == engine]
         if not rows:
             continue
@@ -414,10 +427,48 @@ def solver_section(solver):
 def scaling_section(scaling):
     rows = [[r["engine"], r["bodies"], r["frames"], number(r["ms_per_step"]), number(r["cpu_ms_per_step"]),
              number(r["vmhwm_kib"]) / 1024.0] for r in scaling]
-    slopes = [[e, scaling_slope(scaling, e)] for e in ["collision2d"] + PEERS
+    slopes = [[e, scaling_slope(scaling, e)] for e in ["collision2d"] + PEERS + OPTIONAL_PEERS
               if any(r["engine"] == e for r in scaling)]
     return (table(["engine", "bodies", "timed frames", "ms/frame", "CPU ms/frame", "peak RSS (MiB)"], rows) + "\n" +
             table(["engine", "least-squares slope of log time vs log n"], slopes))
+
+
+def stacks_section(stacks):
+    """The issue 12 stacks: every engine of collision2d_stack_bench's one run."""
+    if not stacks:
+        return "Not measured in this run (`collision2d_stack_bench` wrote no stacks.csv).\n"
+    engines = list(dict.fromkeys(r["engine"] for r in stacks))
+    v3 = "box2d_v3" in engines
+    out = (f"Engines in this run: {', '.join(engines)}. " +
+           ("Box2D v3 was built from a checkout given through `COLLISION2D_BOX2D_V3_DIR`; its code is not part "
+            "of this repository.\n\n" if v3 else
+            "Box2D v3 is not in this run (the script was not given `COLLISION2D_BOX2D_V3_DIR`), so there is no "
+            "ratio to it.\n\n"))
+    rows = [[r["scene"], r["boxes"], r["engine"], number(r["ms_per_frame"]), number(r["cpu_ms_per_frame"]),
+             number(r["cpu_ms_over_box2d_v3"]), r["seconds"], number(r["drift_m"]), number(r["max_penetration_m"])]
+            for r in stacks]
+    out += table(["scene", "boxes", "engine", "ms/frame", "CPU ms/frame", "CPU time / Box2D v3", "run (s)",
+                  "drift 1 s -> run end (m)", "largest penetration (m)"], rows)
+    longest = max(number(r["seconds"]) for r in stacks)
+    targets = []
+    for r in stacks:
+        if r["engine"] != "collision2d" or number(r["seconds"]) != longest:
+            continue
+        drift_target = STACK_DRIFT_TARGET_M.get(r["scene"], DRIFT_TARGET_M)
+        drift, pen, ratio = number(r["drift_m"]), number(r["max_penetration_m"]), number(r["cpu_ms_over_box2d_v3"])
+        targets.append([r["scene"], f"{fmt(drift)} m (< {fmt(drift_target)})",
+                        "met" if drift < drift_target else f"missed by {fmt(drift / drift_target)}x",
+                        f"{fmt(pen)} m (<= {fmt(STACK_PENETRATION_TARGET_M)})",
+                        "met" if pen <= STACK_PENETRATION_TARGET_M else
+                        f"missed by {fmt(pen / STACK_PENETRATION_TARGET_M)}x",
+                        fmt(ratio) if v3 else "-",
+                        ("met" if ratio <= STACK_TIME_TARGET else f"missed by {fmt(ratio / STACK_TIME_TARGET)}x")
+                        if v3 else "not measured"])
+    out += (f"\nIssue 12 targets for ours at the defaults over {fmt(longest)} s (time: CPU ms/frame over Box2D "
+            f"v3's, <= {fmt(STACK_TIME_TARGET)}):\n\n")
+    out += table(["scene", "drift", "verdict", "largest penetration", "verdict", "time / Box2D v3", "verdict"],
+                 targets)
+    return out
 
 
 def find(runs, scene, knob, value=None):
@@ -520,6 +571,7 @@ def main():
     runs = prepare(read_csv(os.path.join(args.perf_dir, "runs.csv")))
     solver = read_csv(os.path.join(args.perf_dir, "solver.csv"))
     scaling = read_csv(os.path.join(args.perf_dir, "scaling.csv"))
+    stacks = read_csv(os.path.join(args.perf_dir, "stacks.csv"))
     world_has_exact = any(r["solver_mode"] == "exact" for r in runs)
 
     plots = []
@@ -530,12 +582,12 @@ def main():
                 plots.append(f"![{scene}](perf/pareto_{scene}.png)")
         scaling_png = plot_scaling(scaling, os.path.join(args.perf_dir, "scaling.png"), work)
 
-    doc = render(args, runs, solver, scaling, world_has_exact, plots, scaling_png)
+    doc = render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png)
     with open(args.doc, "w") as f:
         f.write(doc)
 
 
-def render(args, runs, solver, scaling, world_has_exact, plots, scaling_png):
+def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png):
     mode_note = ("The World's solver mode is swept (iterative, exact) on every scene but the pyramid: its one "
                  "cluster of 210 boxes (about 2400 complementarity rows) did not finish 30 frames in exact mode "
                  "within several minutes, so it is not measured there." if world_has_exact else
@@ -672,6 +724,18 @@ alive with a detection margin, as Box2D's skin does, is the likely fix for
 ## Stacks standing for a minute
 
 {stand_section(runs)}
+## Stacks against Box2D v3 (issue 12)
+
+The same scenes in every engine (`bench/stack_scenes.h`): unit boxes of 1 kg,
+friction 0.6, restitution 0, a static ground 200 m x 1 m with its top at
+y = 0, exactly touching boxes, gravity -10 m/s^2, dt 1/60 s, 4 substeps, one
+thread, sleeping off, every other setting the engine's default (ours: the
+World's defaults). Time: median of fresh runs of the first second; drift:
+largest displacement of any dynamic body between 1 s and the run's end;
+penetration: our detection on each engine's poses at every frame end. All
+rows come from one run of `collision2d_stack_bench`.
+
+{stacks_section(stacks)}
 ## Mass ratios (heavy box on a light one)
 
 {mass_ratio_section(runs)}

@@ -1,15 +1,22 @@
 #!/usr/bin/env bash
 # Regenerates the performance report in one command: builds the benchmarks
 # (ROS-free, Release), runs the speed/accuracy sweep with the peers, the
-# solver residual sweep and the scaling runs (one process per size, for the
-# peak memory), then writes docs/perf/*.csv, docs/perf/*.png (gnuplot) and
-# docs/performance.md.
+# solver residual sweep, the issue 12 stacks against every peer and the
+# scaling runs (one process per size, for the peak memory), then writes
+# docs/perf/*.csv, docs/perf/*.png (gnuplot) and docs/performance.md.
 #
 #   scripts/performance_report.sh [--quick] [--no-build]
 #
 # --quick thins every grid and shortens the long runs (a few minutes instead
-# of about fifteen on two cores). Environment: COLLISION2D_PERF_BUILD (build
-# folder, default .build/perf), COLLISION2D_JOBS (default 2).
+# of about fifteen on two cores, plus about twelve for the stacks' 60 s runs
+# in every peer). Environment: COLLISION2D_PERF_BUILD (build folder, default
+# .build/perf), COLLISION2D_JOBS (default 2), COLLISION2D_BOX2D_V3_DIR
+# (optional: a Box2D v3 checkout with its Release static library built under
+# it, in build/src/, lib/ or src/, made by you in a scratch folder outside
+# this repository; Box2D v3 then joins the peer sweep, the stacks and the
+# scaling runs as a third peer, and the report says so) and
+# COLLISION2D_BOX2D_V3_LIBRARY (that library's path, if it is elsewhere).
+# Without them the report is made without Box2D v3.
 # Installs what it needs when missing (apt: the package's build dependencies,
 # Box2D and Chipmunk as peers, gnuplot); needs root or sudo for that.
 set -euo pipefail
@@ -22,10 +29,14 @@ QUICK=()
 BUILD_FIRST=1
 SCALING_SIZES=(100 1000 10000 100000)
 SCALING_ENGINES=(collision2d box2d chipmunk)
+BOX2D_V3_DIR="${COLLISION2D_BOX2D_V3_DIR:-}"
+BOX2D_V3_LIBRARY="${COLLISION2D_BOX2D_V3_LIBRARY:-}"
+STACK_SECONDS=10,60
+STACK_REPS=5
 
 for arg in "$@"; do
   case "$arg" in
-    --quick) QUICK=(--quick) ;;
+    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3 ;;
     --no-build) BUILD_FIRST=0 ;;
     *) echo "usage: $0 [--quick] [--no-build]" >&2; exit 2 ;;
   esac
@@ -46,12 +57,19 @@ if [[ $BUILD_FIRST == 1 ]]; then
   log "building in $BUILD"
   # A fresh clone has no build folder yet, and the configure log goes beside it.
   mkdir -p "$BUILD"
-  cmake -S "$ROOT" -B "$BUILD" -DCOLLISION2D_WITH_ROS=OFF -DCMAKE_BUILD_TYPE=Release > "$BUILD.cmake.log" 2>&1 ||
-    { cat "$BUILD.cmake.log" >&2; exit 1; }
-  cmake --build "$BUILD" -j"$JOBS" --target collision2d_sweep_bench collision2d_scaling_bench
+  # Passed even when empty, so a folder configured with Box2D v3 before drops it.
+  cmake -S "$ROOT" -B "$BUILD" -DCOLLISION2D_WITH_ROS=OFF -DCMAKE_BUILD_TYPE=Release \
+    -DCOLLISION2D_BOX2D_V3_DIR="$BOX2D_V3_DIR" -DCOLLISION2D_BOX2D_V3_LIBRARY="$BOX2D_V3_LIBRARY" \
+    > "$BUILD.cmake.log" 2>&1 || { cat "$BUILD.cmake.log" >&2; exit 1; }
+  grep "Box2D v3" "$BUILD.cmake.log" >&2 || true
+  cmake --build "$BUILD" -j"$JOBS" --target collision2d_sweep_bench collision2d_scaling_bench collision2d_stack_bench
 fi
 SWEEP="$BUILD/bench/collision2d_sweep_bench"
 SCALING="$BUILD/bench/collision2d_scaling_bench"
+STACK="$BUILD/bench/collision2d_stack_bench"
+if [[ -n $BOX2D_V3_DIR ]]; then
+  SCALING_ENGINES+=(box2d_v3)
+fi
 mkdir -p "$OUT"
 START=$(date +%s)
 
@@ -60,6 +78,10 @@ log "sweep: our knobs, the peers and the 60 s stacks (progress below)"
 
 log "solver residuals on random clusters"
 "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
+
+log "stacks of issue 12: ours and every peer built in, ${STACK_SECONDS} s"
+"$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
+  2> "$BUILD/stacks.log" || { tail "$BUILD/stacks.log" >&2; exit 1; }
 
 log "scaling: one process per engine and size"
 "$SCALING" --header > "$OUT/scaling.csv"

@@ -42,10 +42,11 @@ public:
   Box2dEngine(const Scene& scene, const EngineConfig& config) : world_(to_b2(config.settings.gravity))
   {
     const bool matched = config.variant == PeerVariant::Matched;
-    steps_per_frame_ = matched ? config.settings.substeps : 1;
+    const bool defaults = config.variant == PeerVariant::Defaults;
+    steps_per_frame_ = defaults ? 1 : config.settings.substeps;
     velocity_iterations_ = matched ? config.settings.velocity_iterations : kDefaultVelocityIterations;
     step_ = static_cast<float>(config.settings.dt / steps_per_frame_);
-    world_.SetAllowSleeping(!matched);
+    world_.SetAllowSleeping(defaults);
     for (const SceneBody& entry : scene.bodies)
     {
       bodies_.push_back(add_body(entry, matched ? config.settings.restitution_threshold : -1.0));

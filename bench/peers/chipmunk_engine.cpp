@@ -24,7 +24,7 @@ public:
   ChipmunkEngine(const Scene& scene, const EngineConfig& config) : space_(cpSpaceNew())
   {
     const bool matched = config.variant == PeerVariant::Matched;
-    steps_per_frame_ = matched ? config.settings.substeps : 1;
+    steps_per_frame_ = config.variant == PeerVariant::Defaults ? 1 : config.settings.substeps;
     step_ = config.settings.dt / steps_per_frame_;
     cpSpaceSetGravity(space_, to_cp(config.settings.gravity));
     if (matched)

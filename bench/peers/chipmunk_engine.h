@@ -11,7 +11,8 @@ namespace bench
 {
 /// Defaults: cpSpaceStep(dt) once per frame with Chipmunk's defaults
 /// (10 iterations, collision slop 0.1 m, no sleeping). Matched: `substeps`
-/// steps of dt/substeps, our velocity iterations and our slop. Chipmunk has
+/// steps of dt/substeps, our velocity iterations and our slop. Substepped:
+/// `substeps` steps of dt/substeps with the defaults. Chipmunk has
 /// no continuous collision, so fast bodies may tunnel in both variants.
 std::unique_ptr<Engine> make_chipmunk_engine(const Scene& scene, const EngineConfig& config);
 

@@ -1,0 +1,359 @@
+// collision2d_stack_bench: the stacks of issue 12 in ours and in every peer
+// built in (Box2D 2.4.1, Chipmunk 7, Box2D v3 when the build was given
+// COLLISION2D_BOX2D_V3_DIR), all measured in this one process.
+//
+//   collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T]
+//                           [--scene NAME]... [--engine NAME]... [--csv FILE]
+//
+// Each engine runs the scene with the comparison's rule (stack_scenes.h):
+// ours with the scene's settings (our defaults, 4 substeps, sleeping off),
+// each peer with its own defaults but 4 substeps and sleeping off
+// (PeerVariant::Substepped). Per scene and engine it prints ms/frame (median
+// of N fresh runs of T simulated seconds, wall and thread CPU), then one run
+// to the longest S: drift from 1 s to each S (largest displacement of any
+// dynamic body between the two instants) and the largest penetration up to
+// each S (our detection on the engine's poses, as every benchmark measures
+// it), and each engine's time over Box2D v3's. A table goes to stdout (the
+// packaged Chipmunk prints a banner there too), CSV rows to FILE.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "collision2d/contact_solver.h"
+#include "engine.h"
+#include "stack_scenes.h"
+#include "timing.h"
+
+namespace
+{
+using namespace collision2d;
+using namespace collision2d::bench;
+
+constexpr double kSettleSeconds = 1.0;  // s: drift is measured from here on
+constexpr double kDefaultSeconds = 10.0;
+constexpr double kDefaultTimingSeconds = 1.0;  // s of simulation per timed run
+constexpr int kDefaultRepetitions = 5;
+
+const EngineKind kAllEngines[] = {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk,
+                                  EngineKind::Box2dV3};
+
+struct Arguments
+{
+  std::vector<double> seconds{kDefaultSeconds};  ///< checkpoints, ascending
+  int repetitions = kDefaultRepetitions;
+  double timing_seconds = kDefaultTimingSeconds;
+  std::vector<std::string> scenes;    ///< empty: all stacks
+  std::vector<EngineKind> engines;    ///< empty: every engine built in
+  std::string csv;                    ///< empty: no CSV
+};
+
+/// What one engine shows at one checkpoint of the accuracy run.
+struct Checkpoint
+{
+  double seconds = 0.0;
+  double drift = 0.0;            ///< m, from kSettleSeconds to `seconds`
+  double max_penetration = 0.0;  ///< m, largest over the frames up to `seconds`
+};
+
+struct EngineResult
+{
+  EngineKind kind = EngineKind::Collision2d;
+  double ms_per_frame = 0.0;
+  double cpu_ms_per_frame = 0.0;
+  std::vector<Checkpoint> checkpoints;
+};
+
+[[noreturn]] void usage(const std::string& problem)
+{
+  std::fprintf(stderr,
+               "%s\nusage: collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T] "
+               "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE]\n",
+               problem.c_str());
+  std::exit(2);
+}
+
+std::vector<double> parse_seconds(const std::string& text)
+{
+  std::vector<double> values;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    const double s = std::atof(item.c_str());
+    if (!(s > kSettleSeconds))
+    {
+      usage("--seconds: every value must exceed the " + std::to_string(kSettleSeconds) + " s settling time");
+    }
+    values.push_back(s);
+  }
+  std::sort(values.begin(), values.end());
+  return values;
+}
+
+EngineKind parse_engine(const std::string& name)
+{
+  for (EngineKind kind : kAllEngines)
+  {
+    if (engine_name(kind) == name)
+    {
+      return kind;
+    }
+  }
+  usage("unknown engine '" + name + "'");
+}
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  Arguments args;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string flag = argv[i];
+    if (i + 1 >= argc)
+    {
+      usage("unknown or incomplete argument: " + flag);
+    }
+    const std::string value = argv[++i];
+    if (flag == "--seconds")
+    {
+      args.seconds = parse_seconds(value);
+    }
+    else if (flag == "--reps")
+    {
+      args.repetitions = std::atoi(value.c_str());
+    }
+    else if (flag == "--timing-seconds")
+    {
+      args.timing_seconds = std::atof(value.c_str());
+    }
+    else if (flag == "--scene")
+    {
+      args.scenes.push_back(value);
+    }
+    else if (flag == "--engine")
+    {
+      args.engines.push_back(parse_engine(value));
+    }
+    else if (flag == "--csv")
+    {
+      args.csv = value;
+    }
+    else
+    {
+      usage("unknown argument: " + flag);
+    }
+  }
+  if (args.repetitions < 1 || !(args.timing_seconds > 0.0) || args.seconds.empty())
+  {
+    usage("--reps, --timing-seconds and --seconds must be positive");
+  }
+  return args;
+}
+
+EngineConfig config_for(EngineKind kind, const BenchScene& scene)
+{
+  // Ours takes the scene's settings as they are; a peer its defaults with
+  // the scene's substeps and sleeping off.
+  const PeerVariant variant = kind == EngineKind::Collision2d ? PeerVariant::Matched : PeerVariant::Substepped;
+  return EngineConfig{kind, variant, scene.scene.settings};
+}
+
+std::vector<BodyState> read_states(const Engine& engine, std::size_t count)
+{
+  std::vector<BodyState> states(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    states[i] = engine.state(i);
+  }
+  return states;
+}
+
+double largest_move(const Scene& scene, const std::vector<BodyState>& from, const std::vector<BodyState>& to)
+{
+  double move = 0.0;
+  for (std::size_t i = 0; i < from.size(); ++i)
+  {
+    if (scene.bodies[i].body.type() == BodyType::Dynamic)
+    {
+      move = std::max(move, length(to[i].position - from[i].position));
+    }
+  }
+  return move;
+}
+
+/// Deepest overlap at these poses by our detection; infinite when the poses
+/// are degenerate (the engine blew up).
+double deepest_overlap(std::vector<Body>& bodies, const std::vector<BodyState>& states)
+{
+  for (std::size_t i = 0; i < states.size(); ++i)
+  {
+    bodies[i].set_position(states[i].position);
+    bodies[i].set_theta(states[i].theta);
+  }
+  try
+  {
+    double deepest = 0.0;
+    for (const Contact& c : ContactSolver::detect_contacts(bodies))
+    {
+      deepest = std::max(deepest, c.penetration);
+    }
+    return deepest;
+  }
+  catch (const std::runtime_error&)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
+std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& config,
+                                     const std::vector<double>& seconds)
+{
+  const Scene& scene = bs.scene;
+  const double dt = scene.settings.dt;
+  std::unique_ptr<Engine> engine = make_engine(scene, config);
+  std::vector<Body> probe;
+  for (const SceneBody& entry : scene.bodies)
+  {
+    probe.push_back(entry.body);
+  }
+  const int settle_frame = frames_for(kSettleSeconds, dt);
+  std::vector<BodyState> settled = read_states(*engine, scene.bodies.size());
+  std::vector<Checkpoint> out;
+  double deepest = 0.0;
+  std::size_t next = 0;
+  for (int f = 1; next < seconds.size(); ++f)
+  {
+    engine->step_frame();
+    const std::vector<BodyState> now = read_states(*engine, scene.bodies.size());
+    deepest = std::max(deepest, deepest_overlap(probe, now));
+    settled = f == settle_frame ? now : settled;
+    while (next < seconds.size() && f == frames_for(seconds[next], dt))
+    {
+      out.push_back(Checkpoint{seconds[next], largest_move(scene, settled, now), deepest});
+      ++next;
+    }
+  }
+  return out;
+}
+
+EngineResult measure(const BenchScene& scene, EngineKind kind, const Arguments& args)
+{
+  const EngineConfig config = config_for(kind, scene);
+  EngineResult r;
+  r.kind = kind;
+  std::vector<double> wall;
+  std::vector<double> cpu;
+  for (int i = 0; i < args.repetitions; ++i)
+  {
+    std::unique_ptr<Engine> engine = make_engine(scene.scene, config);
+    const FrameTime t = time_frames(*engine, frames_for(args.timing_seconds, scene.scene.settings.dt));
+    wall.push_back(t.wall_ms);
+    cpu.push_back(t.cpu_ms);
+  }
+  r.ms_per_frame = median(wall);
+  r.cpu_ms_per_frame = median(cpu);
+  r.checkpoints = accuracy_run(scene, config, args.seconds);
+  return r;
+}
+
+std::size_t dynamic_bodies(const Scene& scene)
+{
+  return static_cast<std::size_t>(std::count_if(scene.bodies.begin(), scene.bodies.end(), [](const SceneBody& b) {
+    return b.body.type() == BodyType::Dynamic;
+  }));
+}
+
+/// This engine's time over Box2D v3's (NAN without v3 in this run).
+double ratio_to_v3(const std::vector<EngineResult>& results, double EngineResult::*field, const EngineResult& r)
+{
+  for (const EngineResult& v3 : results)
+  {
+    if (v3.kind == EngineKind::Box2dV3 && v3.*field > 0.0)
+    {
+      return r.*field / v3.*field;
+    }
+  }
+  return NAN;
+}
+
+void print_scene(const BenchScene& scene, const std::vector<EngineResult>& results, FILE* csv)
+{
+  const std::size_t boxes = dynamic_bodies(scene.scene);
+  for (const EngineResult& r : results)
+  {
+    const double ratio = ratio_to_v3(results, &EngineResult::ms_per_frame, r);
+    const double cpu_ratio = ratio_to_v3(results, &EngineResult::cpu_ms_per_frame, r);
+    for (const Checkpoint& c : r.checkpoints)
+    {
+      std::printf("| %s | %zu | %s | %.3g | %.3g | %.3g | %.3g | %g | %.3g | %.3g |\n", scene.name.c_str(), boxes,
+                  engine_name(r.kind).c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
+                  c.drift, c.max_penetration);
+      if (csv != nullptr)
+      {
+        std::fprintf(csv, "%s,%zu,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
+                     engine_name(r.kind).c_str(), variant_name(config_for(r.kind, scene).variant).c_str(),
+                     r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds, c.drift, c.max_penetration);
+      }
+    }
+  }
+  std::fflush(stdout);
+  if (csv != nullptr)
+  {
+    std::fflush(csv);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  Arguments args = parse_arguments(argc, argv);
+  FILE* csv = nullptr;
+  if (!args.csv.empty() && (csv = std::fopen(args.csv.c_str(), "w")) == nullptr)
+  {
+    usage("cannot write " + args.csv);
+  }
+  if (args.engines.empty())
+  {
+    for (EngineKind kind : kAllEngines)
+    {
+      if (engine_available(kind))
+      {
+        args.engines.push_back(kind);
+      }
+    }
+  }
+  const std::vector<std::string> names = args.scenes.empty() ? stack_scene_names() : args.scenes;
+  if (csv != nullptr)
+  {
+    std::fprintf(csv, "scene,boxes,engine,variant,ms_per_frame,cpu_ms_per_frame,ms_over_box2d_v3,"
+                      "cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m\n");
+  }
+  std::printf("| scene | boxes | engine | ms/frame | CPU ms/frame | time / Box2D v3 | CPU time / Box2D v3 | "
+              "run (s) | drift 1 s -> run end (m) | largest penetration (m) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  try
+  {
+    for (const std::string& name : names)
+    {
+      const BenchScene scene = make_bench_scene(name);
+      std::vector<EngineResult> results;
+      for (EngineKind kind : args.engines)
+      {
+        std::fprintf(stderr, "stack %s %s\n", name.c_str(), engine_name(kind).c_str());
+        results.push_back(measure(scene, kind, args));
+      }
+      print_scene(scene, results, csv);
+    }
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "collision2d_stack_bench: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,26 @@
+// The stacks compared with Box2D v3 (issue 12): the same scenes for every
+// engine, described so anyone can rebuild them in any engine. Unit boxes of
+// 1 kg (1 m x 1 m), friction 0.6 (static and kinetic), restitution 0, a
+// static ground 200 m x 1 m with its top at y = 0, exactly touching boxes,
+// gravity -10 m/s^2, dt 1/60 s, 4 substeps, sleeping off, every other
+// setting the engine's default.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "bench_scenes.h"
+
+namespace collision2d
+{
+namespace bench
+{
+/// stack_pyramid_20, stack_column_20, stack_pyramid_60, stack_pyramid_100.
+std::vector<std::string> stack_scene_names();
+/// Whether `name` is one of stack_scene_names().
+bool is_stack_scene(const std::string& name);
+/// Throws std::invalid_argument for a name not in stack_scene_names().
+BenchScene make_stack_scene(const std::string& name);
+
+}  // namespace bench
+}  // namespace collision2d

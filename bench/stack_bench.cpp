@@ -1,12 +1,14 @@
-// collision2d_stack_bench: the stacks of issue 12 in ours and in every peer
+// collision2d_stack_bench: the stack scenes (stack_scenes.h) in ours and in every peer
 // built in (Box2D 2.4.1, Chipmunk 7, Box2D v3 when the build was given
 // COLLISION2D_BOX2D_V3_DIR), all measured in this one process.
 //
 //   collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T]
 //                           [--scene NAME]... [--engine NAME]... [--csv FILE]
+//                           [--soft-step on|off]
 //
 // Each engine runs the scene with the comparison's rule (stack_scenes.h):
-// ours with the scene's settings (our defaults, 4 substeps, sleeping off),
+// ours with the scene's settings (our defaults, 4 substeps, sleeping off; the
+// soft step with --soft-step on),
 // each peer with its own defaults but 4 substeps and sleeping off
 // (PeerVariant::Substepped). Per scene and engine it prints ms/frame (median
 // of N fresh runs of T simulated seconds, wall and thread CPU), then one run
@@ -51,6 +53,7 @@ struct Arguments
   std::vector<std::string> scenes;    ///< empty: all stacks
   std::vector<EngineKind> engines;    ///< empty: every engine built in
   std::string csv;                    ///< empty: no CSV
+  bool soft_step = false;             ///< ours with WorldSettings::soft_step
 };
 
 /// What one engine shows at one checkpoint of the accuracy run.
@@ -73,7 +76,7 @@ struct EngineResult
 {
   std::fprintf(stderr,
                "%s\nusage: collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T] "
-               "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE]\n",
+               "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE] [--soft-step on|off]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -143,6 +146,10 @@ Arguments parse_arguments(int argc, char** argv)
     {
       args.csv = value;
     }
+    else if (flag == "--soft-step")
+    {
+      args.soft_step = value == "on";
+    }
     else
     {
       usage("unknown argument: " + flag);
@@ -155,12 +162,14 @@ Arguments parse_arguments(int argc, char** argv)
   return args;
 }
 
-EngineConfig config_for(EngineKind kind, const BenchScene& scene)
+EngineConfig config_for(EngineKind kind, const BenchScene& scene, bool soft_step)
 {
-  // Ours takes the scene's settings as they are; a peer its defaults with
-  // the scene's substeps and sleeping off.
+  // Ours takes the scene's settings as they are (with the step asked for); a
+  // peer its defaults with the scene's substeps and sleeping off.
   const PeerVariant variant = kind == EngineKind::Collision2d ? PeerVariant::Matched : PeerVariant::Substepped;
-  return EngineConfig{kind, variant, scene.scene.settings};
+  WorldSettings settings = scene.scene.settings;
+  settings.soft_step = soft_step;
+  return EngineConfig{kind, variant, settings};
 }
 
 std::vector<BodyState> read_states(const Engine& engine, std::size_t count)
@@ -243,7 +252,7 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
 
 EngineResult measure(const BenchScene& scene, EngineKind kind, const Arguments& args)
 {
-  const EngineConfig config = config_for(kind, scene);
+  const EngineConfig config = config_for(kind, scene, args.soft_step);
   EngineResult r;
   r.kind = kind;
   std::vector<double> wall;
@@ -296,7 +305,7 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
       if (csv != nullptr)
       {
         std::fprintf(csv, "%s,%zu,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
-                     engine_name(r.kind).c_str(), variant_name(config_for(r.kind, scene).variant).c_str(),
+                     engine_name(r.kind).c_str(), variant_name(config_for(r.kind, scene, false).variant).c_str(),
                      r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds, c.drift, c.max_penetration);
       }
     }

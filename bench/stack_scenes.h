@@ -1,4 +1,4 @@
-// The stacks compared with Box2D v3 (issue 12): the same scenes for every
+// The stacks compared with Box2D v3: the same scenes for every
 // engine, described so anyone can rebuild them in any engine. Unit boxes of
 // 1 kg (1 m x 1 m), friction 0.6 (static and kinetic), restitution 0, a
 // static ground 200 m x 1 m with its top at y = 0, exactly touching boxes,

@@ -434,7 +434,7 @@ def scaling_section(scaling):
 
 
 def stacks_section(stacks):
-    """The issue 12 stacks: every engine of collision2d_stack_bench's one run."""
+    """The stack scenes: every engine of collision2d_stack_bench's one run."""
     if not stacks:
         return "Not measured in this run (`collision2d_stack_bench` wrote no stacks.csv).\n"
     engines = list(dict.fromkeys(r["engine"] for r in stacks))

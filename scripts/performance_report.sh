@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the performance report in one command: builds the benchmarks
 # (ROS-free, Release), runs the speed/accuracy sweep with the peers, the
-# solver residual sweep, the issue 12 stacks against every peer and the
+# solver residual sweep, the stack scenes against every peer and the
 # scaling runs (one process per size, for the peak memory), then writes
 # docs/perf/*.csv, docs/perf/*.png (gnuplot) and docs/performance.md.
 #
@@ -79,7 +79,7 @@ log "sweep: our knobs, the peers and the 60 s stacks (progress below)"
 log "solver residuals on random clusters"
 "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
 
-log "stacks of issue 12: ours and every peer built in, ${STACK_SECONDS} s"
+log "stacks: ours and every peer built in, ${STACK_SECONDS} s"
 "$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
   2> "$BUILD/stacks.log" || { tail "$BUILD/stacks.log" >&2; exit 1; }
 

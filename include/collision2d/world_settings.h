@@ -1,4 +1,4 @@
-// World settings (SPEC section 3.3): materials and the one table of the
+// World settings: materials and the one table of the
 // world's settings (WorldSettings) with their defaults, ranges, units and docs.
 #pragma once
 
@@ -17,52 +17,36 @@ struct Material
   double kinetic_friction = 0.0;  ///< mu_k >= 0
 };
 
-// Why some knobs exist and what they cost (the table's docs are one line each):
-//  - warm_start_every_substep: SPEC section 3 warm-starts only a frame's first
-//    substep (false gives exactly that). The later substeps then start cold, and
-//    two Gauss-Seidel passes cannot carry the weight of a tall stack from zero: a
-//    20-box column sinks metres into itself. With true every later substep also
-//    starts from the previous substep's impulses, matched by (body ids, feature).
+// Why some knobs exist (the table's docs are one line each; their measured
+// effects are in docs/performance.md):
+//  - warm_start_every_substep: false warm-starts only a frame's first substep,
+//    as the plain Fx2D order does; the later substeps then start cold and two
+//    Gauss-Seidel passes cannot carry a tall stack from zero.
 //  - toi_displacement_fraction: a dynamic body is swept for time of impact when
-//    its displacement in one substep exceeds this fraction of (its inner radius +
-//    the smallest inner radius in the world); inner radius = radius of a disk,
-//    least centroid-to-face distance of a polygon. Below it nothing is skipped.
+//    its displacement in one substep exceeds this fraction of (its inner radius
+//    + the smallest inner radius in the world); below it nothing is skipped.
 //  - sleep_auto_min_bodies: Toggle::Auto sleeps only worlds with gravity and at
 //    least this many dynamic bodies: smaller scenes gain little and keep exactly
 //    reproducible trajectories; without gravity nothing rests against anything.
-//  - position_iterations (SPEC step 3 is one pass): each pass moves a body by its
-//    share of each contact's depth beyond slop, and in a stack the lift a contact
-//    gives is partly taken back by the contact above it, so one pass leaves part
-//    of every substep's gravity sag (the 20-box column 0.15 m after 10 s with one
-//    pass, 0.054 m with four; the base-20 pyramid 0.056 m and 0.029 m; measured in
-//    test_world_stacking.cpp). Passes after the first skip impacts.
-//  - position_block: a two-point manifold's penetration solved as one 2x2 block
-//    instead of SPEC's per-point lambda = (d - slop) / (count K_n). Per point a
-//    flat box is lifted by only 40% of its excess depth per pass; the block lifts
-//    it fully (column 0.052 m at one pass) but lets the pyramid, whose boxes rest
-//    on two half faces, spread sideways (2.4 cm at one pass, 16 cm at two): off.
-//  - solver_mode: Iterative runs velocity_iterations Gauss-Seidel passes. Exact
-//    solves each island as one LCP by pivoting (with Newton targets and Coulomb
-//    cones), carrying mass ratios no number of passes can (1e6 kg on 1 kg); an
-//    island whose pivoting fails (or has more than kMaxExactUnknowns unknowns)
-//    falls back to the passes, counted in StepReport::exact_fallbacks.
-//  - exact_position_correction: with false a position pass barely moves the
-//    heavy body of an extreme mass ratio, so a 1e6 kg box on a 1 kg box keeps each
-//    substep's gravity sag and sinks steadily although its velocities are exact.
-//  - warm_start_before_integration: in SPEC's order a resting body first moves by
-//    its gravity kick g h^2 and the position passes, which carry a lift up a stack
-//    only in part, must lift it back every substep; predicting the velocities
-//    from the previous substep's contacts (as Box2D moves poses with solved
-//    velocities) removes that. Velocities are set back after detection, so only
-//    poses differ from the default order. Needs warm starting. Over 1 s to 10 s:
-//    20-box column 4x2 8.1e-3 -> 2.8e-4 m, 4x8 7.9e-3 -> 7.1e-6 m, 8x4 2.8e-3 ->
-//    6.8e-6 m; base-20 pyramid 4x8 1.5e-3 -> 1.7e-5 m, 8x4 1.9e-4 -> 3.0e-6 m, but
-//    4x2 1.5e-3 -> 0.15 m (touching contacts come and go and start cold): use it
-//    with >= 4 substeps x >= 4 iterations or 8x4. Cost: one more velocity solve
-//    per substep (pyramid 8x4 +12%, 4x8 +30%). A 100 kg box on a 1 kg one sinks
-//    less (4 mm, not 19) but drifts more (2.0e-3 m, not 3.2e-4).
+//  - position_iterations: in a stack the lift one contact gives is partly taken
+//    back by the contact above it, so one pass leaves part of every substep's
+//    gravity sag; passes after the first skip impacts.
+//  - position_block: a two-point manifold's penetration as one 2x2 block lifts a
+//    flat box fully (per point only part of the lift survives the turn it
+//    causes) but lets a pyramid spread sideways: off.
+//  - solver_mode: Exact solves each island as one LCP by pivoting, carrying mass
+//    ratios no number of passes can; a failed island falls back to the passes
+//    (StepReport::exact_fallbacks). It runs on the Fx2D step.
+//  - exact_position_correction: without it a position pass barely moves the
+//    heavy body of an extreme mass ratio, which then keeps each substep's sag.
+//  - warm_start_before_integration: poses advance with velocities predicted
+//    from the previous substep's contacts, so a resting body is not first moved
+//    by its gravity kick; needs warm starting, and >= 4x4 or 8x4 substeps x
+//    passes (at 4x2 touching contacts come and go and a pyramid rattles).
+//  - soft_step: the contacts are damped springs (contact_hertz,
+//    contact_damping_ratio), found once per frame within speculative_margin.
 
-// The one table of the world's settings (SPEC section 3.3). Adding a setting is
+// The one table of the world's settings. Adding a setting is
 // one line here; cfg/Collision2d.cfg reads these lines, so keep each entry
 //   X(name, type, default, range, "unit", "doc")
 // on one line with a plain default (a number, true/false, Toggle::X,

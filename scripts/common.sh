@@ -32,6 +32,8 @@ DEBIAN_ROS_PACKAGES=(
   catkin ros-core-dev ros-message-generation ros-message-runtime
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
+  libros-rosgraph-msgs-dev python3-rosgraph-msgs libtf2-ros-dev python3-tf2-ros
+  libinteractive-markers-dev python3-interactive-markers
   python3-rospy python3-rosservice python3-rostopic python3-rostest librostest-dev rviz
   catkin-lint)
 # The same for ROS Noetic in /opt/ros/noetic, used when rosdep cannot resolve
@@ -40,7 +42,8 @@ NOETIC_ROS_PACKAGES=(
   ros-noetic-catkin ros-noetic-roscpp ros-noetic-message-generation
   ros-noetic-message-runtime ros-noetic-std-msgs ros-noetic-std-srvs
   ros-noetic-geometry-msgs ros-noetic-visualization-msgs
-  ros-noetic-dynamic-reconfigure ros-noetic-rospy ros-noetic-rosservice
+  ros-noetic-dynamic-reconfigure ros-noetic-rosgraph-msgs ros-noetic-tf2-ros
+  ros-noetic-interactive-markers ros-noetic-rospy ros-noetic-rosservice ros-noetic-rostopic
   ros-noetic-rostest ros-noetic-rviz python3-catkin-lint)
 
 # ---------------------------------------------------------------------------

@@ -52,6 +52,12 @@ MarkerNode::MarkerNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHa
   const double max_rate = max_rate_from_params(private_handle);
   publisher_ = node_handle_.advertise<visualization_msgs::MarkerArray>("markers", kMarkerQueueSize, /*latch=*/true);
   subscriber_ = node_handle_.subscribe("world_state", kStateQueueSize, &MarkerNode::on_state, this);
+  bool draggable = true;
+  private_handle.param("draggable", draggable, draggable);
+  if (draggable)
+  {
+    dragger_ = std::make_unique<BodyDragger>(node_handle_, builder_.options().frame_id);
+  }
   timer_ = node_handle_.createWallTimer(::ros::WallDuration(1.0 / max_rate),
                                         [this](const ::ros::WallTimerEvent&) { on_tick(); });
 }
@@ -68,6 +74,10 @@ void MarkerNode::on_tick()
     return;
   }
   publisher_.publish(builder_.build(*pending_));
+  if (dragger_)
+  {
+    dragger_->update(*pending_);
+  }
   pending_.reset();
 }
 

@@ -61,11 +61,13 @@ WorldState load(const std::string& scene)
   return srv.response.state;
 }
 
+/// A step that asks for the full state in the answer (return_state).
 StepWorld::Response step(std::uint32_t frames, double dt = 0.0)
 {
   StepWorld::Request request;
   request.frames = frames;
   request.dt = dt;
+  request.return_state = true;
   const StepWorld srv = call<StepWorld>("step_world", request);
   EXPECT_TRUE(srv.response.success) << srv.response.message;
   return srv.response;
@@ -213,7 +215,7 @@ TEST_F(WorldServices, DroppedDiskBounces)
   bool bounced = false;
   for (int frame = 0; frame < 150; ++frame)
   {
-    const BodyMsg* disk = find_body(step(1).state, set.response.state.bodies[1].id);
+    const BodyMsg* disk = find_body(step(1).state.at(0), set.response.state.bodies[1].id);
     ASSERT_NE(disk, nullptr);
     const double height = disk->pose.y - 0.25;
     lowest = std::min(lowest, height);
@@ -318,7 +320,7 @@ TEST_F(WorldServices, SetWorldKeepsTheSolverSettings)
   request.settings.exact_position_correction = !before_.settings.exact_position_correction;
   const SetWorld set = call<SetWorld>("set_world", request);
   ASSERT_TRUE(set.response.success) << set.response.message;
-  for (const WorldConfig& shown : {set.response.state.settings, get_world().settings, step(1).state.settings})
+  for (const WorldConfig& shown : {set.response.state.settings, get_world().settings, step(1).state.at(0).settings})
   {
     EXPECT_EQ(shown.solver_mode, WorldConfig::SOLVER_EXACT);
     EXPECT_EQ(shown.position_iterations, request.settings.position_iterations);

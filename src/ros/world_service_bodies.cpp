@@ -66,6 +66,15 @@ void WorldService::set_body_state(const SetBodyState::Request& request, SetBodyS
     {
       reject(where, "no body with this id in the world");
     }
+    const Vec2 centre{request.pose.x, request.pose.y};
+    for (BodyId other : world_.body_ids())
+    {
+      if (other != request.id && world_.body(other).position() == centre)
+      {
+        reject(where, "pose: centre coincides with that of body id " + std::to_string(other) +
+                          "; overlapping bodies with one centre have no contact normal");
+      }
+    }
     // Everything is built on copies, installed only when all of it worked.
     World next = world_;
     WorldClock origin = origin_;
@@ -85,7 +94,7 @@ void WorldService::set_body_state(const SetBodyState::Request& request, SetBodyS
     }
     try
     {
-      next.set_body_state(request.id, Vec2{request.pose.x, request.pose.y}, request.pose.theta,
+      next.set_body_state(request.id, centre, request.pose.theta,
                           Vec2{request.twist.linear.x, request.twist.linear.y}, request.twist.angular.z);
     }
     catch (const std::invalid_argument& e)

@@ -25,10 +25,11 @@ constexpr const char* kLogger = "drag";
 constexpr double kMinSampleInterval = 0.03;  ///< s
 // A body held still this long before the release is let go at rest.
 constexpr double kStaleMotion = 0.25;  ///< s
-// The grab handle is a nearly invisible disk over the body: rviz picks it,
-// the body's own markers stay as they are.
-constexpr float kHandleAlpha = 0.01F;
 constexpr double kHandleThickness = 0.05;  ///< m
+// Above every marker of the body (labels are drawn at 0.15 m): rviz picks the
+// nearest object under the mouse, and a press on the disk's radius line would
+// otherwise grab the line, which does not drag, and move the camera instead.
+constexpr double kHandleZ = 0.25;  ///< m
 
 double yaw_of(const geometry_msgs::Quaternion& q)
 {
@@ -45,7 +46,7 @@ geometry_msgs::Pose body_pose(const BodyMsg& body)
   return pose;
 }
 
-InteractiveMarker handle(const BodyMsg& body, const std_msgs::Header& header)
+InteractiveMarker handle(const BodyMsg& body, const std_msgs::Header& header, float alpha)
 {
   InteractiveMarker marker;
   marker.header = header;
@@ -63,11 +64,12 @@ InteractiveMarker handle(const BodyMsg& body, const std_msgs::Header& header)
   control.always_visible = true;
   Marker disk;
   disk.type = Marker::CYLINDER;
+  disk.pose.position.z = kHandleZ;
   disk.pose.orientation.w = 1.0;
   disk.scale.x = disk.scale.y = 2.0 * body.radius;
   disk.scale.z = kHandleThickness;
   disk.color.r = disk.color.g = disk.color.b = 1.0F;
-  disk.color.a = kHandleAlpha;
+  disk.color.a = alpha;
   control.markers.push_back(disk);
   marker.controls.push_back(control);
   return marker;
@@ -75,8 +77,9 @@ InteractiveMarker handle(const BodyMsg& body, const std_msgs::Header& header)
 
 }  // namespace
 
-BodyDragger::BodyDragger(::ros::NodeHandle& node_handle, std::string frame_id)
+BodyDragger::BodyDragger(::ros::NodeHandle& node_handle, std::string frame_id, float handle_alpha)
   : frame_id_(std::move(frame_id))
+  , handle_alpha_(handle_alpha)
   , server_(node_handle.resolveName("drag"))
   , client_(node_handle.serviceClient<SetBodyState>("set_body_state", /*persistent=*/false))
 {
@@ -93,7 +96,7 @@ void BodyDragger::update(const WorldState& state)
     now_shown.insert(name);
     if (shown_.count(name) == 0)
     {
-      server_.insert(handle(body, header),
+      server_.insert(handle(body, header, handle_alpha_),
                      [this](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& f) { on_feedback(f); });
     }
     else if (!(drag_.active && drag_.id == body.id))

@@ -24,8 +24,9 @@ namespace ros_interface
 class BodyDragger
 {
 public:
-  /// `frame_id` "" = each state's header.frame_id.
-  BodyDragger(::ros::NodeHandle& node_handle, std::string frame_id);
+  /// `frame_id` "" = each state's header.frame_id; `handle_alpha` is the
+  /// opacity of the grab disks drawn over the bodies.
+  BodyDragger(::ros::NodeHandle& node_handle, std::string frame_id, float handle_alpha);
 
   /// Adds, moves and removes the interactive markers to match `state`; the
   /// body being dragged stays where the mouse has it.
@@ -49,6 +50,7 @@ private:
   void send(std::uint32_t id, const geometry_msgs::Pose& pose, double vx, double vy, bool hold);
 
   std::string frame_id_;
+  float handle_alpha_;
   interactive_markers::InteractiveMarkerServer server_;
   ::ros::ServiceClient client_;
   std::set<std::string> shown_;

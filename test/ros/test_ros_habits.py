@@ -5,6 +5,7 @@ stdout, StepWorld answers that fit a terminal, reads that never wait for a
 step, and printable messages."""
 import math
 import os
+import re
 import subprocess
 import tempfile
 import threading
@@ -24,8 +25,8 @@ NODE = NS + "/world"
 SERVICE_WAIT_S = 30.0
 COMMAND_TIMEOUT_S = 120.0
 LOG_WAIT_S = 10.0
-README_ROSRUN = ("rosrun collision2d collision2d_cli "
-                 "$(rospack find collision2d)/config/scenarios/cluster.collision")
+README = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "README.md")
+ROSRUN_EXAMPLE = re.compile(r"^`?(rosrun collision2d collision2d_cli [^`\n]*)`?\.?$", re.MULTILINE)
 # A screenful: what `rosservice call step_world` may print by default.
 SCREEN_LINES = 60
 LONG_STEP_FRAMES = 10000
@@ -84,13 +85,17 @@ class RosHabits(unittest.TestCase):
     def tearDown(self):
         self.rosout.close()
 
-    def test_readme_rosrun_line_runs_without_a_terminal(self):
-        run = run_without_terminal(README_ROSRUN)
-        output = run.stdout + run.stderr
-        self.assertEqual(run.returncode, 0, output)
-        self.assertIn("contacts:", run.stdout)
-        self.assertNotIn("loop", output)
-        self.assertNotIn("non-unique", output)
+    def test_readme_rosrun_lines_run_without_a_terminal(self):
+        with open(README) as readme:
+            lines = ROSRUN_EXAMPLE.findall(readme.read())
+        self.assertGreaterEqual(len(lines), 2, "the README's rosrun examples were not found")
+        for line in lines:
+            run = run_without_terminal(line)
+            output = run.stdout + run.stderr
+            self.assertEqual(run.returncode, 0, "%s\n->\n%s" % (line, output))
+            self.assertIn("contacts:", run.stdout)
+            self.assertNotIn("loop", output)
+            self.assertNotIn("non-unique", output)
         # No program below the package folder that rosrun searches: only the devel copy runs.
         found = run_without_terminal("find -L \"$(rospack find collision2d)\" -name collision2d_cli")
         self.assertEqual(found.stdout.strip(), "", found.stdout + found.stderr)

@@ -483,6 +483,7 @@ TEST_F(WorldServiceTest, DtOfOneRequestDoesNotStick)
 
 TEST_F(WorldServiceTest, StepAnswersASummaryUnlessAskedForTheState)
 {
+  service_.load("bouncing_disks");
   StepWorld::Request step;
   step.frames = 2;
   StepWorld::Response summary;

@@ -396,7 +396,7 @@ TEST_F(WorldServices, OverflowingStepIsRefusedAndTheWorldKept)
   step_request.frames = 3;
   const StepWorld stepped = call<StepWorld>("step_world", step_request);
   expect_rejected(stepped.response, "overflowed to a non-finite state");
-  EXPECT_TRUE(contains(stepped.response.message, "step failed")) << stepped.response.message;
+  EXPECT_TRUE(contains(stepped.response.message, "step_world failed")) << stepped.response.message;
 }
 
 TEST_F(WorldServices, NonFiniteNumbers)

@@ -23,9 +23,10 @@
 #include <string>
 #include <vector>
 
+#include <ros/time.h>
+
 #include "collision2d/ros/messages.h"
 // After messages.h: these reach Body only through WorldState, already read.
-#include <ros/time.h>
 #include <std_srvs/Trigger.h>
 
 #include "collision2d/ros/world_snapshot.h"

@@ -2,10 +2,12 @@
 # Shared by demo.sh and test.sh: dependency install, ROS environment, build.
 # Source it from a script that has `set -euo pipefail`.
 
-COLLISION2D_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+COLLISION2D_ROOT="$(cd -P "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # Everything generated lives here (git-ignored); override to build elsewhere.
 COLLISION2D_BUILD_ROOT="${COLLISION2D_BUILD_ROOT:-$COLLISION2D_ROOT/.build}"
 COLLISION2D_WS="$COLLISION2D_BUILD_ROOT/ws"
+# Scripts run from the workspace's package folder (rostest) find the same build root.
+export COLLISION2D_BUILD_ROOT
 COLLISION2D_JOBS="${COLLISION2D_JOBS:-$(nproc)}"
 NOETIC_SETUP=/opt/ros/noetic/setup.bash
 # ROS python modules are installed for the system interpreter only; a python3
@@ -30,6 +32,8 @@ DEBIAN_ROS_PACKAGES=(
   catkin ros-core-dev ros-message-generation ros-message-runtime
   libstd-msgs-dev libstd-srvs-dev libgeometry-msgs-dev libvisualization-msgs-dev
   libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure
+  libros-rosgraph-msgs-dev python3-rosgraph-msgs libtf2-ros-dev python3-tf2-ros
+  libinteractive-markers-dev python3-interactive-markers
   python3-rospy python3-rosservice python3-rostopic python3-rostest librostest-dev rviz
   catkin-lint)
 # The same for ROS Noetic in /opt/ros/noetic, used when rosdep cannot resolve
@@ -38,7 +42,8 @@ NOETIC_ROS_PACKAGES=(
   ros-noetic-catkin ros-noetic-roscpp ros-noetic-message-generation
   ros-noetic-message-runtime ros-noetic-std-msgs ros-noetic-std-srvs
   ros-noetic-geometry-msgs ros-noetic-visualization-msgs
-  ros-noetic-dynamic-reconfigure ros-noetic-rospy ros-noetic-rosservice
+  ros-noetic-dynamic-reconfigure ros-noetic-rosgraph-msgs ros-noetic-tf2-ros
+  ros-noetic-interactive-markers ros-noetic-rospy ros-noetic-rosservice ros-noetic-rostopic
   ros-noetic-rostest ros-noetic-rviz python3-catkin-lint)
 
 # ---------------------------------------------------------------------------
@@ -122,8 +127,31 @@ setup_ros_environment() {
   mkdir -p "$ROS_HOME"
 }
 
-# A catkin workspace whose only package is this repository (a symlink, so
-# edits in the clone are built without copying).
+# The package folder of the workspace: one link per top-level entry of the
+# clone, leaving out the build trees. rosrun searches the package folder with
+# `find -L`; a link to the whole clone would lead it into .build (a loop back
+# to the package, and the sanitizer and fuzz builds' copies of every program).
+link_package_folder() {
+  local package="$COLLISION2D_WS/src/collision2d" entry name
+  # Earlier layouts linked the whole clone here.
+  [[ -L $package ]] && rm -f "$package"
+  mkdir -p "$package"
+  for entry in "$package"/* "$package"/.[!.]*; do
+    [[ -L $entry && ! -e $entry ]] && rm -f "$entry"  # gone from the clone
+  done
+  for entry in "$COLLISION2D_ROOT"/* "$COLLISION2D_ROOT"/.[!.]*; do
+    [[ -e $entry ]] || continue
+    name=$(basename "$entry")
+    case "$name" in
+      .build | build* | devel | install) continue ;;
+    esac
+    [[ $entry -ef $COLLISION2D_BUILD_ROOT ]] && continue
+    ln -sfn "$entry" "$package/$name"
+  done
+}
+
+# A catkin workspace whose only package is this repository (linked, so edits
+# in the clone are built without copying).
 prepare_workspace() {
   mkdir -p "$COLLISION2D_WS/src"
   # catkin caches the test environment (build/catkin_generated/setup_cached.sh,
@@ -131,7 +159,7 @@ prepare_workspace() {
   # folder out of PYTHONPATH if it does not exist yet: rostest python nodes
   # would then not import the generated collision2d messages.
   mkdir -p "$COLLISION2D_WS/devel/lib/python3/dist-packages"
-  ln -sfn "$COLLISION2D_ROOT" "$COLLISION2D_WS/src/collision2d"
+  link_package_folder
   # A clone that moved leaves a CMake cache pointing at the old place.
   local cache="$COLLISION2D_WS/build/CMakeCache.txt"
   if [[ -f $cache ]] &&

@@ -18,6 +18,8 @@ constexpr double kDefaultMaxRateHz = 30.0;
 // Only the newest state matters; older ones are dropped on arrival.
 constexpr std::uint32_t kStateQueueSize = 1;
 constexpr std::uint32_t kMarkerQueueSize = 1;
+// The drag handles over the bodies: faint, so the bodies keep their colours.
+constexpr double kDefaultDragHandleAlpha = 0.01;
 
 double max_rate_from_params(const ::ros::NodeHandle& private_handle)
 {
@@ -52,6 +54,15 @@ MarkerNode::MarkerNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHa
   const double max_rate = max_rate_from_params(private_handle);
   publisher_ = node_handle_.advertise<visualization_msgs::MarkerArray>("markers", kMarkerQueueSize, /*latch=*/true);
   subscriber_ = node_handle_.subscribe("world_state", kStateQueueSize, &MarkerNode::on_state, this);
+  bool draggable = true;
+  private_handle.param("draggable", draggable, draggable);
+  if (draggable)
+  {
+    double handle_alpha = kDefaultDragHandleAlpha;
+    private_handle.param("drag_handle_alpha", handle_alpha, kDefaultDragHandleAlpha);
+    dragger_ = std::make_unique<BodyDragger>(node_handle_, builder_.options().frame_id,
+                                             static_cast<float>(handle_alpha));
+  }
   timer_ = node_handle_.createWallTimer(::ros::WallDuration(1.0 / max_rate),
                                         [this](const ::ros::WallTimerEvent&) { on_tick(); });
 }
@@ -68,6 +79,10 @@ void MarkerNode::on_tick()
     return;
   }
   publisher_.publish(builder_.build(*pending_));
+  if (dragger_)
+  {
+    dragger_->update(*pending_);
+  }
   pending_.reset();
 }
 

@@ -41,6 +41,10 @@ std::string body_label(std::size_t index, std::uint32_t id)
 
 std::string format_number(double value)
 {
+  if (std::isnan(value))
+  {
+    return "nan";  // to_chars writes "-nan" for a NaN with the sign bit set
+  }
   // Shortest text that reads back exactly: "0.1", not "0.10000000000000001".
   char text[kNumberChars];
   const std::to_chars_result end = std::to_chars(text, text + kNumberChars, value);

@@ -8,6 +8,7 @@
 
 #include "collision2d/ros/messages.h"
 
+#include "collision2d/ros/printable.h"
 #include "collision2d/ros/reconfigure.h"
 #include "collision2d/ros/resolve_contacts.h"
 #include "collision2d/ros/settings_conversions.h"
@@ -24,6 +25,9 @@ constexpr int kDefaultThreads = 4;
 constexpr int kDefaultMaxBodies = 5000;
 constexpr int kDefaultMaxFramesPerCall = 10000;
 constexpr int kDefaultAutosavePeriod = 0;  ///< frames; 0 = off
+/// rosconsole loggers ros.collision2d.<name> (see world_node.h).
+constexpr const char* kNodeLogger = "node";
+constexpr const char* kRequestsLogger = "requests";
 
 template <typename T>
 T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fallback)
@@ -32,7 +36,7 @@ T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fal
   handle.param(name, value, fallback);
   if (!(value > T{0}))
   {
-    ROS_WARN("~%s must be > 0; using %s", name.c_str(), std::to_string(fallback).c_str());
+    ROS_WARN_NAMED(kNodeLogger, "~%s must be > 0; using %s", name.c_str(), std::to_string(fallback).c_str());
     return fallback;
   }
   return value;
@@ -60,7 +64,7 @@ std::uint32_t autosave_period_param(const ::ros::NodeHandle& handle)
   handle.param("autosave_period", period, kDefaultAutosavePeriod);
   if (period < 0)
   {
-    ROS_WARN("~autosave_period must be >= 0 frames; autosave off");
+    ROS_WARN_NAMED(kNodeLogger, "~autosave_period must be >= 0 frames; autosave off");
     return 0;
   }
   return static_cast<std::uint32_t>(period);
@@ -99,13 +103,14 @@ WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHand
   , private_handle_(private_handle)
   , threads_(positive_param(private_handle, "threads", kDefaultThreads))
   , rate_(0.0)
+  , outputs_(node_handle_, world_output_options_from_params(private_handle))
   , world_(options_from_params(private_handle))
 {
   // Scene and snapshot files naming a setting's former name say so on /rosout.
   scenes::set_warning_handler([](const std::string& message) { ROS_WARN("%s", message.c_str()); });
   private_handle_.param("rate", rate_, 0.0);
-  state_publisher_ = node_handle_.advertise<WorldState>("world_state", 1, /*latch=*/true);
-  world_.set_change_listener([this](const WorldState& state) { state_publisher_.publish(state); });
+  world_.set_stamp_source([this](const WorldClock& clock) { return outputs_.stamp(clock); });
+  world_.set_change_listener([this](const WorldState& state) { outputs_.publish(state); });
 
   if (!restore_snapshot())
   {
@@ -114,6 +119,27 @@ WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHand
   advertise_services();
   start_reconfigure();
   start_timer();
+  log_start_summary();
+}
+
+void WorldNode::log_start_summary() const
+{
+  const WorldState state = world_.state();
+  const WorldOutputOptions& outputs = outputs_.options();
+  std::string services;
+  for (const ::ros::ServiceServer& service : services_)
+  {
+    services += (services.empty() ? "" : ", ") + service.getService();
+  }
+  ROS_INFO_NAMED(kNodeLogger, "world node %s: scene '%s' with %zu bodies at frame %llu; %s; rate %s Hz (%s)",
+                 ::ros::this_node::getName().c_str(), printable_text(state.scene).c_str(), state.bodies.size(),
+                 static_cast<unsigned long long>(state.frame_count), settings_summary(world_.settings()).c_str(),
+                 format_number(rate_).c_str(), rate_ > 0.0 ? "free-running" : "steps on request");
+  ROS_INFO_NAMED(kNodeLogger, "frame '%s'; tf %s; /clock %s; world_state on %s; services: %s",
+                 world_.options().frame_id.c_str(),
+                 outputs.publish_tf ? ("on, child frames " + outputs.body_frame_prefix + "<id>").c_str() : "off",
+                 outputs.publish_clock ? "on (header.stamp is sim time)" : "off (header.stamp is ros::Time::now())",
+                 node_handle_.resolveName("world_state").c_str(), services.c_str());
 }
 
 bool WorldNode::restore_snapshot()
@@ -129,13 +155,13 @@ bool WorldNode::restore_snapshot()
   try
   {
     world_.load_snapshot(path);
-    ROS_INFO("restored the world at frame %lu from %s", static_cast<unsigned long>(world_.state().frame_count),
+    ROS_INFO_NAMED(kNodeLogger, "restored the world at frame %lu from %s", static_cast<unsigned long>(world_.state().frame_count),
              path.c_str());
     return true;
   }
   catch (const std::exception& e)
   {
-    ROS_ERROR("snapshot not restored, loading ~scene instead: %s", e.what());
+    ROS_ERROR_NAMED(kNodeLogger, "snapshot not restored, loading ~scene instead: %s", e.what());
     return false;
   }
 }
@@ -154,7 +180,7 @@ void WorldNode::load_initial_scene()
   }
   catch (const std::exception& e)
   {
-    ROS_ERROR("initial scene not loaded, starting with an empty world: %s", e.what());
+    ROS_ERROR_NAMED(kNodeLogger, "initial scene not loaded, starting with an empty world: %s", e.what());
   }
 }
 
@@ -177,6 +203,8 @@ void WorldNode::advertise_services()
       nh, "get_world", [this](auto&, auto& response) { world_.get_world(response); }));
   services_.push_back(advertise<AddBody>(
       nh, "add_body", [this](auto& request, auto& response) { world_.add_body(request, response); }));
+  services_.push_back(advertise<SetBodyState>(
+      nh, "set_body_state", [this](auto& request, auto& response) { world_.set_body_state(request, response); }));
   services_.push_back(advertise<RemoveBody>(
       nh, "remove_body", [this](auto& request, auto& response) { world_.remove_body(request, response); }));
   // Replacing the world brings the new world's settings, which
@@ -224,7 +252,7 @@ void WorldNode::start_timer()
     }
     catch (const std::exception& e)
     {
-      ROS_ERROR_THROTTLE(1.0, "free-running step failed: %s", e.what());
+      ROS_ERROR_THROTTLE_NAMED(1.0, "step", "free-running step failed: %s", e.what());
     }
   });
 }

@@ -443,9 +443,33 @@ TEST_F(WorldServiceTest, DtOfOneRequestDoesNotStick)
   StepWorld::Response response;
   service_.step(step, response);
   ASSERT_TRUE(response.success) << response.message;
-  EXPECT_EQ(response.state.frame_count, 4u);
-  EXPECT_NEAR(response.state.sim_time, 4 * step.dt, 1e-12);
+  EXPECT_EQ(response.frame_count, 4u);
+  EXPECT_NEAR(response.sim_time, 4 * step.dt, 1e-12);
   EXPECT_EQ(service_.settings().dt, world_dt);
+}
+
+TEST_F(WorldServiceTest, StepAnswersASummaryUnlessAskedForTheState)
+{
+  service_.load("bouncing_disks");
+  StepWorld::Request step;
+  step.frames = 2;
+  StepWorld::Response summary;
+  service_.step(step, summary);
+  ASSERT_TRUE(summary.success) << summary.message;
+  EXPECT_EQ(summary.frame_count, 2u);
+  EXPECT_EQ(summary.body_count, service_.state().bodies.size());
+  EXPECT_GT(summary.body_count, 0u);
+  EXPECT_TRUE(summary.state.empty());
+  EXPECT_EQ(summary.report.frames, 2);
+
+  step.return_state = true;
+  StepWorld::Response full;
+  service_.step(step, full);
+  ASSERT_TRUE(full.success) << full.message;
+  ASSERT_EQ(full.state.size(), 1u);
+  EXPECT_EQ(full.state[0].frame_count, 4u);
+  EXPECT_EQ(full.state[0].bodies.size(), full.body_count);
+  EXPECT_EQ(full.state[0].frame_count, service_.state().frame_count);
 }
 
 }  // namespace

@@ -188,7 +188,7 @@ private:
     result.frames_requested += srv.request.frames;
     EXPECT_TRUE(called) << "client " << index_ << ": step_world call failed";
     EXPECT_TRUE(srv.response.success) << srv.response.message;
-    result.steps.push_back(StepRecord{srv.response.state.frame_count, srv.request.frames});
+    result.steps.push_back(StepRecord{srv.response.frame_count, srv.request.frames});
   }
 
   ros::NodeHandle handle_;

@@ -76,10 +76,11 @@ class PythonClient(unittest.TestCase):
         self.assertTrue(loaded.success, loaded.message)
         subscriber = rospy.Subscriber("world_state", WorldState, on_state)
         try:
-            stepped = rospy.ServiceProxy("step_world", StepWorld)(frames=5, dt=0.0)
+            stepped = rospy.ServiceProxy("step_world", StepWorld)(frames=5, dt=0.0, return_state=True)
             self.assertTrue(stepped.success, stepped.message)
-            self.assertEqual(stepped.state.frame_count, 5)
-            self.assertTrue(math.isclose(stepped.state.sim_time, 5 * stepped.state.settings.dt, rel_tol=1e-12))
+            self.assertEqual(stepped.frame_count, 5)
+            self.assertEqual([s.frame_count for s in stepped.state], [5])
+            self.assertTrue(math.isclose(stepped.sim_time, 5 * stepped.state[0].settings.dt, rel_tol=1e-12))
             self.assertTrue(done.wait(SERVICE_WAIT_S), "world_state never showed frame 5: %s" % received)
         finally:
             subscriber.unregister()

@@ -74,10 +74,10 @@ class Respawn(unittest.TestCase):
         self.assertTrue(removed.success, removed.message)
         last_saved = None
         for _ in range(CALLS):
-            response = self.step(frames=FRAMES_PER_CALL, dt=0.0)
+            response = self.step(frames=FRAMES_PER_CALL, dt=0.0, return_state=True)
             self.assertTrue(response.success, response.message)
-            if response.state.frame_count % self.period == 0:
-                last_saved = response.state
+            if response.frame_count % self.period == 0:
+                last_saved = response.state[0]
         self.assertIsNotNone(last_saved)
         before_kill = self.get_world().state
         self.assertEqual(before_kill.frame_count, CALLS * FRAMES_PER_CALL)
@@ -101,7 +101,7 @@ class Respawn(unittest.TestCase):
         # The respawned world steps on from the restored frame.
         response = self.step(frames=1, dt=0.0)
         self.assertTrue(response.success, response.message)
-        self.assertEqual(response.state.frame_count, last_saved.frame_count + 1)
+        self.assertEqual(response.frame_count, last_saved.frame_count + 1)
 
 
 if __name__ == "__main__":

@@ -61,11 +61,13 @@ WorldState load(const std::string& scene)
   return srv.response.state;
 }
 
+/// A step that asks for the full state in the answer (return_state).
 StepWorld::Response step(std::uint32_t frames, double dt = 0.0)
 {
   StepWorld::Request request;
   request.frames = frames;
   request.dt = dt;
+  request.return_state = true;
   const StepWorld srv = call<StepWorld>("step_world", request);
   EXPECT_TRUE(srv.response.success) << srv.response.message;
   return srv.response;
@@ -157,22 +159,24 @@ TEST_F(WorldServices, StepAdvancesFramesAndTime)
 {
   const double dt = before_.settings.dt;
   StepWorld::Response response = step(10);
-  EXPECT_EQ(response.state.frame_count, before_.frame_count + 10);
-  EXPECT_NEAR(response.state.sim_time, before_.sim_time + 10 * dt, 1e-12);
+  EXPECT_EQ(response.state.at(0).frame_count, before_.frame_count + 10);
+  EXPECT_EQ(response.frame_count, before_.frame_count + 10);
+  EXPECT_EQ(response.sim_time, response.state.at(0).sim_time);
+  EXPECT_NEAR(response.state.at(0).sim_time, before_.sim_time + 10 * dt, 1e-12);
   EXPECT_EQ(response.report.frames, 10);
   EXPECT_EQ(response.report.substeps, 10 * before_.settings.substeps);
   // A dt for one call: time advances by it, the world keeps its own.
   response = step(4, 0.5 * dt);
-  EXPECT_NEAR(response.state.sim_time, before_.sim_time + 12 * dt, 1e-12);
-  EXPECT_EQ(response.state.settings.dt, dt);
-  EXPECT_TRUE(same_world(response.state, get_world()));
+  EXPECT_NEAR(response.state.at(0).sim_time, before_.sim_time + 12 * dt, 1e-12);
+  EXPECT_EQ(response.state.at(0).settings.dt, dt);
+  EXPECT_TRUE(same_world(response.state.at(0), get_world()));
 }
 
 TEST_F(WorldServices, RestingStackStays)
 {
   const WorldState start = load("column");  // 20 boxes of 1 m on the ground
   const StepWorld::Response response = step(120);  // 2 s
-  ASSERT_EQ(response.state.bodies.size(), start.bodies.size());
+  ASSERT_EQ(response.state.at(0).bodies.size(), start.bodies.size());
   // Neither sliding nor toppling. The boxes do sink into their 20 contacts by
   // the gravity sag each substep's correction leaves (test_world_stacking
   // states about 0.15 m at the top with the default 4 substeps).
@@ -182,7 +186,7 @@ TEST_F(WorldServices, RestingStackStays)
   for (std::size_t i = 0; i < start.bodies.size(); ++i)
   {
     const BodyMsg& a = start.bodies[i];
-    const BodyMsg& b = response.state.bodies[i];
+    const BodyMsg& b = response.state.at(0).bodies[i];
     EXPECT_NEAR(b.pose.x, a.pose.x, kLateral) << "body " << a.id;
     EXPECT_NEAR(b.pose.theta, a.pose.theta, kTilt) << "body " << a.id;
     EXPECT_LE(a.pose.y - b.pose.y, kSink) << "body " << a.id;
@@ -213,7 +217,7 @@ TEST_F(WorldServices, DroppedDiskBounces)
   bool bounced = false;
   for (int frame = 0; frame < 150; ++frame)
   {
-    const BodyMsg* disk = find_body(step(1).state, set.response.state.bodies[1].id);
+    const BodyMsg* disk = find_body(step(1).state.at(0), set.response.state.bodies[1].id);
     ASSERT_NE(disk, nullptr);
     const double height = disk->pose.y - 0.25;
     lowest = std::min(lowest, height);
@@ -318,7 +322,7 @@ TEST_F(WorldServices, SetWorldKeepsTheSolverSettings)
   request.settings.exact_position_correction = !before_.settings.exact_position_correction;
   const SetWorld set = call<SetWorld>("set_world", request);
   ASSERT_TRUE(set.response.success) << set.response.message;
-  for (const WorldConfig& shown : {set.response.state.settings, get_world().settings, step(1).state.settings})
+  for (const WorldConfig& shown : {set.response.state.settings, get_world().settings, step(1).state.at(0).settings})
   {
     EXPECT_EQ(shown.solver_mode, WorldConfig::SOLVER_EXACT);
     EXPECT_EQ(shown.position_iterations, request.settings.position_iterations);
@@ -354,17 +358,17 @@ TEST_F(WorldServices, ExactSolverCarriesAMillionToOneStack)
   for (int check = 0; check < kChecks; ++check)
   {
     const StepWorld::Response response = step(kFramesPerCheck);
-    ASSERT_EQ(response.state.settings.solver_mode, WorldConfig::SOLVER_EXACT);
-    const BodyMsg* heavy = dynamic_by_mass(response.state, true);
-    const BodyMsg* light = dynamic_by_mass(response.state, false);
+    ASSERT_EQ(response.state.at(0).settings.solver_mode, WorldConfig::SOLVER_EXACT);
+    const BodyMsg* heavy = dynamic_by_mass(response.state.at(0), true);
+    const BodyMsg* light = dynamic_by_mass(response.state.at(0), false);
     ASSERT_TRUE(heavy != nullptr && light != nullptr && heavy != light);
     ASSERT_NEAR(heavy->mass / light->mass, kMassRatio, 1e-6 * kMassRatio);
-    const double allowed = kSlops * response.state.settings.slop;
+    const double allowed = kSlops * response.state.at(0).settings.slop;
     const double depth = vertical_extent(*light).high - vertical_extent(*heavy).low;
-    EXPECT_LT(depth, allowed) << "the heavy box sank into the light one at frame " << response.state.frame_count;
+    EXPECT_LT(depth, allowed) << "the heavy box sank into the light one at frame " << response.state.at(0).frame_count;
     // Still resting on it, not thrown off by an overcorrection.
-    EXPECT_GT(depth, -allowed) << "the heavy box left the light one at frame " << response.state.frame_count;
-    const BodyMsg* ground = find_body(response.state, set.response.state.bodies.front().id);
+    EXPECT_GT(depth, -allowed) << "the heavy box left the light one at frame " << response.state.at(0).frame_count;
+    const BodyMsg* ground = find_body(response.state.at(0), set.response.state.bodies.front().id);
     ASSERT_TRUE(ground != nullptr && ground->type == BodyMsg::STATIC);
     EXPECT_LT(vertical_extent(*ground).high - vertical_extent(*light).low, allowed)
         << "the light box sank into the ground";
@@ -392,7 +396,7 @@ TEST_F(WorldServices, OverflowingStepIsRefusedAndTheWorldKept)
   step_request.frames = 3;
   const StepWorld stepped = call<StepWorld>("step_world", step_request);
   expect_rejected(stepped.response, "overflowed to a non-finite state");
-  EXPECT_TRUE(contains(stepped.response.message, "step failed")) << stepped.response.message;
+  EXPECT_TRUE(contains(stepped.response.message, "step_world failed")) << stepped.response.message;
 }
 
 TEST_F(WorldServices, NonFiniteNumbers)

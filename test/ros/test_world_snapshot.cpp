@@ -318,10 +318,11 @@ protected:
   {
     StepWorld::Request request;
     request.frames = frames;
+    request.return_state = true;
     StepWorld::Response response;
     service.step(request, response);
     EXPECT_TRUE(response.success) << response.message;
-    return response.state;
+    return response.state.empty() ? WorldState() : response.state.front();
   }
 
   /// A restored world has not stepped yet, so no contacts or effects: the

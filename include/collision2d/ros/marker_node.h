@@ -1,11 +1,15 @@
 // The marker node: world_state in, rviz markers out, at most ~max_rate arrays
-// per second however fast the world steps.
+// per second however fast the world steps; with ~draggable (default true) it
+// also serves interactive markers that drag bodies (body_dragger.h).
 #pragma once
+
+#include <memory>
 
 #include <ros/ros.h>
 
 #include "collision2d/ros/messages.h"
 
+#include "collision2d/ros/body_dragger.h"
 #include "collision2d/ros/markers.h"
 
 namespace collision2d
@@ -33,6 +37,7 @@ private:
   ::ros::Subscriber subscriber_;
   ::ros::Publisher publisher_;
   ::ros::WallTimer timer_;
+  std::unique_ptr<BodyDragger> dragger_;  ///< null with ~draggable false
   /// Newest state not yet drawn: states in between are skipped, the last one
   /// never is.
   WorldState::ConstPtr pending_;

@@ -52,6 +52,7 @@
 #include <collision2d/RemoveBody.h>
 #include <collision2d/ResolveContacts.h>
 #include <collision2d/SaveWorld.h>
+#include <collision2d/SetBodyState.h>
 #include <collision2d/SetWorld.h>
 #include <collision2d/StepWorld.h>
 

@@ -2,9 +2,14 @@
 // topic, the free-running timer and dynamic_reconfigure around a WorldService
 // and the stateless ResolveContacts handler.
 //
+// Logging: rosconsole loggers ros.collision2d.<name>: "node" (start-up),
+// "requests" (a WARN for every refused request or setting), "world" (loads,
+// resets, edits, settings changes), "step" (DEBUG, every step).
+//
 // Threads: an AsyncSpinner with ~threads threads serves the callbacks, so
 // ResolveContacts calls run in parallel (they share nothing but a copy of the
-// node's solver settings); world changes serialize on the WorldService mutex.
+// node's solver settings); world changes serialize on the WorldService mutex,
+// and reads (get_world) take only the committed state, never waiting for a step.
 #pragma once
 
 #include <cstddef>
@@ -20,6 +25,7 @@
 #include <collision2d/Collision2dConfig.h>
 #include "collision2d/ros/messages.h"
 
+#include "collision2d/ros/world_outputs.h"
 #include "collision2d/ros/world_service.h"
 
 namespace collision2d
@@ -44,6 +50,8 @@ private:
   void advertise_services();
   void start_reconfigure();
   void start_timer();
+  /// The INFO line at start: scene, bodies, main settings, outputs, services.
+  void log_start_summary() const;
   void on_reconfigure(Collision2dConfig& config, std::uint32_t level);
   /// Shows the world's settings in dynamic_reconfigure after the world was replaced.
   void show_world_settings();
@@ -53,12 +61,12 @@ private:
   ::ros::NodeHandle private_handle_;
   int threads_;
   double rate_;
+  WorldOutputs outputs_;
   WorldService world_;
 
   mutable std::mutex solver_mutex_;  ///< guards only the copy of solver_settings_
   SolverSettings solver_settings_;
 
-  ::ros::Publisher state_publisher_;
   std::vector<::ros::ServiceServer> services_;
   ::ros::WallTimer timer_;
 

@@ -3,6 +3,11 @@
 // failed request leaves the world exactly as it was. Uses the message types
 // but no node handle, so it is unit-testable without a master.
 //
+// Reads never wait for a step: each change also stores the resulting
+// WorldState (the committed state) under its own small mutex, and GetWorld,
+// state() and settings() read that, while steps and edits serialize on the
+// world's mutex.
+//
 // Snapshots: SaveWorld/LoadWorld write and read world_snapshot.h files, and
 // with an autosave period the service saves after every change and after
 // each step that completes a multiple of the period, so a restarted node
@@ -12,9 +17,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <map>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
+
+#include <ros/time.h>
 
 #include "collision2d/ros/messages.h"
 // After messages.h: these reach Body only through WorldState, already read.
@@ -44,10 +53,15 @@ public:
   /// Called with the new state after every change (steps included), while
   /// the lock is held, so listeners see the states in order.
   using ChangeListener = std::function<void(const WorldState&)>;
+  /// The header.stamp of the state after a change, given the world's clock
+  /// then; called in the order of the changes. Default: ::ros::Time::now().
+  using StampSource = std::function<::ros::Time(const WorldClock&)>;
 
   explicit WorldService(WorldServiceOptions options);
 
   void set_change_listener(ChangeListener listener);
+  /// Also restamps the current state, so set it before the first listener.
+  void set_stamp_source(StampSource stamp);
   const WorldServiceOptions& options() const { return options_; }
 
   // Service handlers: never throw; bad input gives success = false and a
@@ -58,6 +72,9 @@ public:
   void get_world(GetWorld::Response& response) const;
   void add_body(const AddBody::Request& request, AddBody::Response& response);
   void remove_body(const RemoveBody::Request& request, RemoveBody::Response& response);
+  /// One body's pose and twist; with hold it moves as KINEMATIC until a call
+  /// without hold (world_service_bodies.cpp).
+  void set_body_state(const SetBodyState::Request& request, SetBodyState::Response& response);
   /// Back to the world as the last LoadScene, SetWorld or LoadWorld (or the start) made it.
   void reset(std_srvs::Trigger::Response& response);
   void save_world(const SaveWorld::Request& request, SaveWorld::Response& response);
@@ -67,6 +84,7 @@ public:
   void step_frame();
   /// Throws InvalidRequest naming the field; the world is unchanged then.
   void set_settings(const WorldSettings& settings);
+  /// The committed settings and state: never wait for a step in progress.
   WorldSettings settings() const;
   WorldState state() const;
   /// Shipped scene names: files in scenes_dir, then the built-in standard
@@ -101,6 +119,9 @@ private:
   void commit(World&& world, const std::string& scene, Change change);
   StepReport step_locked(int frames, double dt);
   WorldState state_locked() const;
+  /// The state last committed; shared, so readers copy it outside any lock.
+  std::shared_ptr<const WorldState> committed() const;
+
   /// Frames and time since the scene was loaded, across restores.
   WorldClock clock_locked() const;
   std::string snapshot_path_or_default(const std::string& path) const;
@@ -121,6 +142,13 @@ private:
   std::string reset_scene_;
   WorldClock reset_origin_;
   std::uint64_t last_autosave_frame_ = 0;
+  /// Own type of each body held as kinematic by set_body_state.
+  std::map<BodyId, BodyType> held_;
+  StampSource stamp_;
+
+  mutable std::mutex committed_mutex_;  ///< guards only the two below, never held long
+  std::shared_ptr<const WorldState> committed_;
+  WorldSettings committed_settings_;
 };
 
 }  // namespace ros_interface

@@ -137,6 +137,9 @@ public:
   const Material& material(BodyId id) const;
   /// Sets the pose and velocity of a body between frames.
   void set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega);
+  /// Makes a body dynamic, static or kinematic between frames (a static one
+  /// loses its velocity); it wakes, and its contacts keep their impulses.
+  void set_body_type(BodyId id, BodyType type);
   /// Ids in ascending order.
   std::vector<BodyId> body_ids() const;
   std::size_t body_count() const;

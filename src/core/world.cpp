@@ -116,6 +116,15 @@ void World::set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity
   impl_->wake(i);
 }
 
+void World::set_body_type(BodyId id, BodyType type)
+{
+  const std::size_t i = impl_->index_of(id);
+  Body& b = impl_->bodies_[i];
+  b.set_type(type);
+  settle_static(b);
+  impl_->wake(i);
+}
+
 std::vector<BodyId> World::body_ids() const { return impl_->ids_; }
 
 std::size_t World::body_count() const { return impl_->bodies_.size(); }

@@ -218,6 +218,11 @@ void WorldService::commit(World&& world, const std::string& scene, Change change
 {
   world_ = std::move(world);
   scene_ = scene;
+  after_change(change);
+}
+
+void WorldService::after_change(Change change)
+{
   if (change == Change::NewWorld)
   {
     reset_world_ = world_;
@@ -240,30 +245,36 @@ void WorldService::commit(World&& world, const std::string& scene, Change change
 
 StepReport WorldService::step_locked(int frames, double dt)
 {
-  World next = world_;
-  const bool override_dt = dt > 0.0;
-  WorldSettings settings = next.settings();
-  if (override_dt)
+  // World::step is all-or-nothing (a failed step puts the world back), so the
+  // world steps in place: only the dt a request overrides is set back.
+  const WorldSettings settings = world_.settings();
+  if (dt > 0.0)
   {
-    settings.dt = dt;
+    WorldSettings with_dt = settings;
+    with_dt.dt = dt;
     try
     {
-      next.set_settings(settings);
+      world_.set_settings(with_dt);
     }
     catch (const std::invalid_argument& e)
     {
       reject("request", e.what());
     }
   }
-  const StepReport report = next.step(frames);
-  if (override_dt)
+  StepReport report;
+  try
   {
-    // The dt of a request holds for that request only.
-    settings.dt = world_.settings().dt;
-    next.set_settings(settings);
+    report = world_.step(frames);
   }
+  catch (...)
+  {
+    world_.set_settings(settings);
+    throw;
+  }
+  // The dt of a request holds for that request only.
+  world_.set_settings(settings);
   active_ = report.active;
-  commit(std::move(next), scene_, Change::Step);
+  after_change(Change::Step);
   ROS_DEBUG_NAMED(kStepLogger, "stepped %d frames to frame %llu: %zu contacts, max penetration %s m, %zu asleep",
                   frames, static_cast<unsigned long long>(clock_locked().frames), world_.contacts().size(),
                   format_number(report.max_penetration).c_str(), static_cast<std::size_t>(report.sleeping_bodies));

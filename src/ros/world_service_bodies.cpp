@@ -15,26 +15,6 @@ namespace ros_interface
 {
 namespace
 {
-/// `world` with body `id` of type `type`, rebuilt through a snapshot (World
-/// has no call that changes a body's type; ids stay, the warm-starting cache
-/// does not). The rebuilt world counts from zero, so its frames and time move
-/// into `origin`.
-World with_body_type(const World& world, BodyId id, BodyType type, WorldClock& origin)
-{
-  WorldSnapshot snapshot = take_snapshot(world, "", WorldClock{});
-  for (std::size_t i = 0; i < snapshot.ids.size(); ++i)
-  {
-    if (snapshot.ids[i] == id)
-    {
-      snapshot.scene.bodies[i].body.set_type(type);
-    }
-  }
-  World rebuilt = restore_world(snapshot);
-  origin.frames += world.frame_count();
-  origin.time += world.time();
-  return rebuilt;
-}
-
 const char* type_name(BodyType type)
 {
   switch (type)
@@ -77,7 +57,6 @@ void WorldService::set_body_state(const SetBodyState::Request& request, SetBodyS
     }
     // Everything is built on copies, installed only when all of it worked.
     World next = world_;
-    WorldClock origin = origin_;
     std::map<BodyId, BodyType> held = held_;
     const auto was_held = held.find(request.id);
     const bool held_before = was_held != held.end();
@@ -85,11 +64,11 @@ void WorldService::set_body_state(const SetBodyState::Request& request, SetBodyS
     if (request.hold && was_held == held.end() && type != BodyType::Kinematic)
     {
       held[request.id] = type;
-      next = with_body_type(world_, request.id, BodyType::Kinematic, origin);
+      next.set_body_type(request.id, BodyType::Kinematic);
     }
     else if (!request.hold && was_held != held.end())
     {
-      next = with_body_type(world_, request.id, was_held->second, origin);
+      next.set_body_type(request.id, was_held->second);
       held.erase(was_held);
     }
     try
@@ -101,7 +80,6 @@ void WorldService::set_body_state(const SetBodyState::Request& request, SetBodyS
     {
       reject(where, e.what());
     }
-    origin_ = origin;
     held_ = std::move(held);
     commit(std::move(next), scene_, Change::Edit);
     response.success = true;

@@ -193,3 +193,27 @@ TEST(WorldApi, KinematicBodiesKeepTheirVelocity)
 
 }  // namespace
 }  // namespace collision2d
+
+namespace collision2d
+{
+namespace
+{
+TEST(WorldApi, SetBodyTypeHoldsAndReleasesABody)
+{
+  World world;
+  const BodyId ball = world.add_body(Body(2.0, 0.5, {0.0, 5.0}, {1.0, 0.0}));
+  world.set_body_type(ball, BodyType::Kinematic);
+  world.step(60);
+  // Kinematic: no gravity, it keeps the velocity it was given.
+  EXPECT_DOUBLE_EQ(world.body(ball).velocity().y, 0.0);
+  EXPECT_NEAR(world.body(ball).position().x, 1.0, 1e-12);
+  world.set_body_type(ball, BodyType::Dynamic);
+  world.step();
+  EXPECT_LT(world.body(ball).velocity().y, 0.0) << "released, it falls";
+  world.set_body_type(ball, BodyType::Static);
+  EXPECT_EQ(world.body(ball).velocity(), (Vec2{0.0, 0.0})) << "a static body keeps no velocity";
+  EXPECT_THROW(world.set_body_type(99, BodyType::Static), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace collision2d

@@ -117,6 +117,8 @@ private:
   /// Installs `world` (the caller holds the lock and has set origin_), tells
   /// the listener and autosaves.
   void commit(World&& world, const std::string& scene, Change change);
+  /// What every change does after it: publish and keep the committed state, autosave.
+  void after_change(Change change);
   StepReport step_locked(int frames, double dt);
   WorldState state_locked() const;
   /// The state last committed; shared, so readers copy it outside any lock.

@@ -49,10 +49,11 @@ enum class FeatureKind : std::uint32_t
 
 /// The second polygon's face becomes the reference only when it is better by
 /// more than this fraction of the first one's separation plus this fraction of
-/// the pair's size (m/m): near-ties keep the first polygon's face, so resting
-/// manifolds do not flicker between the two faces from round-off.
+/// the pair's size (m/m). A box resting on a box has two equally good faces;
+/// a slight tilt must not swap them, or the contact's features change and
+/// warm starting (which matches by feature) starts the contact cold.
 constexpr double kReferenceRelative = 1e-3;
-constexpr double kReferenceAbsolute = 1e-6;
+constexpr double kReferenceHysteresis = 2e-3;
 
 std::uint32_t pack_feature(FeatureKind kind, bool second_is_reference, std::size_t reference,
                            std::size_t incident, int slot)
@@ -339,7 +340,7 @@ bool polygon_polygon(const Body& a, const Body& b, Manifold& m, double touch_tol
   {
     return false;
   }
-  const double bias = kReferenceRelative * std::abs(query_a.separation) + kReferenceAbsolute * (a.radius() + b.radius());
+  const double bias = kReferenceRelative * std::abs(query_a.separation) + kReferenceHysteresis * (a.radius() + b.radius());
   const bool b_is_reference = query_b.separation > query_a.separation + bias;
   const Body& reference = b_is_reference ? b : a;
   const Body& incident = b_is_reference ? a : b;

@@ -13,7 +13,6 @@ namespace
 /// (dimensionless); below it the rows act almost as one (no rotation,
 /// coincident arms) and are solved one by one instead.
 constexpr double kBlockConditionLimit = 1e-6;
-constexpr double kPi = 3.14159265358979323846;
 
 /// Solves k x = rhs (3x3) by Cramer's rule; false when k is near singular.
 bool solve3(const double k[3][3], const double rhs[3], double x[3])
@@ -54,19 +53,6 @@ Vec2 midpoint_arm_a(const ContactPoint& first, const ContactPoint& second) { ret
 Vec2 midpoint_arm_b(const ContactPoint& first, const ContactPoint& second) { return 0.5 * (first.r_b + second.r_b); }
 
 }  // namespace
-
-Softness make_softness(double hertz, double damping_ratio, double h)
-{
-  if (hertz == 0.0)
-  {
-    return Softness{0.0, 1.0, 0.0};  // rigid
-  }
-  const double omega = 2.0 * kPi * hertz;
-  const double a1 = 2.0 * damping_ratio + h * omega;
-  const double a2 = h * omega * a1;
-  const double a3 = 1.0 / (1.0 + a2);
-  return Softness{omega / a1, a2 * a3, a3};
-}
 
 void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold)
 {
@@ -263,101 +249,6 @@ bool solve_stick_block(ContactPoint& first, ContactPoint& second, std::vector<Bo
   first.sliding = false;
   second.sliding = false;
   return true;
-}
-
-double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>& state)
-{
-  const BodyVelocity& a = state[p.a];
-  const BodyVelocity& b = state[p.b];
-  const Vec2 turned_a = rotate(p.r_a, a.turned_cos, a.turned_sin);
-  const Vec2 turned_b = rotate(p.r_b, b.turned_cos, b.turned_sin);
-  return p.base_separation + dot(b.moved - a.moved + turned_b - turned_a, p.normal);
-}
-
-namespace
-{
-/// The soft terms of one point now: its push-out bias (m/s) and mass scale.
-/// A speculative point (gap > 0) may approach by its gap within the substep.
-void soft_terms(const ContactPoint& p, const std::vector<BodyVelocity>& state, double inv_h, double max_push,
-                bool use_bias, double& bias, double& mass_scale)
-{
-  const double s = current_separation(p, state);
-  bias = 0.0;
-  mass_scale = 1.0;
-  if (s > 0.0)
-  {
-    bias = s * inv_h;
-  }
-  else if (use_bias)
-  {
-    bias = std::max(p.softness.mass_scale * p.softness.bias_rate * s, -max_push);
-    mass_scale = p.softness.mass_scale;
-  }
-}
-
-void set_soft_impulse(ContactPoint& p, double total, std::vector<BodyVelocity>& state)
-{
-  const double applied = total - p.lambda_n;
-  p.lambda_n = total;
-  p.frame_impulse += applied;
-  apply_impulse(p, applied * p.normal, state);
-}
-}  // namespace
-
-// A soft update is mass_scale times the rigid update toward the speed
-// -bias / mass_scale: lambda' = ms max(0, lambda - (vn + bias / ms) / k).
-void solve_soft_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias)
-{
-  double bias = 0.0;
-  double mass_scale = 1.0;
-  soft_terms(p, state, inv_h, max_push, use_bias, bias, mass_scale);
-  const double vn = dot(relative_velocity(p, state), p.normal);
-  const double rigid = p.lambda_n - (vn + bias / mass_scale) * p.normal_mass;
-  set_soft_impulse(p, mass_scale * std::max(0.0, rigid), state);
-}
-
-void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
-                             double inv_h, double max_push, bool use_bias)
-{
-  const double k11 = first.k_n;
-  const double k22 = second.k_n;
-  const double k12 = pair_coupling(first, second);
-  if (!block_solvable(k11, k12, k22))
-  {
-    solve_soft_normal(first, state, inv_h, max_push, use_bias);
-    solve_soft_normal(second, state, inv_h, max_push, use_bias);
-    return;
-  }
-  double bias1 = 0.0;
-  double bias2 = 0.0;
-  double scale1 = 1.0;
-  double scale2 = 1.0;
-  soft_terms(first, state, inv_h, max_push, use_bias, bias1, scale1);
-  soft_terms(second, state, inv_h, max_push, use_bias, bias2, scale2);
-  const double x1 = first.lambda_n;
-  const double x2 = second.lambda_n;
-  const double q1 = dot(relative_velocity(first, state), first.normal) + bias1 / scale1 - (k11 * x1 + k12 * x2);
-  const double q2 = dot(relative_velocity(second, state), first.normal) + bias2 / scale2 - (k12 * x1 + k22 * x2);
-  double y1 = 0.0;
-  double y2 = 0.0;
-  solve_lcp2(k11, k12, k22, q1, q2, y1, y2);
-  set_soft_impulse(first, scale1 * y1, state);
-  set_soft_impulse(second, scale2 * y2, state);
-}
-
-double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
-{
-  if (p.target <= 0.0 || p.frame_impulse <= 0.0)
-  {
-    return 0.0;  // no bounce asked for, or a speculative point that never touched
-  }
-  const double vn = dot(relative_velocity(p, state), p.normal);
-  const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass);
-  const double applied = total - p.lambda_n;
-  p.lambda_n = total;
-  p.frame_impulse += applied;
-  apply_impulse(p, applied * p.normal, state);
-  return p.lambda_n > 0.0 ? std::abs(vn - p.target) : std::max(0.0, p.target - vn);
 }
 
 double normal_residual(const ContactPoint& p, const std::vector<BodyVelocity>& state)

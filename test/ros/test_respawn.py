@@ -73,11 +73,15 @@ class Respawn(unittest.TestCase):
         removed = self.remove_body(id=0)
         self.assertTrue(removed.success, removed.message)
         last_saved = None
+        after_saved = None  # the state one call after the last save
         for _ in range(CALLS):
             response = self.step(frames=FRAMES_PER_CALL, dt=0.0, return_state=True)
             self.assertTrue(response.success, response.message)
+            if last_saved is not None and after_saved is None:
+                after_saved = response.state[0]
             if response.frame_count % self.period == 0:
                 last_saved = response.state[0]
+                after_saved = None
         self.assertIsNotNone(last_saved)
         before_kill = self.get_world().state
         self.assertEqual(before_kill.frame_count, CALLS * FRAMES_PER_CALL)
@@ -98,10 +102,13 @@ class Respawn(unittest.TestCase):
         self.assertNotIn(0, [b.id for b in restored.bodies])
         self.assertEqual(saved_part(restored), saved_part(last_saved))
 
-        # The respawned world steps on from the restored frame.
-        response = self.step(frames=1, dt=0.0)
+        # The respawned world steps on from the restored frame exactly as the
+        # killed one did: the snapshot kept the warm-start impulses and sleep.
+        self.assertIsNotNone(after_saved)
+        response = self.step(frames=FRAMES_PER_CALL, dt=0.0, return_state=True)
         self.assertTrue(response.success, response.message)
-        self.assertEqual(response.frame_count, last_saved.frame_count + 1)
+        self.assertEqual(response.frame_count, last_saved.frame_count + FRAMES_PER_CALL)
+        self.assertEqual(response.state[0].bodies, after_saved.bodies)
 
 
 if __name__ == "__main__":

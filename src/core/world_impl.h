@@ -52,7 +52,7 @@ struct WorldImpl
   // world_step.cpp: the step, top-down.
   StepReport step(int frames);
   void step_frame(StepReport& report);
-  void fx2d_frame(StepReport& report);
+  void fx2d_frame(StepContext& ctx, StepReport& report);
   void substep(StepContext& ctx, StepReport& report);
   void kick(const StepContext& ctx);
   void advance(StepContext& ctx, StepReport& report);
@@ -64,7 +64,7 @@ struct WorldImpl
   void restore_motion();
 
   // world_soft_step.cpp: the soft step, top-down.
-  void soft_frame(StepReport& report);
+  void soft_frame(StepContext& ctx, StepReport& report);
   void prepare_soft_points(const StepContext& ctx);
   void integrate_velocities(const StepContext& ctx);
   void solve_soft(const StepContext& ctx, bool use_bias);

@@ -30,15 +30,8 @@ constexpr int kMaxRestitutionPasses = 64;
 
 }  // namespace
 
-void WorldImpl::soft_frame(StepReport& report)
+void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
 {
-  StepContext ctx = select_effects();                     // world_effects.cpp
-  if (!ctx.effects.sleeping)
-  {
-    asleep_.assign(bodies_.size(), false);
-  }
-  ctx.h = settings_.dt / settings_.substeps;
-  ctx.inv_h = 1.0 / ctx.h;
   ctx.first = true;
   ctx.warm = ctx.warm_available;
   // 1. Collide once: contacts within the margin, impulses from the last frame.
@@ -64,14 +57,6 @@ void WorldImpl::soft_frame(StepReport& report)
   report.contact_count = points_.size();
   publish_contacts();
   cache_h_ = ctx.h;
-  if (ctx.effects.sleeping)
-  {
-    update_sleep();                                       // world_sleep.cpp
-  }
-  time_ += settings_.dt;
-  ++frame_count_;
-  ++report.frames;
-  report.active |= ctx.effects;
 }
 
 void WorldImpl::prepare_soft_points(const StepContext& ctx)

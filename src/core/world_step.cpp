@@ -59,19 +59,6 @@ StepReport WorldImpl::step(int frames)
 
 void WorldImpl::step_frame(StepReport& report)
 {
-  // The exact mode solves islands on the Fx2D step's per-substep contacts.
-  if (settings_.soft_step && settings_.solver_mode == SolverMode::Iterative)
-  {
-    soft_frame(report);                                   // world_soft_step.cpp
-  }
-  else
-  {
-    fx2d_frame(report);
-  }
-}
-
-void WorldImpl::fx2d_frame(StepReport& report)
-{
   StepContext ctx = select_effects();                     // world_effects.cpp
   if (!ctx.effects.sleeping)
   {
@@ -79,6 +66,27 @@ void WorldImpl::fx2d_frame(StepReport& report)
   }
   ctx.h = settings_.dt / settings_.substeps;
   ctx.inv_h = 1.0 / ctx.h;
+  // The exact mode solves islands on the Fx2D step's per-substep contacts.
+  if (settings_.soft_step && settings_.solver_mode == SolverMode::Iterative)
+  {
+    soft_frame(ctx, report);                              // world_soft_step.cpp
+  }
+  else
+  {
+    fx2d_frame(ctx, report);
+  }
+  if (ctx.effects.sleeping)
+  {
+    update_sleep();                                       // world_sleep.cpp
+  }
+  time_ += settings_.dt;
+  ++frame_count_;
+  ++report.frames;
+  report.active |= ctx.effects;
+}
+
+void WorldImpl::fx2d_frame(StepContext& ctx, StepReport& report)
+{
   for (int k = 0; k < settings_.substeps; ++k)
   {
     // The previous substep's contacts become the cache that warm starting and
@@ -90,14 +98,6 @@ void WorldImpl::fx2d_frame(StepReport& report)
     publish_contacts();                                   // world_contacts.cpp
     cache_h_ = ctx.h;
   }
-  if (ctx.effects.sleeping)
-  {
-    update_sleep();                                       // world_sleep.cpp
-  }
-  time_ += settings_.dt;
-  ++frame_count_;
-  ++report.frames;
-  report.active |= ctx.effects;
 }
 
 void WorldImpl::substep(StepContext& ctx, StepReport& report)

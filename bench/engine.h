@@ -64,7 +64,13 @@ std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineConfig& conf
 /// Whether make_engine can build this kind in this build.
 bool engine_available(EngineKind kind);
 
+/// Every engine kind, in the order the benchmarks list them.
+constexpr EngineKind kAllEngines[] = {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk,
+                                      EngineKind::Box2dV3};
+
 std::string engine_name(EngineKind kind);
+/// The kind engine_name gives `name`; false for any other name.
+bool engine_from_name(const std::string& name, EngineKind& kind);
 std::string variant_name(PeerVariant variant);
 
 }  // namespace bench

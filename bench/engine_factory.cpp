@@ -85,6 +85,19 @@ std::string engine_name(EngineKind kind)
   return "?";
 }
 
+bool engine_from_name(const std::string& name, EngineKind& kind)
+{
+  for (EngineKind k : kAllEngines)
+  {
+    if (engine_name(k) == name)
+    {
+      kind = k;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::string variant_name(PeerVariant variant)
 {
   switch (variant)

@@ -47,14 +47,12 @@ struct Arguments
 
 EngineKind parse_engine(const std::string& name)
 {
-  for (EngineKind kind : {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk, EngineKind::Box2dV3})
+  EngineKind kind = EngineKind::Collision2d;
+  if (!engine_from_name(name, kind))
   {
-    if (engine_name(kind) == name)
-    {
-      return kind;
-    }
+    usage("unknown engine '" + name + "'");
   }
-  usage("unknown engine '" + name + "'");
+  return kind;
 }
 
 Arguments parse_arguments(int argc, char** argv)

@@ -42,9 +42,6 @@ constexpr double kDefaultSeconds = 10.0;
 constexpr double kDefaultTimingSeconds = 1.0;  // s of simulation per timed run
 constexpr int kDefaultRepetitions = 5;
 
-const EngineKind kAllEngines[] = {EngineKind::Collision2d, EngineKind::Box2d, EngineKind::Chipmunk,
-                                  EngineKind::Box2dV3};
-
 struct Arguments
 {
   std::vector<double> seconds{kDefaultSeconds};  ///< checkpoints, ascending
@@ -101,14 +98,12 @@ std::vector<double> parse_seconds(const std::string& text)
 
 EngineKind parse_engine(const std::string& name)
 {
-  for (EngineKind kind : kAllEngines)
+  EngineKind kind = EngineKind::Collision2d;
+  if (!engine_from_name(name, kind))
   {
-    if (engine_name(kind) == name)
-    {
-      return kind;
-    }
+    usage("unknown engine '" + name + "'");
   }
-  usage("unknown engine '" + name + "'");
+  return kind;
 }
 
 Arguments parse_arguments(int argc, char** argv)

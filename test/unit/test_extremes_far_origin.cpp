@@ -16,6 +16,7 @@
 #include "collision2d/scenes/scene_parts.h"
 #include "extremes_support.h"
 #include "solver_test_support.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
@@ -167,16 +168,6 @@ double stack_drift(const World& world, const std::vector<Vec2>& settled, Vec2 ba
   return worst;
 }
 
-std::vector<Vec2> positions(const World& world)
-{
-  std::vector<Vec2> p;
-  for (BodyId id : world.body_ids())
-  {
-    p.push_back(world.body(id).position());
-  }
-  return p;
-}
-
 TEST(ExtremesFarOrigin, StackBehavesAsAtTheOrigin)
 {
   World near = make_world(column_at({0.0, 0.0}));
@@ -184,8 +175,8 @@ TEST(ExtremesFarOrigin, StackBehavesAsAtTheOrigin)
   constexpr int kSettleFrames = 60;
   near.step(kSettleFrames);
   far.step(kSettleFrames);
-  const std::vector<Vec2> near_settled = positions(near);
-  const std::vector<Vec2> far_settled = positions(far);
+  const std::vector<Vec2> near_settled = test::positions(near);
+  const std::vector<Vec2> far_settled = test::positions(far);
   const long frames = test::sized(600, 120, "far-origin stack frames");
   for (long f = 0; f < frames; ++f)
   {

@@ -106,36 +106,15 @@ TEST(WorldSoftStep, InclineSticksBelowAndSlidesAboveTheFrictionAngle)
   EXPECT_NEAR(acceleration, expected, 1e-6);
 }
 
-/// Largest displacement of a dynamic body between the two calls.
-double drift(const World& world, const std::vector<Vec2>& from)
-{
-  double worst = 0.0;
-  const std::vector<BodyId> ids = world.body_ids();
-  for (std::size_t i = 0; i < ids.size(); ++i)
-  {
-    if (world.body(ids[i]).type() == BodyType::Dynamic)
-      worst = std::max(worst, std::sqrt(length_sq(world.body(ids[i]).position() - from[i])));
-  }
-  return worst;
-}
-
-std::vector<Vec2> positions(const World& world)
-{
-  std::vector<Vec2> out;
-  for (BodyId id : world.body_ids())
-    out.push_back(world.body(id).position());
-  return out;
-}
-
 TEST(WorldSoftStep, TwentyBoxColumnStands)
 {
   World world = soft_world(scenes::column(20));
   world.step(60);
-  const std::vector<Vec2> settled = positions(world);
+  const std::vector<Vec2> settled = test::positions(world);
   double deepest = 0.0;
   for (int frame = 0; frame < 540; ++frame)
     deepest = std::max(deepest, world.step().max_penetration);
-  const double moved = drift(world, settled);
+  const double moved = test::largest_move(world, settled, test::positions(world));
   std::printf("column: drift 1 s -> 10 s %.3g m, deepest %.3g m\n", moved, deepest);
   EXPECT_LT(moved, 1e-3);
   EXPECT_LT(deepest, 0.02) << "the contacts' springs carry the column's weight";

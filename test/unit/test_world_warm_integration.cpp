@@ -21,31 +21,6 @@ namespace
 {
 constexpr int kFramesPerSecond = 60;
 
-std::vector<Vec2> positions(const World& world)
-{
-  std::vector<Vec2> out;
-  for (BodyId id : world.body_ids())
-  {
-    out.push_back(world.body(id).position());
-  }
-  return out;
-}
-
-/// Largest displacement of a dynamic body between two snapshots (m).
-double largest_move(const World& world, const std::vector<Vec2>& from, const std::vector<Vec2>& to)
-{
-  const std::vector<BodyId> ids = world.body_ids();
-  double worst = 0.0;
-  for (std::size_t i = 0; i < ids.size(); ++i)
-  {
-    if (world.body(ids[i]).type() == BodyType::Dynamic)
-    {
-      worst = std::max(worst, length(to[i] - from[i]));
-    }
-  }
-  return worst;
-}
-
 /// Drift of a stack from `settle_s` to `end_s` with the option on.
 double stack_drift(Scene scene, int substeps, int iterations, double settle_s, double end_s)
 {
@@ -54,9 +29,9 @@ double stack_drift(Scene scene, int substeps, int iterations, double settle_s, d
   scene.settings.warm_start_before_integration = true;
   World world = make_world(scene);
   world.step(static_cast<int>(settle_s * kFramesPerSecond));
-  const std::vector<Vec2> settled = positions(world);
+  const std::vector<Vec2> settled = test::positions(world);
   world.step(static_cast<int>((end_s - settle_s) * kFramesPerSecond));
-  const double drift = largest_move(world, settled, positions(world));
+  const double drift = test::largest_move(world, settled, test::positions(world));
   std::printf("%s %dx%d, warm before integration: drift %.3g m from %g s to %g s\n", scene.name.c_str(), substeps,
               iterations, drift, settle_s, end_s);
   return drift;

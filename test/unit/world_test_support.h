@@ -2,7 +2,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <vector>
 
 #include "collision2d/world.h"
 
@@ -32,6 +34,33 @@ inline double first_rebound_apex(World& world, BodyId id, int max_frames)
     }
   }
   return apex;
+}
+
+/// Every body's position, in body_ids() order.
+inline std::vector<Vec2> positions(const World& world)
+{
+  std::vector<Vec2> out;
+  for (BodyId id : world.body_ids())
+  {
+    out.push_back(world.body(id).position());
+  }
+  return out;
+}
+
+/// Largest displacement of a dynamic body between two positions() of the
+/// same bodies (m).
+inline double largest_move(const World& world, const std::vector<Vec2>& from, const std::vector<Vec2>& to)
+{
+  const std::vector<BodyId> ids = world.body_ids();
+  double worst = 0.0;
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    if (world.body(ids[i]).type() == BodyType::Dynamic)
+    {
+      worst = std::max(worst, length(to[i] - from[i]));
+    }
+  }
+  return worst;
 }
 
 }  // namespace test

@@ -12,16 +12,6 @@ namespace
 {
 constexpr double kMaxRestitution = 1.0;
 
-void check_pose_and_twist(const BodyMsg& msg, const std::string& where)
-{
-  require_finite(msg.pose.x, where, "pose.x");
-  require_finite(msg.pose.y, where, "pose.y");
-  require_finite(msg.pose.theta, where, "pose.theta");
-  require_finite(msg.twist.linear.x, where, "twist.linear.x");
-  require_finite(msg.twist.linear.y, where, "twist.linear.y");
-  require_finite(msg.twist.angular.z, where, "twist.angular.z");
-}
-
 BodyType body_type_from_msg(std::uint8_t type, const std::string& where)
 {
   switch (type)
@@ -81,6 +71,17 @@ Body build_body(const BodyMsg& msg, const std::string& where)
 
 }  // namespace
 
+void check_pose_and_twist(const geometry_msgs::Pose2D& pose, const geometry_msgs::Twist& twist,
+                          const std::string& where)
+{
+  require_finite(pose.x, where, "pose.x");
+  require_finite(pose.y, where, "pose.y");
+  require_finite(pose.theta, where, "pose.theta");
+  require_finite(twist.linear.x, where, "twist.linear.x");
+  require_finite(twist.linear.y, where, "twist.linear.y");
+  require_finite(twist.angular.z, where, "twist.angular.z");
+}
+
 Material material_from_msg(const BodyMaterial& msg, const std::string& where)
 {
   require_in_range(msg.restitution, 0.0, kMaxRestitution, where, "material.restitution");
@@ -101,7 +102,7 @@ BodyMaterial material_to_msg(const Material& material)
 SceneBody scene_body_from_msg(const BodyMsg& msg, const std::string& where)
 {
   require_positive(msg.mass, where, "mass");
-  check_pose_and_twist(msg, where);
+  check_pose_and_twist(msg.pose, msg.twist, where);
   const BodyType type = body_type_from_msg(msg.type, where);
   const Material material = material_from_msg(msg.material, where);
   try

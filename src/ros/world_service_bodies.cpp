@@ -6,6 +6,7 @@
 
 #include <ros/console.h>
 
+#include "collision2d/ros/conversions.h"
 #include "collision2d/ros/validation.h"
 #include "service_reply.h"
 
@@ -35,12 +36,7 @@ void WorldService::set_body_state(const SetBodyState::Request& request, SetBodyS
 {
   serve(response, "set_body_state", [&] {
     const std::string where = "id " + std::to_string(request.id);
-    require_finite(request.pose.x, where, "pose.x");
-    require_finite(request.pose.y, where, "pose.y");
-    require_finite(request.pose.theta, where, "pose.theta");
-    require_finite(request.twist.linear.x, where, "twist.linear.x");
-    require_finite(request.twist.linear.y, where, "twist.linear.y");
-    require_finite(request.twist.angular.z, where, "twist.angular.z");
+    check_pose_and_twist(request.pose, request.twist, where);
     Lock lock(mutex_);
     if (!world_.has_body(request.id))
     {

@@ -21,6 +21,10 @@ namespace collision2d
 {
 namespace ros_interface
 {
+/// Throws InvalidRequest naming `where` and the field when a pose or twist
+/// component the interface uses is not finite.
+void check_pose_and_twist(const geometry_msgs::Pose2D& pose, const geometry_msgs::Twist& twist,
+                          const std::string& where);
 Material material_from_msg(const BodyMaterial& msg, const std::string& where);
 BodyMaterial material_to_msg(const Material& material);
 

@@ -47,11 +47,20 @@ private:
   std::uint64_t state_ = 14695981039346656037ULL;
 };
 
+/// Which of the World's two step pipelines a run pins.
+enum class Pipeline
+{
+  Fx2d,
+  Soft
+};
+
 /// Steps the scene frame by frame and hashes the state after every frame, so
 /// a difference that later heals still shows.
-std::uint64_t run_hash(const Scene& scene, const std::function<void(WorldSettings&)>& tweak, int frames)
+std::uint64_t run_hash(const Scene& scene, Pipeline pipeline, const std::function<void(WorldSettings&)>& tweak,
+                       int frames)
 {
   Scene s = scene;
+  s.settings.soft_step = pipeline == Pipeline::Soft;
   tweak(s.settings);
   World world = make_world(s);
   Hash hash;
@@ -88,6 +97,7 @@ std::uint64_t run_hash(const Scene& scene, const std::function<void(WorldSetting
 struct Golden
 {
   const char* name;
+  Pipeline pipeline;
   std::function<Scene()> scene;
   std::function<void(WorldSettings&)> tweak;
   int frames;
@@ -97,54 +107,54 @@ struct Golden
 void defaults(WorldSettings&) {}
 
 const Golden kGolden[] = {
-    {"pyramid_defaults", [] { return scenes::pyramid(10); }, defaults, 120, 0xa04f2bb62b7d82a5ULL},
-    {"pyramid_8x4", [] { return scenes::pyramid(10); },
+    {"pyramid_defaults", Pipeline::Fx2d, [] { return scenes::pyramid(10); }, defaults, 120, 0xa04f2bb62b7d82a5ULL},
+    {"pyramid_8x4", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.substeps = 8;
        s.velocity_iterations = 4;
      },
      60, 0x1a9a15c3f0dcfe8aULL},
-    {"pyramid_cold_substeps", [] { return scenes::pyramid(10); },
+    {"pyramid_cold_substeps", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) { s.warm_start_every_substep = false; }, 60, 0x90b5d91c36ba4385ULL},
-    {"pyramid_position_block", [] { return scenes::pyramid(10); },
+    {"pyramid_position_block", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.position_block = true;
        s.position_iterations = 2;
      },
      60, 0xfb1d050cde778ccdULL},
-    {"pyramid_warm_before_integration", [] { return scenes::pyramid(10); },
+    {"pyramid_warm_before_integration", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.warm_start_before_integration = true;
        s.warm_start_factor = 0.9;
      },
      60, 0x4d97804570f6a62fULL},
-    {"pyramid_exact", [] { return scenes::pyramid(5); },
+    {"pyramid_exact", Pipeline::Fx2d, [] { return scenes::pyramid(5); },
      [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x5adcc8fcb5763744ULL},
-    {"pyramid_sleeping", [] { return scenes::pyramid(10); },
+    {"pyramid_sleeping", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.sleeping = Toggle::On;
        s.sleep_time = 0.1;
      },
      150, 0xdbd82c17df00f5aaULL},
-    {"pyramid_soft_step", [] { return scenes::pyramid(10); }, [](WorldSettings& s) { s.soft_step = true; }, 120, 0x08c7a222c6faef88ULL},
-    {"column_defaults", [] { return scenes::column(20); }, defaults, 120, 0xac173e8a2b9d9916ULL},
-    {"gas_defaults", [] { return scenes::elastic_gas(200); }, defaults, 120, 0x1a7cb0f191395fe9ULL},
-    {"gas_no_toggles", [] { return scenes::elastic_gas(100); },
+    {"pyramid_soft_step", Pipeline::Soft, [] { return scenes::pyramid(10); }, defaults, 120, 0x08c7a222c6faef88ULL},
+    {"column_defaults", Pipeline::Fx2d, [] { return scenes::column(20); }, defaults, 120, 0xac173e8a2b9d9916ULL},
+    {"gas_defaults", Pipeline::Fx2d, [] { return scenes::elastic_gas(200); }, defaults, 120, 0x1a7cb0f191395fe9ULL},
+    {"gas_no_toggles", Pipeline::Fx2d, [] { return scenes::elastic_gas(100); },
      [](WorldSettings& s) {
        s.rotation = Toggle::On;
        s.friction = Toggle::On;
        s.warm_starting = Toggle::Off;
      },
      60, 0xaf11a257f55dfbb3ULL},
-    {"cradle_defaults", [] { return scenes::newtons_cradle(5); }, defaults, 120, 0xf9c820f5c2aa202bULL},
-    {"incline_defaults", [] { return scenes::incline(); }, defaults, 120, 0x7b8876f6d22680abULL},
-    {"incline_sliding", [] { return scenes::incline(0.6, 0.5, 0.3); }, defaults, 120, 0x726a4ca7660d503bULL},
-    {"bouncing_defaults", [] { return scenes::bouncing_disks(); }, defaults, 180, 0xc00e709942ea150bULL},
-    {"bullet_defaults", [] { return scenes::bullet_wall(); }, defaults, 30, 0x284a3ca8f63749c5ULL},
-    {"demo_defaults", [] { return scenes::demo(); }, defaults, 120, 0x3fbdeace0c8fcfc5ULL},
-    {"heavy_on_light_exact", [] { return scenes::heavy_on_light(1e6); },
+    {"cradle_defaults", Pipeline::Fx2d, [] { return scenes::newtons_cradle(5); }, defaults, 120, 0xf9c820f5c2aa202bULL},
+    {"incline_defaults", Pipeline::Fx2d, [] { return scenes::incline(); }, defaults, 120, 0x7b8876f6d22680abULL},
+    {"incline_sliding", Pipeline::Fx2d, [] { return scenes::incline(0.6, 0.5, 0.3); }, defaults, 120, 0x726a4ca7660d503bULL},
+    {"bouncing_defaults", Pipeline::Fx2d, [] { return scenes::bouncing_disks(); }, defaults, 180, 0xc00e709942ea150bULL},
+    {"bullet_defaults", Pipeline::Fx2d, [] { return scenes::bullet_wall(); }, defaults, 30, 0x284a3ca8f63749c5ULL},
+    {"demo_defaults", Pipeline::Fx2d, [] { return scenes::demo(); }, defaults, 120, 0x3fbdeace0c8fcfc5ULL},
+    {"heavy_on_light_exact", Pipeline::Fx2d, [] { return scenes::heavy_on_light(1e6); },
      [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 120, 0xd3e2bd781bf42514ULL},
-    {"heavy_on_light_exact_velocity_only", [] { return scenes::heavy_on_light(1e3); },
+    {"heavy_on_light_exact_velocity_only", Pipeline::Fx2d, [] { return scenes::heavy_on_light(1e3); },
      [](WorldSettings& s) {
        s.solver_mode = SolverMode::Exact;
        s.exact_position_correction = false;
@@ -162,7 +172,7 @@ class WorldGolden : public ::testing::TestWithParam<Golden>
 TEST_P(WorldGolden, TrajectoryHashIsPinned)
 {
   const Golden& g = GetParam();
-  const std::uint64_t hash = run_hash(g.scene(), g.tweak, g.frames);
+  const std::uint64_t hash = run_hash(g.scene(), g.pipeline, g.tweak, g.frames);
   // Printed so a commit that changes behaviour on purpose can re-pin.
   std::printf("golden %s 0x%016llxULL\n", g.name, static_cast<unsigned long long>(hash));
   EXPECT_EQ(hash, g.expected) << g.name;
@@ -221,7 +231,7 @@ TEST(WorldGoldenRuns, AreRepeatable)
 {
   // The hash is a function of the inputs only: two runs in one process agree.
   const Golden& g = kGolden[0];
-  EXPECT_EQ(run_hash(g.scene(), g.tweak, 30), run_hash(g.scene(), g.tweak, 30));
+  EXPECT_EQ(run_hash(g.scene(), g.pipeline, g.tweak, 30), run_hash(g.scene(), g.pipeline, g.tweak, 30));
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, WorldGolden, ::testing::ValuesIn(kGolden),

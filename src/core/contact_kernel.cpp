@@ -63,6 +63,7 @@ void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, doub
   p.tangent_mass = 1.0 / p.k_t;
   p.pair_tangent_mass = p.tangent_mass;
   // Measured once, before any impulse: later impulses never move the target.
+  p.restitution = restitution;
   p.target = newton_target(dot(relative_velocity(p, state), p.normal), restitution, threshold);
 }
 

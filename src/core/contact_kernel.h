@@ -80,6 +80,7 @@ struct ContactPoint
 
   // Targets, friction state and impulses.
   double target = 0.0;    ///< post-solve normal separation speed (m/s), fixed at prepare
+  double restitution = 0.0;  ///< the pair's e
   double mu_s = 0.0;      ///< static friction coefficient
   double mu_k = 0.0;      ///< kinetic friction coefficient
   bool kinetic = false;   ///< slid before: the kinetic bound applies

@@ -44,13 +44,25 @@ bool WorldImpl::is_mover(std::size_t i) const
   return false;
 }
 
+double WorldImpl::frame_reach(const Body& b) const
+{
+  const double dt = settings_.dt;
+  const double along = (length(b.velocity()) + length(settings_.gravity) * dt) * dt;
+  return along + std::abs(b.omega()) * b.radius() * dt;
+}
+
 void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report)
 {
   const std::size_t n = bodies_.size();
   boxes_.resize(n);
+  reach_.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i)
   {
-    boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin) : bodies_[i].aabb();
+    // The soft step collides once per frame, so a pair that the frame's
+    // motion can close gets its contact now: the margin grows by how far
+    // each body can travel in the frame.
+    reach_[i] = margin > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
+    boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
   }
   broad_phase_.find_pairs(boxes_, pairs_);
   points_.clear();
@@ -75,7 +87,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     // keeps a body stopped at its time of impact touching its obstacle.
     const bool touch = clamped(i) || clamped(j);
     const double touching = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
-    const double tolerance = std::max(margin, touching);
+    const double tolerance = std::max(margin + reach_[i] + reach_[j], touching);
     add_manifold(i, j, tolerance, warm_scale, ctx.effects.friction);
   }
   for (const ContactPoint& row : points_)

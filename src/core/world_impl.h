@@ -66,6 +66,7 @@ struct WorldImpl
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
   void prepare_soft_points(const StepContext& ctx);
+  void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   void solve_soft(const StepContext& ctx, bool use_bias);
   void integrate_positions(StepContext& ctx, StepReport& report);
@@ -96,6 +97,8 @@ struct WorldImpl
   bool is_mover(std::size_t i) const;
   /// Contacts at the current poses; pairs within `margin` (m) are kept too.
   void detect(const StepContext& ctx, double margin, StepReport& report);
+  /// How far any point of the body can travel in one frame (m).
+  double frame_reach(const Body& b) const;
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
   void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction);
   void carry_sleeping_pair(std::size_t i, std::size_t j);
@@ -150,6 +153,7 @@ struct WorldImpl
   BroadPhase broad_phase_;
   BroadPhase sweep_phase_;
   std::vector<Aabb> boxes_;
+  std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)
   std::vector<BodyPair> pairs_;
   std::vector<bool> swept_;           ///< bodies swept this substep
   std::vector<double> toi_;           ///< fraction of the substep each body travels
@@ -160,6 +164,7 @@ struct WorldImpl
   std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared
   std::vector<double> prepared_theta_;
   std::vector<bool> stopped_;            ///< soft step: stopped at its time of impact this frame
+  std::vector<bool> touching_;           ///< soft step: has a contact point this frame
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
   std::vector<double> held_theta_;
   std::vector<double> prev_theta_;

@@ -1,6 +1,7 @@
 // The soft step (WorldSettings::soft_step), top-down. Contacts are found once per
-// frame, kept within a speculative margin and prepared with their Newton
-// targets from the velocities before the frame; each substep then integrates
+// frame, kept within a speculative margin plus how far the bodies can travel
+// in the frame, and prepared with their Newton targets from the velocities
+// before the frame (a gap still open is first closed under gravity); each substep then integrates
 // gravity, warm starts, solves the contacts as damped springs, moves the
 // bodies and relaxes (solves again without the push-out, so no correction
 // stays behind as velocity). A contact's gap follows from the bodies' pose
@@ -27,6 +28,10 @@ constexpr double kStaticStiffnessFactor = 2.0;
 /// target (m/s), relative to the fastest approach, or after kMaxRestitutionPasses.
 constexpr double kRestitutionTolerance = 1e-12;
 constexpr int kMaxRestitutionPasses = 64;
+/// A touching body turns at most this much per substep (rad): the frame's
+/// contacts follow its pose from lever arms fixed at prepare, which a faster
+/// spin would swing through the surface it touches.
+constexpr double kMaxTurnPerSubstep = 0.25 * 3.14159265358979323846;
 
 }  // namespace
 
@@ -72,6 +77,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
     }
     p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
     p.approach_speed = dot(relative_velocity(p, velocity_), p.normal);
+    aim_at_impact(p);
     p.frame_impulse = 0.0;
     const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
     p.softness = both_move ? moving : fixed;
@@ -83,6 +89,15 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
     body.turned_sin = 0.0;
   }
   stopped_.assign(bodies_.size(), false);
+  touching_.assign(bodies_.size(), false);
+  for (const ContactPoint& p : points_)
+  {
+    if (p.active)
+    {
+      touching_[p.a] = true;
+      touching_[p.b] = true;
+    }
+  }
   held_position_.resize(bodies_.size());
   held_theta_.resize(bodies_.size());
   prepared_position_.resize(bodies_.size());
@@ -94,14 +109,36 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   }
 }
 
+void WorldImpl::aim_at_impact(ContactPoint& p) const
+{
+  // A speculative point is hit later in the frame, after gravity has closed
+  // its gap faster: its target is e times the approach speed at contact.
+  const auto falls = [&](std::size_t i) { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; };
+  const Vec2 closing_gravity = (falls(p.a) ? settings_.gravity : Vec2{0.0, 0.0}) -
+                               (falls(p.b) ? settings_.gravity : Vec2{0.0, 0.0});
+  const double closing = dot(closing_gravity, p.normal);  // m/s^2, > 0 closes the gap
+  const double approach = std::max(0.0, -p.approach_speed);
+  if (p.separation <= 0.0 || p.restitution == 0.0 || closing <= 0.0)
+  {
+    return;
+  }
+  const double at_contact = std::sqrt(approach * approach + 2.0 * closing * p.separation);
+  p.target = newton_target(-at_contact, p.restitution, settings_.restitution_threshold);
+}
+
 void WorldImpl::integrate_velocities(const StepContext& ctx)
 {
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
+  const double max_spin = kMaxTurnPerSubstep * ctx.inv_h;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
     {
       velocity_[i].v = velocity_[i].v + gravity_kick;
+      if (touching_[i])
+      {
+        velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
+      }
     }
   }
 }

@@ -124,6 +124,8 @@ World column_world(double L, bool scale_settings, bool with_disk)
     s.slop *= L;
     s.restitution_threshold *= L;
     s.sleep_linear_speed *= L;
+    s.contact_push_speed *= L;
+    s.speculative_margin *= L;
   }
   return make_world(scene);
 }
@@ -196,6 +198,9 @@ TEST(ExtremesScale, RestingColumnIsScaleFreeAtDecimalScales)
 double resting_depth_fraction(double L, bool scale_settings, int frames)
 {
   World world = column_world(L, scale_settings, false);
+  WorldSettings fx2d = world.settings();
+  fx2d.soft_step = false;  // slop is a setting of the Fx2D pipeline
+  world.set_settings(fx2d);
   const StepReport report = world.step(frames);
   return report.max_penetration / L;
 }

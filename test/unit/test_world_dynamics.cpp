@@ -87,37 +87,49 @@ TEST(WorldDynamics, BoxOnInclineSlidesWithKineticFriction)
   const double measured = (v1 - v0) / (world.time() - t0);
   std::printf("incline above mu_s: a = %.5f m/s^2, g (sin - mu_k cos) = %.5f\n", measured, expected);
   EXPECT_NEAR(measured, expected, 0.01 * expected);
-  EXPECT_NEAR(world.body(box).theta(), angle, 1e-6);  // slides flat, does not tip
+  // Slides flat, does not tip: friction's torque compresses the soft step's
+  // contact springs unevenly, which tilts the box by a few 1e-5 rad.
+  constexpr double kTipTolerance = 1e-4;  // rad
+  EXPECT_NEAR(world.body(box).theta(), angle, kTipTolerance);
 }
 
 /// Relative change of the kinetic energy of a 300-disk elastic gas over 5 s.
-double gas_energy_change(int velocity_iterations)
+double gas_energy_change(bool soft_step, int velocity_iterations)
 {
   Scene gas = scenes::elastic_gas(300, 11);
+  gas.settings.soft_step = soft_step;
   gas.settings.velocity_iterations = velocity_iterations;
   World world = make_world(gas);
   const double before = kinetic_energy(world);
   world.step(300);
   const double after = kinetic_energy(world);
-  std::printf("elastic gas, %d iterations: kinetic energy %.6g -> %.6g J (relative change %.3g)\n",
-              velocity_iterations, before, after, (after - before) / before);
+  std::printf("elastic gas, %s, %d iterations: kinetic energy %.6g -> %.6g J (relative change %.3g)\n",
+              soft_step ? "soft step" : "Fx2D", velocity_iterations, before, after, (after - before) / before);
   return std::abs(after - before) / before;
 }
 
 TEST(WorldDynamics, ElasticFrictionlessGasKeepsItsEnergy)
 {
-  // Position correction never touches velocities and every e = 1 impact has
-  // a fixed Newton target, so the energy lost is that of simultaneous impacts
-  // (a disk hitting two others) left short of their targets by too few
-  // Gauss-Seidel passes: about 0.7% over 5 s with the default 2, nothing
-  // measurable with 10.
-  EXPECT_LT(gas_energy_change(WorldSettings().velocity_iterations), 0.02);
-  EXPECT_LT(gas_energy_change(10), 1e-6);
+  // Fx2D: position correction never touches velocities and every e = 1
+  // impact has a fixed Newton target, so the energy lost is that of
+  // simultaneous impacts (a disk hitting two others) left short of their
+  // targets by too few Gauss-Seidel passes: about 0.7% over 5 s with the
+  // default 2, nothing measurable with 10.
+  EXPECT_LT(gas_energy_change(false, WorldSettings().velocity_iterations), 0.02);
+  EXPECT_LT(gas_energy_change(false, 10), 1e-6);
+  // The soft step bounces once per frame, after the substeps: impacts that
+  // follow one another within a frame are resolved as if simultaneous, which
+  // loses some energy whatever the passes (about 0.6% over 5 s).
+  EXPECT_LT(gas_energy_change(true, WorldSettings().velocity_iterations), 0.02);
 }
 
 TEST(WorldDynamics, BulletDoesNotTunnelThroughThinWall)
 {
-  const Scene scene = scenes::bullet_wall(500.0);
+  // The Fx2D pipeline detects every substep, so without the sweep the
+  // bullet skips the wall; the soft step's frame-long speculative contacts
+  // stop it either way (WorldSoftStep.BulletDoesNotTunnel).
+  Scene scene = scenes::bullet_wall(500.0);
+  scene.settings.soft_step = false;
   const auto run = [&](Toggle toi, StepReport& report) {
     Scene s = scene;
     s.settings.time_of_impact = toi;

@@ -26,6 +26,7 @@ double stack_drift(Scene scene, int substeps, int iterations, double settle_s, d
 {
   scene.settings.substeps = substeps;
   scene.settings.velocity_iterations = iterations;
+  scene.settings.soft_step = false;  // a setting of the Fx2D pipeline
   scene.settings.warm_start_before_integration = true;
   World world = make_world(scene);
   world.step(static_cast<int>(settle_s * kFramesPerSecond));
@@ -63,6 +64,7 @@ double rebound(int substeps, bool warm_before_integration, double e, double drop
   constexpr double kRadius = 0.25;  // m
   WorldSettings settings;
   settings.substeps = substeps;
+  settings.soft_step = false;  // a setting of the Fx2D pipeline
   settings.warm_start_before_integration = warm_before_integration;
   World world(settings);
   const Material bouncy{e, 0.0, 0.0};
@@ -111,6 +113,7 @@ TEST(WorldWarmIntegration, InelasticFrictionlessCollisionKeepsMomentumAndSticks)
   WorldSettings settings;
   settings.gravity = Vec2{0.0, 0.0};
   settings.warm_starting = Toggle::On;
+  settings.soft_step = false;  // a setting of the Fx2D pipeline
   settings.warm_start_before_integration = true;
   World world(settings);
   const Material slick{0.0, 0.0, 0.0};

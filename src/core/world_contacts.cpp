@@ -124,7 +124,7 @@ void WorldImpl::add_manifold(std::size_t i, std::size_t j, double tolerance, dou
   }
   for (int k = 0; k < m.count; ++k)
   {
-    ContactPoint row;
+    ContactPoint& row = points_.emplace_back();
     row.a = i;
     row.b = j;
     row.normal = m.normal;
@@ -140,7 +140,6 @@ void WorldImpl::add_manifold(std::size_t i, std::size_t j, double tolerance, dou
       row.lambda_t = warm_scale * cached->impulse.tangent;
       row.kinetic = friction && cached->sliding;
     }
-    points_.push_back(row);
   }
 }
 
@@ -151,11 +150,7 @@ void WorldImpl::carry_sleeping_pair(std::size_t i, std::size_t j)
   // island stays one island and wakes with its impulses intact.
   const BodyId a = ids_[i];
   const BodyId b = ids_[j];
-  auto it = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
-                             [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
-                               return pair_less(c, key.first, key.second);
-                             });
-  for (; it != cache_.end() && it->a == a && it->b == b; ++it)
+  for (auto it = cache_.begin() + cached_pair(a, b); it != cache_.end() && it->a == a && it->b == b; ++it)
   {
     ContactPoint row;
     row.a = i;
@@ -172,15 +167,30 @@ void WorldImpl::carry_sleeping_pair(std::size_t i, std::size_t j)
   }
 }
 
-const WorldContact* WorldImpl::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
+std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const
 {
   // The cache is in (a, b) order because contacts are published in broad-phase
-  // pair order and dense indices follow ids; a pair has at most two points.
-  auto it = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
-                             [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
-                               return pair_less(c, key.first, key.second);
-                             });
-  for (; it != cache_.end() && it->a == a && it->b == b; ++it)
+  // pair order and dense indices follow ids; detection asks in that order too,
+  // so the cursor only moves forward (a search covers any other order).
+  if (cache_cursor_ > cache_.size() || (cache_cursor_ > 0 && !pair_less(cache_[cache_cursor_ - 1], a, b)))
+  {
+    const auto found = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
+                                        [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
+                                          return pair_less(c, key.first, key.second);
+                                        });
+    cache_cursor_ = static_cast<std::size_t>(found - cache_.begin());
+    return cache_cursor_;
+  }
+  while (cache_cursor_ < cache_.size() && pair_less(cache_[cache_cursor_], a, b))
+  {
+    ++cache_cursor_;
+  }
+  return cache_cursor_;
+}
+
+const WorldContact* WorldImpl::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
+{
+  for (auto it = cache_.begin() + cached_pair(a, b); it != cache_.end() && it->a == a && it->b == b; ++it)
   {
     if (it->contact.feature == feature)
     {

@@ -102,6 +102,8 @@ struct WorldImpl
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
   void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction);
   void carry_sleeping_pair(std::size_t i, std::size_t j);
+  /// Index of the first cached contact of pair (a, b), or of where it would be.
+  std::size_t cached_pair(BodyId a, BodyId b) const;
   const WorldContact* find_cached(BodyId a, BodyId b, std::uint32_t feature) const;
   void publish_contacts();
   double measure_penetration() const;
@@ -172,6 +174,7 @@ struct WorldImpl
   std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
   std::vector<WorldContact> cache_;   ///< previous substep's contacts, for warm starting
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
+  mutable std::size_t cache_cursor_ = 0;  ///< cached_pair's position in cache_
   std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
   std::vector<double> kicked_omega_;
   std::vector<std::size_t> island_;   ///< union-find parents for sleeping

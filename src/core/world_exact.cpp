@@ -57,7 +57,7 @@ struct ExactIslands
 /// (prepare_points), and so must its LCP; every copy then sees the island's
 /// one inertia per body. Without friction (positions) the copies carry no cone.
 void build_islands(const std::vector<detail::BodyVelocity>& velocity, const std::vector<detail::ContactPoint>& points,
-                   bool friction, ExactIslands& out)
+                   bool friction, const std::vector<double>* targets, ExactIslands& out)
 {
   out.state.resize(velocity.size());
   for (std::size_t i = 0; i < velocity.size(); ++i)
@@ -82,6 +82,7 @@ void build_islands(const std::vector<detail::BodyVelocity>& velocity, const std:
     }
     detail::ContactPoint copy = points[k];
     copy.contact = k;
+    copy.target = targets != nullptr ? (*targets)[k] : copy.target;
     copy.inv_inertia_a = out.state[copy.a].inv_inertia;
     copy.inv_inertia_b = out.state[copy.b].inv_inertia;
     if (!friction)
@@ -161,10 +162,12 @@ bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, Ex
 
 }  // namespace
 
-void WorldImpl::solve_exact_islands(StepReport& report)
+void WorldImpl::solve_exact_islands(StepReport& report, const std::vector<double>* targets, bool add)
 {
+  // A second pass of the substep adds normal impulses only: its cones would
+  // hold just what that pass pushes, not the substep's load.
   ExactIslands islands;
-  build_islands(velocity_, points_, true, islands);
+  build_islands(velocity_, points_, !add, targets, islands);
   for (const detail::ClusterRange& cluster : islands.clusters)
   {
     const bool solved = solve_velocity_island(velocity_, islands, cluster);
@@ -174,9 +177,10 @@ void WorldImpl::solve_exact_islands(StepReport& report)
       const detail::ContactPoint& row = islands.rows[r];
       ContactPoint& w = points_[row.contact];
       w.exact = true;
-      w.lambda_n = row.lambda_n;
-      w.lambda_t = row.lambda_t;
-      w.sliding = row.sliding;
+      w.frame_impulse += row.lambda_n;  // the soft step bounces only what pushed
+      w.lambda_n = add ? w.lambda_n + row.lambda_n : row.lambda_n;
+      w.lambda_t = add ? w.lambda_t : row.lambda_t;
+      w.sliding = add ? w.sliding : row.sliding;
     }
   }
   for (std::size_t i = 0; i < bodies_.size(); ++i)
@@ -189,7 +193,7 @@ void WorldImpl::solve_exact_islands(StepReport& report)
 void WorldImpl::solve_position_islands(double softness, StepReport& report)
 {
   ExactIslands islands;
-  build_islands(velocity_, points_, false, islands);
+  build_islands(velocity_, points_, false, nullptr, islands);
   detail::ClusterLcp& lcp = islands.lcp;
   for (const detail::ClusterRange& cluster : islands.clusters)
   {

@@ -68,6 +68,10 @@ struct WorldImpl
   void prepare_soft_points(const StepContext& ctx);
   void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
+  /// The soft passes, or in exact mode each island's LCP (the passes then
+  /// take only the islands it could not solve).
+  void solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report);
+  void aim_exact_targets(const StepContext& ctx, bool use_bias);
   void solve_soft(const StepContext& ctx, bool use_bias);
   void integrate_positions(StepContext& ctx, StepReport& report);
   void restitution_pass(StepReport& report);
@@ -129,7 +133,9 @@ struct WorldImpl
   void displace(std::size_t i, double lambda, Vec2 n, Vec2 r, double inv_mass, double inv_inertia);
 
   // world_exact.cpp
-  void solve_exact_islands(StepReport& report);
+  /// With `targets`, row k aims at (*targets)[k] instead of its Newton target;
+  /// with `add`, a second pass of the substep: normal impulses only, added to the points'.
+  void solve_exact_islands(StepReport& report, const std::vector<double>* targets = nullptr, bool add = false);
   void solve_position_islands(double softness, StepReport& report);
 
   // world_sleep.cpp
@@ -167,6 +173,7 @@ struct WorldImpl
   std::vector<double> prepared_theta_;
   std::vector<bool> stopped_;            ///< soft step: stopped at its time of impact this frame
   std::vector<bool> touching_;           ///< soft step: has a contact point this frame
+  std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
   std::vector<double> held_theta_;
   std::vector<double> prev_theta_;

@@ -7,6 +7,9 @@
 // stays behind as velocity). A contact's gap follows from the bodies' pose
 // changes, not from detecting again. After the substeps, restitution drives
 // every bouncing contact to its Newton target, iterated to the fixed point.
+// In the exact mode each pass solves every island as one LCP instead
+// (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
+// out rigidly at the soft rate; the relax adds normal impulses only.
 #include <algorithm>
 #include <cmath>
 
@@ -50,10 +53,9 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   for (int k = 0; k < settings_.substeps; ++k)
   {
     integrate_velocities(ctx);
-    warm_start();
-    solve_soft(ctx, true);
+    solve_contacts(ctx, true, report);
     integrate_positions(ctx, report);
-    solve_soft(ctx, false);                               // relax
+    solve_contacts(ctx, false, report);                   // relax
     ++report.substeps;
   }
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
@@ -143,6 +145,38 @@ void WorldImpl::integrate_velocities(const StepContext& ctx)
   }
 }
 
+void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report)
+{
+  if (settings_.solver_mode == SolverMode::Exact)
+  {
+    // Each island at once by pivoting, from scratch (no warm start); an
+    // island too large for it goes through the soft passes below.
+    aim_exact_targets(ctx, use_bias);
+    solve_exact_islands(report, &exact_targets_, !use_bias);  // world_exact.cpp
+  }
+  if (use_bias)
+  {
+    warm_start();
+  }
+  solve_soft(ctx, use_bias);
+}
+
+void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
+{
+  // The velocity each point must reach: a gap may close within the substep;
+  // an overlap is pushed out at the soft contact's rate (rigidly, so a heavy
+  // body's weight leaves no spring's sag), or only held in the relax.
+  exact_targets_.resize(points_.size());
+  for (std::size_t k = 0; k < points_.size(); ++k)
+  {
+    ContactPoint& p = points_[k];
+    p.exact = false;
+    const double s = current_separation(p, velocity_);
+    const double push = std::min(-p.softness.mass_scale * p.softness.bias_rate * s, settings_.contact_push_speed);
+    exact_targets_[k] = s > 0.0 ? -s * ctx.inv_h : (use_bias ? push : 0.0);
+  }
+}
+
 void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
 {
   const bool friction = ctx.effects.friction;
@@ -150,7 +184,7 @@ void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
   for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
   {
     ContactPoint& p = points_[k];
-    if (!p.active)
+    if (!p.active || p.exact)
     {
       continue;
     }

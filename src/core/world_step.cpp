@@ -66,8 +66,7 @@ void WorldImpl::step_frame(StepReport& report)
   }
   ctx.h = settings_.dt / settings_.substeps;
   ctx.inv_h = 1.0 / ctx.h;
-  // The exact mode solves islands on the Fx2D step's per-substep contacts.
-  if (settings_.soft_step && settings_.solver_mode == SolverMode::Iterative)
+  if (settings_.soft_step)
   {
     soft_frame(ctx, report);                              // world_soft_step.cpp
   }

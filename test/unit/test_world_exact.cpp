@@ -66,7 +66,12 @@ double rest_depth(const WorldSettings& s, double load)
 
 void expect_stack_rests(double compliance)
 {
+  // Compliance and slop are the Fx2D pipeline's (the soft step's exact mode:
+  // WorldSoftStep.ExactModeHoldsAMillionKilogramBoxOnALightOneForAMinute).
   Stack s = heavy_on_light(SolverMode::Exact, compliance);
+  WorldSettings fx2d = s.world.settings();
+  fx2d.soft_step = false;
+  s.world.set_settings(fx2d);
   const WorldSettings& settings = s.world.settings();
   const double g = -settings.gravity.y;
   const double heavy_weight = s.world.body(s.heavy).mass() * g;

@@ -143,6 +143,10 @@ const Golden kGolden[] = {
        s.sleep_time = 0.1;
      },
      150, 0x58d8ca69accf15d9ULL},
+    {"pyramid_exact_soft_step", Pipeline::Soft, [] { return scenes::pyramid(5); },
+     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x0e231b5777112acbULL},
+    {"heavy_on_light_exact_soft_step", Pipeline::Soft, [] { return scenes::heavy_on_light(1e6); },
+     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 120, 0x9ac37a5ed96db642ULL},
     {"column_soft_step", Pipeline::Soft, [] { return scenes::column(20); }, defaults, 120, 0xf2c58254653fcc68ULL},
     {"gas_soft_step", Pipeline::Soft, [] { return scenes::elastic_gas(200); }, defaults, 120, 0x5ccb1e8e4bf9d896ULL},
     {"cradle_soft_step", Pipeline::Soft, [] { return scenes::newtons_cradle(5); }, defaults, 120, 0xb57108cfe8926e3eULL},

@@ -36,8 +36,8 @@ struct Material
 //    causes) but lets a pyramid spread sideways: off.
 //  - solver_mode: Exact solves each island as one LCP by pivoting, carrying mass
 //    ratios no number of passes can; a failed island falls back to the passes
-//    (StepReport::exact_fallbacks). It runs on the Fx2D step.
-//  - exact_position_correction: without it a position pass barely moves the
+//    (StepReport::exact_fallbacks). It works in both pipelines.
+//  - exact_position_correction (Fx2D): without it a position pass barely moves the
 //    heavy body of an extreme mass ratio, which then keeps each substep's sag.
 //  - warm_start_before_integration: poses advance with velocities predicted
 //    from the previous substep's contacts, so a resting body is not first moved

@@ -81,6 +81,9 @@ struct WorldContact
   Contact contact;  ///< indices a/b refer to positions in body_ids()
   ContactImpulse impulse;
   bool sliding = false;  ///< friction was at its bound (the contact slips)
+  /// Soft step: how far b has slipped along the tangent relative to a at the
+  /// point since the contact last stuck (m); static friction pulls it back.
+  double anchor_drift = 0.0;
 };
 
 /// What a step carries into the next besides the bodies, settings and clock:

@@ -105,9 +105,10 @@ double coulomb(ContactPoint& p, double needed, double normal_impulse)
   return std::max(-limit, std::min(limit, needed));
 }
 
-bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state)
+bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state, double bias)
 {
-  const double vt = dot(relative_velocity(p, state), p.tangent);
+  const double slip = dot(relative_velocity(p, state), p.tangent);
+  const double vt = bias == 0.0 ? slip : slip + bias;
   const double total = coulomb(p, p.lambda_t - vt * p.tangent_mass, p.lambda_n);
   const double change = total - p.lambda_t;
   p.lambda_t = total;
@@ -180,7 +181,7 @@ bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<B
   return true;
 }
 
-void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state)
+void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state, double bias)
 {
   // Both points lie on one face: they share the tangent and, for a rigid
   // pair, the slip speed, so two friction rows would be one constraint twice
@@ -189,7 +190,8 @@ void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<
   const Vec2 t = first.tangent;
   const Vec2 r_a = midpoint_arm_a(first, second);
   const Vec2 r_b = midpoint_arm_b(first, second);
-  const double vt = dot(relative_velocity_at(first, r_a, r_b, state), t);
+  const double slip = dot(relative_velocity_at(first, r_a, r_b, state), t);
+  const double vt = bias == 0.0 ? slip : slip + bias;
   const double normal_sum = first.lambda_n + second.lambda_n;
   const double old_total = first.lambda_t + second.lambda_t;
   const double total = coulomb(first, old_total - vt * first.pair_tangent_mass, normal_sum);

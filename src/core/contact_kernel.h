@@ -94,6 +94,7 @@ struct ContactPoint
   double base_separation = 0.0;  ///< m
   double approach_speed = 0.0;   ///< normal relative speed at prepare (m/s), < 0 approaching
   double frame_impulse = 0.0;    ///< normal impulse applied over the frame, warm starts included (N s)
+  double anchor_drift = 0.0;     ///< tangential slip since the point last stuck, at prepare (m)
   Softness softness;
 
   // Bookkeeping of the solvers that own the point.
@@ -173,14 +174,19 @@ void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// >= 0 (a contact pushes, never pulls). Returns whether the impulse changed.
 bool solve_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// One update of the tangential impulse toward sticking, clamped to the cone.
-bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state);
+/// `bias` (m/s) is added to the slip speed the update removes (the soft
+/// step's pull back to a sticking point's anchor).
+bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state, double bias = 0.0);
 /// The two normal rows of a manifold solved together as a 2x2 LCP. Returns
 /// false, changing nothing, when the rows are nearly dependent; sets
 /// `changed` when an impulse changed.
 bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state, bool& changed);
 /// A manifold's friction as one row at its midpoint against the summed normal
 /// impulse, split in proportion to the normal impulses.
-void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state);
+void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
+                         double bias = 0.0);
+/// Soft step: the point's tangential slip since prepare, from the bodies' pose changes (m).
+double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state);
 /// Both normals and the midpoint friction row solved at once assuming the pair
 /// sticks; false, changing nothing, unless that keeps both normal impulses
 /// >= 0 and the friction inside its cone.

@@ -37,6 +37,15 @@ double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>
   return p.base_separation + dot(b.moved - a.moved + turned_b - turned_a, p.normal);
 }
 
+double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state)
+{
+  const BodyVelocity& a = state[p.a];
+  const BodyVelocity& b = state[p.b];
+  const Vec2 turned_a = rotate(p.r_a, a.turned_cos, a.turned_sin);
+  const Vec2 turned_b = rotate(p.r_b, b.turned_cos, b.turned_sin);
+  return dot(b.moved - a.moved + turned_b - turned_a - (p.r_b - p.r_a), p.tangent);
+}
+
 namespace
 {
 /// The soft terms of one point now: its push-out bias (m/s) and mass scale.

@@ -201,7 +201,7 @@ void World::set_step_state(const StepState& state)
                                   " and " + std::to_string(c.b) + " (known ids, a < b)");
     }
     if (!is_finite(c.contact.normal) || !is_finite(c.contact.point) || !std::isfinite(c.contact.penetration) ||
-        !std::isfinite(c.impulse.normal) || !std::isfinite(c.impulse.tangent))
+        !std::isfinite(c.impulse.normal) || !std::isfinite(c.impulse.tangent) || !std::isfinite(c.anchor_drift))
     {
       throw std::invalid_argument(where + "contacts[" + std::to_string(k) + "] is not finite");
     }

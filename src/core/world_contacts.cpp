@@ -139,6 +139,7 @@ void WorldImpl::add_manifold(std::size_t i, std::size_t j, double tolerance, dou
       row.lambda_n = warm_scale * cached->impulse.normal;
       row.lambda_t = warm_scale * cached->impulse.tangent;
       row.kinetic = friction && cached->sliding;
+      row.anchor_drift = cached->anchor_drift;
     }
   }
 }
@@ -212,6 +213,7 @@ void WorldImpl::publish_contacts()
     c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
     c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
     c.sliding = row.sliding;
+    c.anchor_drift = row.anchor_drift;
   }
 }
 

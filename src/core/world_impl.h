@@ -73,6 +73,12 @@ struct WorldImpl
   void solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report);
   void aim_exact_targets(const StepContext& ctx, bool use_bias);
   void solve_soft(const StepContext& ctx, bool use_bias);
+  /// A sticking point's slip from its anchor now (m); 0 for a sliding one.
+  double anchor_drift(const ContactPoint& p) const;
+  /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
+  double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
+  /// After the frame: each sticking point's slip, carried to the next frame.
+  void update_anchors();
   void integrate_positions(StepContext& ctx, StepReport& report);
   void restitution_pass(StepReport& report);
 

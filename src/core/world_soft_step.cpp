@@ -7,6 +7,10 @@
 // stays behind as velocity). A contact's gap follows from the bodies' pose
 // changes, not from detecting again. After the substeps, restitution drives
 // every bouncing contact to its Newton target, iterated to the fixed point.
+// Static friction holds position, not only velocity: a sticking point
+// remembers how far it has slipped since it stuck (across frames, with its
+// impulses) and its friction pulls that back at the contact's rate, so a
+// stack cannot creep by round-off-sized slips.
 // In the exact mode each pass solves every island as one LCP instead
 // (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
 // out rigidly at the soft rate; the relax adds normal impulses only.
@@ -60,6 +64,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   }
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
   restitution_pass(report);
+  update_anchors();
   store_velocities();
   report.contact_count = points_.size();
   publish_contacts();
@@ -195,14 +200,38 @@ void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
       solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
       if (rough)
       {
-        solve_friction_pair(p, q, velocity_);
+        const double drift = 0.5 * (anchor_drift(p) + anchor_drift(q));
+        solve_friction_pair(p, q, velocity_, use_bias ? anchor_pull(p, drift, push) : 0.0);
       }
       continue;
     }
     solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
     if (rough)
     {
-      solve_friction(p, velocity_);
+      solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p), push) : 0.0);
+    }
+  }
+}
+
+double WorldImpl::anchor_drift(const ContactPoint& p) const
+{
+  return p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+}
+
+double WorldImpl::anchor_pull(const ContactPoint& p, double drift, double max_push) const
+{
+  // As the normal's push-out: the spring's rate, capped.
+  const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
+  return std::max(-max_push, std::min(max_push, pull));
+}
+
+void WorldImpl::update_anchors()
+{
+  for (ContactPoint& p : points_)
+  {
+    if (p.active)
+    {
+      p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
     }
   }
 }

@@ -45,6 +45,8 @@ WorldContact read_contact(const YAML::Node& node)
   const Vec2 impulse = read_vec(node["impulse"]);
   c.impulse = ContactImpulse{impulse.x, impulse.y};
   c.sliding = node["sliding"].as<bool>();
+  // Snapshots written before anchors existed have none: the contact restarts from where it is.
+  c.anchor_drift = node["anchor"] ? node["anchor"].as<double>() : 0.0;
   return c;
 }
 
@@ -73,7 +75,7 @@ void write_step_state(std::ostream& out, const StepState& state)
     write_vec(out, c.contact.point);
     out << ", depth: " << format_number(c.contact.penetration) << ", impulse: ";
     write_vec(out, Vec2{c.impulse.normal, c.impulse.tangent});
-    out << ", sliding: " << (c.sliding ? "true" : "false") << "}\n";
+    out << ", sliding: " << (c.sliding ? "true" : "false") << ", anchor: " << format_number(c.anchor_drift) << "}\n";
   }
 }
 

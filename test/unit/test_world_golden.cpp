@@ -136,13 +136,13 @@ const Golden kGolden[] = {
        s.sleep_time = 0.1;
      },
      150, 0xdbd82c17df00f5aaULL},
-    {"pyramid_soft_step", Pipeline::Soft, [] { return scenes::pyramid(10); }, defaults, 120, 0x08c7a222c6faef88ULL},
+    {"pyramid_soft_step", Pipeline::Soft, [] { return scenes::pyramid(10); }, defaults, 120, 0xf59204bdccba501aULL},
     {"pyramid_soft_step_sleeping", Pipeline::Soft, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.sleeping = Toggle::On;
        s.sleep_time = 0.1;
      },
-     150, 0x58d8ca69accf15d9ULL},
+     150, 0xe884ce9b0d577d05ULL},
     {"pyramid_exact_soft_step", Pipeline::Soft, [] { return scenes::pyramid(5); },
      [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x0e231b5777112acbULL},
     {"heavy_on_light_exact_soft_step", Pipeline::Soft, [] { return scenes::heavy_on_light(1e6); },
@@ -150,11 +150,11 @@ const Golden kGolden[] = {
     {"column_soft_step", Pipeline::Soft, [] { return scenes::column(20); }, defaults, 120, 0xf2c58254653fcc68ULL},
     {"gas_soft_step", Pipeline::Soft, [] { return scenes::elastic_gas(200); }, defaults, 120, 0x5ccb1e8e4bf9d896ULL},
     {"cradle_soft_step", Pipeline::Soft, [] { return scenes::newtons_cradle(5); }, defaults, 120, 0xb57108cfe8926e3eULL},
-    {"incline_soft_step", Pipeline::Soft, [] { return scenes::incline(); }, defaults, 120, 0x644d6c75a89cfd02ULL},
+    {"incline_soft_step", Pipeline::Soft, [] { return scenes::incline(); }, defaults, 120, 0x7cf40f0fa5193f54ULL},
     {"incline_sliding_soft_step", Pipeline::Soft, [] { return scenes::incline(0.6, 0.5, 0.3); }, defaults, 120, 0x809a85647722b973ULL},
     {"bouncing_soft_step", Pipeline::Soft, [] { return scenes::bouncing_disks(); }, defaults, 180, 0xf555fb360580c127ULL},
     {"bullet_soft_step", Pipeline::Soft, [] { return scenes::bullet_wall(); }, defaults, 30, 0x467559917c196034ULL},
-    {"demo_soft_step", Pipeline::Soft, [] { return scenes::demo(); }, defaults, 120, 0xeeb1dd54ba57fd15ULL},
+    {"demo_soft_step", Pipeline::Soft, [] { return scenes::demo(); }, defaults, 120, 0x25a265e21951a19dULL},
     {"column_defaults", Pipeline::Fx2d, [] { return scenes::column(20); }, defaults, 120, 0xac173e8a2b9d9916ULL},
     {"gas_defaults", Pipeline::Fx2d, [] { return scenes::elastic_gas(200); }, defaults, 120, 0x1a7cb0f191395fe9ULL},
     {"gas_no_toggles", Pipeline::Fx2d, [] { return scenes::elastic_gas(100); },

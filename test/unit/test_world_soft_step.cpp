@@ -120,6 +120,23 @@ TEST(WorldSoftStep, TwentyBoxColumnStands)
   EXPECT_LT(deepest, 0.02) << "the contacts' springs carry the column's weight";
 }
 
+TEST(WorldSoftStep, PyramidBoxesStayLevelOnTheirAnchors)
+{
+  // Velocity-only friction lets each contact slip by round-off every pass,
+  // and a pyramid's boxes tilt as the slips add up (1.5e-3 rad in 10 s);
+  // pulled back to where they stuck, they stay level.
+  World world = soft_world(scenes::pyramid(20));
+  world.step(600);
+  double tilt = 0.0;
+  for (BodyId id : world.body_ids())
+  {
+    tilt = std::max(tilt, std::abs(std::remainder(world.body(id).theta(), 0.5 * M_PI)));
+  }
+  constexpr double kLevel = 5e-4;  // rad
+  std::printf("base-20 pyramid after 10 s: largest tilt %.3g rad\n", tilt);
+  EXPECT_LT(tilt, kLevel);
+}
+
 TEST(WorldSoftStep, BulletDoesNotTunnel)
 {
   World world = soft_world(scenes::bullet_wall(1e4));

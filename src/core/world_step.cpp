@@ -214,6 +214,21 @@ void WorldImpl::require_finite_state() const
   }
 }
 
+namespace
+{
+/// Copies `from` into `to`, growing `to` geometrically: a plain assignment
+/// allocates the exact size, so a count that creeps up would allocate each time.
+template <typename T>
+void keep_copy(const std::vector<T>& from, std::vector<T>& to)
+{
+  if (to.capacity() < from.size())
+  {
+    to.reserve(2 * from.size());
+  }
+  to.assign(from.begin(), from.end());
+}
+}  // namespace
+
 void WorldImpl::save_motion()
 {
   // Only what a step changes is kept aside (no outlines, no scratch), in
@@ -224,16 +239,16 @@ void WorldImpl::save_motion()
     const Body& b = bodies_[i];
     saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
   }
-  saved_contacts_ = contacts_;
+  keep_copy(contacts_, saved_contacts_);
   saved_asleep_ = asleep_;
-  saved_rest_time_ = rest_time_;
+  keep_copy(rest_time_, saved_rest_time_);
   saved_time_ = time_;
   saved_frame_count_ = frame_count_;
   saved_cache_h_ = cache_h_;
   // A prediction reads the previous substep's points (world_warm_integration.cpp).
   if (settings_.warm_start_before_integration)
   {
-    saved_points_ = points_;
+    keep_copy(points_, saved_points_);
   }
 }
 

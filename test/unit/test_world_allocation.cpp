@@ -1,0 +1,112 @@
+// A warmed-up World steps without allocating: every buffer of the step
+// (contacts, points, broad-phase cells, velocities, the saved state a failed
+// step puts back) is kept across steps and only grows. Counted over frames
+// after a warm-up, in both pipelines, with sleeping and with the Auto effects.
+// The exact mode builds each island's LCP per solve and is not covered.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <new>
+#include <string>
+
+#include "collision2d/scene.h"
+#include "collision2d/scenes/standard_scenes.h"
+#include "collision2d/world.h"
+
+// Counts every allocation of this test binary. GCC cannot tell these
+// replacements pair malloc with free and warns at every inlined delete.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace
+{
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t size)
+{
+  ++g_allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size))
+  {
+    return p;
+  }
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace collision2d
+{
+namespace
+{
+/// Frames that let every buffer reach its largest size: impacts settle and
+/// the contact count stops growing.
+constexpr int kWarmUpFrames = 600;
+constexpr int kCountedFrames = 120;
+
+struct AllocationCase
+{
+  const char* name;
+  std::function<Scene()> scene;
+  bool soft_step;
+};
+
+void PrintTo(const AllocationCase& c, std::ostream* os) { *os << c.name; }
+
+class WorldAllocation : public ::testing::TestWithParam<AllocationCase>
+{
+};
+
+TEST_P(WorldAllocation, WarmedUpStepsAllocateNothing)
+{
+  const AllocationCase& c = GetParam();
+  Scene scene = c.scene();
+  scene.settings.soft_step = c.soft_step;
+  World world = make_world(scene);
+  for (int f = 0; f < kWarmUpFrames; ++f)
+  {
+    world.step();  // as counted below: a step of several frames saves its state once
+  }
+  const long before = g_allocations.load();
+  for (int f = 0; f < kCountedFrames; ++f)
+  {
+    world.step();
+  }
+  const long allocations = g_allocations.load() - before;
+  std::printf("%s: %ld allocations in %d frames after %d of warm-up\n", c.name, allocations, kCountedFrames,
+              kWarmUpFrames);
+  EXPECT_EQ(allocations, 0) << c.name;
+}
+
+Scene sleeping_pyramid()
+{
+  Scene scene = scenes::pyramid(10);
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.sleep_time = 0.1;
+  return scene;
+}
+
+const AllocationCase kCases[] = {
+    {"pyramid_soft_step", [] { return scenes::pyramid(20); }, true},
+    {"pyramid_fx2d", [] { return scenes::pyramid(20); }, false},
+    {"sleeping_pyramid_soft_step", sleeping_pyramid, true},
+    {"gas_soft_step", [] { return scenes::elastic_gas(300); }, true},
+    {"gas_fx2d", [] { return scenes::elastic_gas(300); }, false},
+    {"demo_soft_step", [] { return scenes::demo(); }, true},
+    {"bullet_soft_step", [] { return scenes::bullet_wall(); }, true},
+};
+
+INSTANTIATE_TEST_SUITE_P(Scenes, WorldAllocation, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<AllocationCase>& info) { return std::string(info.param.name); });
+
+TEST(WorldAllocation, TheCounterSeesAllocations)
+{
+  // The control: building a world allocates, so a zero above is a measurement.
+  const long before = g_allocations.load();
+  World world = make_world(scenes::pyramid(3));
+  EXPECT_GT(g_allocations.load() - before, 0);
+}
+
+}  // namespace
+}  // namespace collision2d

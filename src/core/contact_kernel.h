@@ -95,6 +95,8 @@ struct ContactPoint
   double approach_speed = 0.0;   ///< normal relative speed at prepare (m/s), < 0 approaching
   double frame_impulse = 0.0;    ///< normal impulse applied over the frame, warm starts included (N s)
   double anchor_drift = 0.0;     ///< tangential slip since the point last stuck, at prepare (m)
+  double pair_k12 = 0.0;         ///< first point of a manifold: pair_coupling, fixed for the frame (1/kg)
+  bool pair_block = false;       ///< ... and whether its 2x2 block is solvable
   Softness softness;
 
   // Bookkeeping of the solvers that own the point.
@@ -220,6 +222,7 @@ void solve_soft_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double
 /// A manifold's two points solved together (the 2x2 LCP of the rigid update,
 /// each point's result scaled by its softness), so neither point's impulse
 /// tilts the body against the other; nearly dependent points go one by one.
+/// Reads first.pair_k12 and first.pair_block, set when the frame is prepared.
 void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
                              double inv_h, double max_push, bool use_bias);
 /// Drives a point that pushed this frame toward its Newton target (normal

@@ -93,8 +93,8 @@ void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vec
 {
   const double k11 = first.k_n;
   const double k22 = second.k_n;
-  const double k12 = pair_coupling(first, second);
-  if (!block_solvable(k11, k12, k22))
+  const double k12 = first.pair_k12;  // prepared with the frame (world_soft_step.cpp)
+  if (!first.pair_block)
   {
     solve_soft_normal(first, state, inv_h, max_push, use_bias);
     solve_soft_normal(second, state, inv_h, max_push, use_bias);

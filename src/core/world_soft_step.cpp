@@ -89,6 +89,17 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
     const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
     p.softness = both_move ? moving : fixed;
   }
+  // A manifold's normal block is the same all frame (lever arms are fixed).
+  for (std::size_t k = 0; k + 1 < points_.size(); ++k)
+  {
+    ContactPoint& p = points_[k];
+    if (p.active && p.count == 2)
+    {
+      p.pair_k12 = pair_coupling(p, points_[k + 1]);
+      p.pair_block = block_solvable(p.k_n, p.pair_k12, points_[k + 1].k_n);
+      ++k;
+    }
+  }
   for (BodyVelocity& body : velocity_)
   {
     body.moved = Vec2{0.0, 0.0};
@@ -200,8 +211,8 @@ void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
       solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
       if (rough)
       {
-        const double drift = 0.5 * (anchor_drift(p) + anchor_drift(q));
-        solve_friction_pair(p, q, velocity_, use_bias ? anchor_pull(p, drift, push) : 0.0);
+        const double pull = use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p) + anchor_drift(q)), push) : 0.0;
+        solve_friction_pair(p, q, velocity_, pull);
       }
       continue;
     }

@@ -1,16 +1,17 @@
-// The soft step (WorldSettings::soft_step), top-down. Contacts are found once per
-// frame, kept within a speculative margin plus how far the bodies can travel
-// in the frame, and prepared with their Newton targets from the velocities
-// before the frame (a gap still open is first closed under gravity); each substep then integrates
-// gravity, warm starts, solves the contacts as damped springs, moves the
-// bodies and relaxes (solves again without the push-out, so no correction
-// stays behind as velocity). A contact's gap follows from the bodies' pose
-// changes, not from detecting again. After the substeps, restitution drives
-// every bouncing contact to its Newton target, iterated to the fixed point.
+// The soft step (WorldSettings::soft_step), top-down. Contacts are found once
+// per frame, for every pair within a speculative margin plus how far its
+// bodies can travel in the frame, and prepared with their Newton targets from
+// the velocities before the frame (a gap still open is closed under gravity
+// first). Each substep integrates gravity, warm starts, solves the contacts as
+// damped springs, moves the bodies and relaxes (solves again without the
+// push-out, so no correction stays behind as velocity). A contact's gap
+// follows from the bodies' pose changes, not from detecting again. After the
+// substeps, restitution drives every bouncing contact to its Newton target,
+// iterated to the fixed point.
 // Static friction holds position, not only velocity: a sticking point
 // remembers how far it has slipped since it stuck (across frames, with its
-// impulses) and its friction pulls that back at the contact's rate, so a
-// stack cannot creep by round-off-sized slips.
+// impulses) and its friction pulls that back at the contact's rate, so a stack
+// cannot creep by round-off-sized slips.
 // In the exact mode each pass solves every island as one LCP instead
 // (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
 // out rigidly at the soft rate; the relax adds normal impulses only.

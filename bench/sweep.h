@@ -21,20 +21,42 @@ struct RunSpec
   double seconds = 0.0;  ///< accuracy run length; 0 takes the scene's own
 };
 
-/// Ours: one knob at a time around the scene's settings, plus a substeps x
-/// iterations grid on the headline scenes. `quick` thins every grid.
+/// The World's two step pipelines (WorldSettings::soft_step). Every run of
+/// ours sets soft_step explicitly, so the sweep does not depend on which one
+/// is the default.
+enum class Pipeline
+{
+  Soft,  ///< soft_step on: collide once per frame, soft contacts, relax, restitution
+  Fx2d   ///< soft_step off: detect, correct positions, solve velocities every substep
+};
+
+/// Ours, once per pipeline: one knob at a time around the scene's settings,
+/// plus a substeps x iterations grid on the headline scenes. Knobs of one
+/// pipeline only (Fx2D: position passes, position block, the warm-start
+/// variants, exact position correction; soft step: contact stiffness,
+/// damping, push speed, speculative margin) are swept in that pipeline only.
+/// `quick` thins every grid.
 std::vector<RunSpec> world_runs(const BenchScene& scene, bool quick);
 /// Box2D 2.4.1, Chipmunk and Box2D v3 (those built in): their defaults, and
 /// matched to a few of our (substeps, iterations) points (Box2D v3: to their
-/// substeps only); ours at the same points is in world_runs.
+/// substeps only); ours at the same points in both pipelines.
 std::vector<RunSpec> peer_runs(const BenchScene& scene, bool quick);
-/// Long runs of the stacks (pyramid, column) for the stand-for-60-s target.
+/// Long runs of the stacks (pyramid, column) for the stand-for-60-s target,
+/// in both pipelines.
 std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick);
 /// Mode x iterations x tolerance x mass ratio for the ContactSolver.
 std::vector<SolverSweepPoint> solver_points(bool quick);
 
 /// Whether WorldSettings has a solver mode in this build (it is swept if so).
 bool world_has_solver_mode();
+
+/// `settings` with soft_step set for `pipeline`.
+WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline);
+/// The pipeline these settings step with: "soft" or "fx2d" (the exact solver
+/// mode always steps the Fx2D way).
+std::string pipeline_name(const WorldSettings& settings);
+/// pipeline_name of a default-constructed WorldSettings in this build.
+std::string default_pipeline_name();
 
 std::string toggle_name(Toggle toggle);
 std::string mode_name(SolverMode mode);

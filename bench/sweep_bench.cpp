@@ -7,13 +7,17 @@
 // CSV goes to FILE (default stdout): the packaged Chipmunk prints a banner
 // on stdout when its first space is made, which must not land in the CSV.
 //
-// world:  our World over one-knob-at-a-time sweeps (iterations, substeps,
-//         slop, warm starting, time of impact, solver mode when the world has
-//         one) and a substeps x iterations grid;
+// world:  our World in both pipelines (pipeline column: soft = soft step,
+//         fx2d = the Fx2D order; default_pipeline names the build's default)
+//         over one-knob-at-a-time sweeps (iterations, substeps, warm
+//         starting, time of impact; Fx2D only: slop, position passes and
+//         block, warm-start variants, solver mode; soft step only: contact
+//         stiffness, damping, push speed, speculative margin) and a substeps x
+//         iterations grid;
 // peers:  Box2D 2.4.1, Chipmunk and (when built in) Box2D v3 with their
 //         defaults and matched to a few of our points, and ours at the same
-//         points, all in this one process;
-// stand:  the stacks for 60 s at a few settings (the drift target);
+//         points in both pipelines, all in this one process;
+// stand:  the stacks for 60 s at a few settings of each pipeline (the drift target);
 // solver: the instantaneous ContactSolver on random clusters per mode,
 //         iteration cap and tolerance: Newton-target and complementarity residuals.
 // Progress goes to stderr; docs/performance.md explains every column.
@@ -119,7 +123,7 @@ void print_run_header()
 {
   std::fprintf(
       g_csv,
-      "part,scene,kind,engine,variant,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
+      "part,scene,kind,engine,variant,pipeline,default_pipeline,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
       "solver_mode,seconds,ms_per_step,cpu_ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
       "incline_accel_error,tunnelled,error,error_name\n");
 }
@@ -135,9 +139,10 @@ void print_run(const std::string& part, const BenchScene& scene, const RunSpec& 
   // Box2D v3 has no velocity-iteration count to match.
   const bool no_iterations = peer_defaults || run.config.kind == EngineKind::Box2dV3;
   const std::string iterations = no_iterations ? "" : std::to_string(s.velocity_iterations);
-  std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
+  std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
                part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
-               variant_name(run.config.variant).c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
+               variant_name(run.config.variant).c_str(), ours ? pipeline_name(s).c_str() : "",
+               default_pipeline_name().c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
                iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
                ours ? toggle_name(s.time_of_impact).c_str() : "", ours ? world_mode_name(s).c_str() : "", seconds,
                m.ms_per_step, m.cpu_ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error,
@@ -164,8 +169,10 @@ void run_scene(const Arguments& args, const std::string& part, const BenchScene&
   {
     RunOptions options = args.options;
     options.seconds = run.seconds;
-    std::fprintf(stderr, "%s %s %s %s=%s\n", part.c_str(), scene.name.c_str(), engine_name(run.config.kind).c_str(),
-                 run.knob.c_str(), run.value.c_str());
+    const bool ours = run.config.kind == EngineKind::Collision2d;
+    std::fprintf(stderr, "%s %s %s%s%s %s=%s\n", part.c_str(), scene.name.c_str(), engine_name(run.config.kind).c_str(),
+                 ours ? " " : "", ours ? pipeline_name(run.config.settings).c_str() : "", run.knob.c_str(),
+                 run.value.c_str());
     const RunMetrics m = measure_run(scene, run.config, options);
     print_run(part, scene, run, run.seconds > 0.0 ? run.seconds : scene.seconds, m);
   }

@@ -4,11 +4,12 @@
 //
 //   collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T]
 //                           [--scene NAME]... [--engine NAME]... [--csv FILE]
-//                           [--soft-step on|off]
+//                           [--soft-step on|off|both]
 //
 // Each engine runs the scene with the comparison's rule (stack_scenes.h):
-// ours with the scene's settings (our defaults, 4 substeps, sleeping off; the
-// soft step with --soft-step on),
+// ours with the scene's settings (our defaults, 4 substeps, sleeping off) in
+// the soft step (on), the Fx2D pipeline (off) or both, one row each (both,
+// the default; soft_step is always set, whichever pipeline is the default),
 // each peer with its own defaults but 4 substeps and sleeping off
 // (PeerVariant::Substepped). Per scene and engine it prints ms/frame (median
 // of N fresh runs of T simulated seconds, wall and thread CPU), then one run
@@ -16,7 +17,9 @@
 // dynamic body between the two instants) and the largest penetration up to
 // each S (our detection on the engine's poses, as every benchmark measures
 // it), and each engine's time over Box2D v3's. A table goes to stdout (the
-// packaged Chipmunk prints a banner there too), CSV rows to FILE.
+// packaged Chipmunk prints a banner there too), CSV rows to FILE; the
+// pipeline column says which pipeline a row of ours ran (soft, fx2d) and
+// default_pipeline which one a default WorldSettings uses in this build.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -30,6 +33,7 @@
 #include "collision2d/contact_solver.h"
 #include "engine.h"
 #include "stack_scenes.h"
+#include "sweep.h"
 #include "timing.h"
 
 namespace
@@ -50,7 +54,7 @@ struct Arguments
   std::vector<std::string> scenes;    ///< empty: all stacks
   std::vector<EngineKind> engines;    ///< empty: every engine built in
   std::string csv;                    ///< empty: no CSV
-  bool soft_step = false;             ///< ours with WorldSettings::soft_step
+  std::vector<Pipeline> pipelines{Pipeline::Soft, Pipeline::Fx2d};  ///< ours, once per pipeline
 };
 
 /// What one engine shows at one checkpoint of the accuracy run.
@@ -64,6 +68,7 @@ struct Checkpoint
 struct EngineResult
 {
   EngineKind kind = EngineKind::Collision2d;
+  std::string pipeline;  ///< ours: "soft" or "fx2d"; peers: empty
   double ms_per_frame = 0.0;
   double cpu_ms_per_frame = 0.0;
   std::vector<Checkpoint> checkpoints;
@@ -73,7 +78,8 @@ struct EngineResult
 {
   std::fprintf(stderr,
                "%s\nusage: collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T] "
-               "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE] [--soft-step on|off]\n",
+               "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE] "
+               "[--soft-step on|off|both]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -143,7 +149,22 @@ Arguments parse_arguments(int argc, char** argv)
     }
     else if (flag == "--soft-step")
     {
-      args.soft_step = value == "on";
+      if (value == "on")
+      {
+        args.pipelines = {Pipeline::Soft};
+      }
+      else if (value == "off")
+      {
+        args.pipelines = {Pipeline::Fx2d};
+      }
+      else if (value == "both")
+      {
+        args.pipelines = {Pipeline::Soft, Pipeline::Fx2d};
+      }
+      else
+      {
+        usage("--soft-step takes on, off or both");
+      }
     }
     else
     {
@@ -157,14 +178,12 @@ Arguments parse_arguments(int argc, char** argv)
   return args;
 }
 
-EngineConfig config_for(EngineKind kind, const BenchScene& scene, bool soft_step)
+EngineConfig config_for(EngineKind kind, const BenchScene& scene, Pipeline pipeline)
 {
-  // Ours takes the scene's settings as they are (with the step asked for); a
-  // peer its defaults with the scene's substeps and sleeping off.
+  // Ours takes the scene's settings as they are (with the pipeline asked
+  // for); a peer its defaults with the scene's substeps and sleeping off.
   const PeerVariant variant = kind == EngineKind::Collision2d ? PeerVariant::Matched : PeerVariant::Substepped;
-  WorldSettings settings = scene.scene.settings;
-  settings.soft_step = soft_step;
-  return EngineConfig{kind, variant, settings};
+  return EngineConfig{kind, variant, with_pipeline(scene.scene.settings, pipeline)};
 }
 
 std::vector<BodyState> read_states(const Engine& engine, std::size_t count)
@@ -245,11 +264,12 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
   return out;
 }
 
-EngineResult measure(const BenchScene& scene, EngineKind kind, const Arguments& args)
+EngineResult measure(const BenchScene& scene, EngineKind kind, Pipeline pipeline, const Arguments& args)
 {
-  const EngineConfig config = config_for(kind, scene, args.soft_step);
+  const EngineConfig config = config_for(kind, scene, pipeline);
   EngineResult r;
   r.kind = kind;
+  r.pipeline = kind == EngineKind::Collision2d ? pipeline_name(config.settings) : "";
   std::vector<double> wall;
   std::vector<double> cpu;
   for (int i = 0; i < args.repetitions; ++i)
@@ -294,14 +314,16 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
     const double cpu_ratio = ratio_to_v3(results, &EngineResult::cpu_ms_per_frame, r);
     for (const Checkpoint& c : r.checkpoints)
     {
+      const std::string engine = engine_name(r.kind) + (r.pipeline.empty() ? "" : " " + r.pipeline);
       std::printf("| %s | %zu | %s | %.3g | %.3g | %.3g | %.3g | %g | %.3g | %.3g |\n", scene.name.c_str(), boxes,
-                  engine_name(r.kind).c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
+                  engine.c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
                   c.drift, c.max_penetration);
       if (csv != nullptr)
       {
-        std::fprintf(csv, "%s,%zu,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
-                     engine_name(r.kind).c_str(), variant_name(config_for(r.kind, scene, false).variant).c_str(),
-                     r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds, c.drift, c.max_penetration);
+        std::fprintf(csv, "%s,%zu,%s,%s,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
+                     engine_name(r.kind).c_str(),
+                     variant_name(config_for(r.kind, scene, Pipeline::Fx2d).variant).c_str(), r.pipeline.c_str(),
+                     default_pipeline_name().c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds, c.drift, c.max_penetration);
       }
     }
   }
@@ -335,7 +357,7 @@ int main(int argc, char** argv)
   const std::vector<std::string> names = args.scenes.empty() ? stack_scene_names() : args.scenes;
   if (csv != nullptr)
   {
-    std::fprintf(csv, "scene,boxes,engine,variant,ms_per_frame,cpu_ms_per_frame,ms_over_box2d_v3,"
+    std::fprintf(csv, "scene,boxes,engine,variant,pipeline,default_pipeline,ms_per_frame,cpu_ms_per_frame,ms_over_box2d_v3,"
                       "cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m\n");
   }
   std::printf("| scene | boxes | engine | ms/frame | CPU ms/frame | time / Box2D v3 | CPU time / Box2D v3 | "
@@ -348,8 +370,15 @@ int main(int argc, char** argv)
       std::vector<EngineResult> results;
       for (EngineKind kind : args.engines)
       {
-        std::fprintf(stderr, "stack %s %s\n", name.c_str(), engine_name(kind).c_str());
-        results.push_back(measure(scene, kind, args));
+        // Ours once per pipeline asked for; a peer once.
+        const std::vector<Pipeline> pipelines =
+            kind == EngineKind::Collision2d ? args.pipelines : std::vector<Pipeline>{Pipeline::Fx2d};
+        for (Pipeline pipeline : pipelines)
+        {
+          std::fprintf(stderr, "stack %s %s%s\n", name.c_str(), engine_name(kind).c_str(),
+                       kind == EngineKind::Collision2d ? (pipeline == Pipeline::Soft ? " soft" : " fx2d") : "");
+          results.push_back(measure(scene, kind, pipeline, args));
+        }
       }
       print_scene(scene, results, csv);
     }

@@ -4,12 +4,14 @@
 # solver residual sweep, the stack scenes against every peer and the
 # scaling runs (one process per size, for the peak memory), then writes
 # docs/perf/*.csv, docs/perf/*.png (gnuplot) and docs/performance.md.
+# Ours runs in both pipelines (soft step and Fx2D, each set explicitly) in
+# the sweep and the stacks; the report follows whichever is the default.
 #
 #   scripts/performance_report.sh [--quick] [--no-build]
 #
-# --quick thins every grid and shortens the long runs (a few minutes instead
-# of about fifteen on two cores, plus about twelve for the stacks' 60 s runs
-# in every peer). Environment: COLLISION2D_PERF_BUILD (build folder, default
+# --quick thins every grid and shortens the long runs (about five minutes
+# instead of about twenty-five on two cores, most of it the stacks' 60 s runs
+# in every engine). Environment: COLLISION2D_PERF_BUILD (build folder, default
 # .build/perf), COLLISION2D_JOBS (default 2), COLLISION2D_BOX2D_V3_DIR
 # (optional: a Box2D v3 checkout with its Release static library built under
 # it, in build/src/, lib/ or src/, made by you in a scratch folder outside
@@ -49,7 +51,7 @@ log() { printf '[performance] %s\n' "$*" >&2; }
 # What the report needs beyond the package's own build dependencies: the
 # plotter and the two peers (installed only when missing).
 install_apt_packages "${SYSTEM_PACKAGES[@]}" gnuplot-nox python3
-for tool in cmake gnuplot python3; do
+for tool in cmake gnuplot "$SYSTEM_PYTHON"; do
   command -v "$tool" > /dev/null || { log "error: $tool is required"; exit 1; }
 done
 
@@ -72,16 +74,22 @@ if [[ -n $BOX2D_V3_DIR ]]; then
 fi
 mkdir -p "$OUT"
 START=$(date +%s)
+PART_START=$START
+# Logs how long the part just finished took (for the time budget).
+part_done() { local now; now=$(date +%s); log "$1 took $(( now - PART_START )) s"; PART_START=$now; }
 
-log "sweep: our knobs, the peers and the 60 s stacks (progress below)"
+log "sweep: our knobs in both pipelines, the peers and the 60 s stacks (progress in $BUILD/sweep.log)"
 "$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
+part_done sweep
 
 log "solver residuals on random clusters"
 "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
+part_done solver
 
-log "stacks: ours and every peer built in, ${STACK_SECONDS} s"
-"$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
+log "stacks: ours (both pipelines) and every peer built in, ${STACK_SECONDS} s"
+"$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --soft-step both --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
   2> "$BUILD/stacks.log" || { tail "$BUILD/stacks.log" >&2; exit 1; }
+part_done stacks
 
 log "scaling: one process per engine and size"
 "$SCALING" --header > "$OUT/scaling.csv"
@@ -92,9 +100,12 @@ for n in "${SCALING_SIZES[@]}"; do
       log "scaling: $engine at $n bodies not measured (not built in?)"
   done
 done
+part_done scaling
 
 ELAPSED=$(( $(date +%s) - START ))
 log "measured in ${ELAPSED} s; writing plots and docs/performance.md"
-python3 "$ROOT/scripts/performance_report.py" --perf-dir "$OUT" --doc "$ROOT/docs/performance.md" \
+# The renderer needs only the standard library; the system interpreter, not
+# whichever python3 comes first on PATH.
+"$SYSTEM_PYTHON" "$ROOT/scripts/performance_report.py" --perf-dir "$OUT" --doc "$ROOT/docs/performance.md" \
   --elapsed "$ELAPSED" ${QUICK[@]+"${QUICK[@]}"}
 log "done: docs/performance.md"

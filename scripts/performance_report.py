@@ -454,6 +454,14 @@ def guidance_pipeline(runs, stacks, default):
     if measured:
         line += (f". The soft step's defaults cost less CPU time than Fx2D's on {len(cheaper)} of "
                  f"{len(measured)} scenes (it finds contacts once a frame instead of every substep)")
+    # Whether velocity_iterations changed anything in the soft step of this build.
+    pairs = [(r, baseline(runs, r["scene"], "soft")) for r in runs
+             if r["part"] == "world" and r["pipeline"] == "soft" and r["knob"] == "iterations"]
+    pairs = [(r, b) for r, b in pairs if b]
+    if pairs and all(r["err"] == b["err"] and r["pen"] == b["pen"] for r, b in pairs):
+        line += (f". In this build `velocity_iterations` did not change any result of the soft step ({len(pairs)} "
+                 f"runs at other iteration counts matched their defaults exactly): it solves each substep once and "
+                 f"relaxes once, so tune it with the substeps and the contact knobs")
     return line + ". The exact solver mode always steps the Fx2D way. Per use:"
 
 

@@ -489,7 +489,7 @@ def guidance_stacks(runs, stacks, default):
             f"{fmt(max((r['seconds'] for r in stacks), default=float('nan')))} s it drifted less on "
             f"{len(won)} of {len(scenes)} stacks of the Box2D v3 comparison"
             + (f" (not on {', '.join(lost)}, where {PIPELINE_PHRASES[other(pick)]} drifted less)" if lost else "")
-            + " (drift from 1 s, largest penetration, CPU time per frame):"
+            + "; drift from 1 s, largest penetration and CPU time per frame:"
             if scenes else "- **Stacks.** No stack bench rows in this run")
     lines = [line] + parts
     # The cheapest long stand under 1 mm, and the steadiest, per pipeline.
@@ -718,7 +718,7 @@ def defaults_target_rows(runs, default):
         return b, fn(b) + (f" ({PIPELINE_NAMES[other_p]}: {fn(o)})" if o else "")
 
     b, text = measured("bouncing_disks", lambda r: fmt(r["err"]))
-    rows.append([f"bounce at the defaults: |e measured - e| < {fmt(BOUNCE_TARGET)}", text,
+    rows.append([f"bounce at the defaults: \\|e measured - e\\| < {fmt(BOUNCE_TARGET)}", text,
                  verdict(b["err"], BOUNCE_TARGET) if b else "not measured"])
     incl = [(s, baseline(runs, s, default), baseline(runs, s, other_p)) for s in ["incline", "incline_slide"]]
     incl = [x for x in incl if x[1]]

@@ -301,7 +301,7 @@ set output '{png}'
 set title '{scene}: accuracy against time per frame (lower left is better)'
 set logscale xy
 set xlabel 'wall time per frame (ms, median)'
-set ylabel '{ylabel} (0 drawn at {PLOT_FLOOR:g})'
+set ylabel '{ylabel} (below {PLOT_FLOOR:g}, 0 included: drawn at {PLOT_FLOOR:g})'
 set grid
 set key below horizontal maxcols 3 width -4
 plot {plot}
@@ -390,7 +390,7 @@ def machine_section(args, runs, stacks, scaling, default):
             f"- Peers: Box2D 2.4.1 and Chipmunk 7 in every part; {v3}.\n"
             f"- Ours in both pipelines, each run naming its own: the **soft step** (`soft_step: true`) and the "
             f"**Fx2D** order (`soft_step: false`). The default in the build measured: the "
-            f"**{PIPELINE_NAMES[default]}**.\n")
+            f"**{PIPELINE_PHRASES[default].replace('the ', '', 1)}**.\n")
 
 
 # -- Guidance -----------------------------------------------------------------

@@ -323,7 +323,8 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
         std::fprintf(csv, "%s,%zu,%s,%s,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
                      engine_name(r.kind).c_str(),
                      variant_name(config_for(r.kind, scene, Pipeline::Fx2d).variant).c_str(), r.pipeline.c_str(),
-                     default_pipeline_name().c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds, c.drift, c.max_penetration);
+                     default_pipeline_name().c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
+                     c.drift, c.max_penetration);
       }
     }
   }
@@ -357,8 +358,8 @@ int main(int argc, char** argv)
   const std::vector<std::string> names = args.scenes.empty() ? stack_scene_names() : args.scenes;
   if (csv != nullptr)
   {
-    std::fprintf(csv, "scene,boxes,engine,variant,pipeline,default_pipeline,ms_per_frame,cpu_ms_per_frame,ms_over_box2d_v3,"
-                      "cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m\n");
+    std::fprintf(csv, "scene,boxes,engine,variant,pipeline,default_pipeline,ms_per_frame,cpu_ms_per_frame,"
+                      "ms_over_box2d_v3,cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m\n");
   }
   std::printf("| scene | boxes | engine | ms/frame | CPU ms/frame | time / Box2D v3 | CPU time / Box2D v3 | "
               "run (s) | drift 1 s -> run end (m) | largest penetration (m) |\n|---|---|---|---|---|---|---|---|---|---|\n");

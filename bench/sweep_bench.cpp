@@ -123,8 +123,8 @@ void print_run_header()
 {
   std::fprintf(
       g_csv,
-      "part,scene,kind,engine,variant,pipeline,default_pipeline,knob,value,substeps,iterations,slop,warm_starting,time_of_impact,"
-      "solver_mode,seconds,ms_per_step,cpu_ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
+      "part,scene,kind,engine,variant,pipeline,default_pipeline,knob,value,substeps,iterations,slop,warm_starting,"
+      "time_of_impact,solver_mode,seconds,ms_per_step,cpu_ms_per_step,max_penetration_m,drift_m,sink_m,energy_error,bounce_error,"
       "incline_accel_error,tunnelled,error,error_name\n");
 }
 
@@ -139,7 +139,8 @@ void print_run(const std::string& part, const BenchScene& scene, const RunSpec& 
   // Box2D v3 has no velocity-iteration count to match.
   const bool no_iterations = peer_defaults || run.config.kind == EngineKind::Box2dV3;
   const std::string iterations = no_iterations ? "" : std::to_string(s.velocity_iterations);
-  std::fprintf(g_csv, "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
+  std::fprintf(g_csv,
+               "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
                part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
                variant_name(run.config.variant).c_str(), ours ? pipeline_name(s).c_str() : "",
                default_pipeline_name().c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),

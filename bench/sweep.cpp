@@ -279,6 +279,11 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
 void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
   runs.add("baseline", steps_text(base.substeps, base.velocity_iterations), base);
+  // The exact mode in the soft step: as in Fx2D, not on the pyramid's one big cluster.
+  if (scene.name != "pyramid")
+  {
+    add_exact(base, runs);
+  }
   if (scene.kind == SceneKind::Bullet)
   {
     add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
@@ -363,7 +368,7 @@ WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline)
 
 std::string pipeline_name(const WorldSettings& settings)
 {
-  return settings.soft_step && solver_mode_of(settings) == "iterative" ? "soft" : "fx2d";
+  return settings.soft_step ? "soft" : "fx2d";
 }
 
 std::string default_pipeline_name()
@@ -435,6 +440,12 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   WorldSettings stiff = with_steps(soft, kSoftStiffSubsteps, soft.velocity_iterations);
   stiff.contact_hertz = kSoftStiffHertz;
   runs.push_back(long_run("contact_hertz", text(kSoftStiffHertz), stiff, seconds));
+  // The exact mode on the column (one cluster of 20 boxes), as in Fx2D below.
+  WorldSettings soft_exact = soft;
+  if (!pyramid && set_solver_mode(soft_exact, SolverMode::Exact))
+  {
+    runs.push_back(long_run("stand", "exact", soft_exact, seconds));
+  }
 
   const WorldSettings fx2d = with_pipeline(scene.scene.settings, Pipeline::Fx2d);
   for (const auto& point : points)

@@ -30,8 +30,9 @@ enum class Pipeline
   Fx2d   ///< soft_step off: detect, correct positions, solve velocities every substep
 };
 
-/// Ours, once per pipeline: one knob at a time around the scene's settings,
-/// plus a substeps x iterations grid on the headline scenes. Knobs of one
+/// Ours, once per pipeline: one knob at a time around the scene's settings
+/// (the exact solver mode in both), plus a substeps x iterations grid on the
+/// headline scenes. Knobs of one
 /// pipeline only (Fx2D: position passes, position block, the warm-start
 /// variants, exact position correction; soft step: contact stiffness,
 /// damping, push speed, speculative margin) are swept in that pipeline only.
@@ -53,7 +54,7 @@ bool world_has_solver_mode();
 /// `settings` with soft_step set for `pipeline`.
 WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline);
 /// The pipeline these settings step with: "soft" or "fx2d" (the exact solver
-/// mode always steps the Fx2D way).
+/// mode works in both).
 std::string pipeline_name(const WorldSettings& settings);
 /// pipeline_name of a default-constructed WorldSettings in this build.
 std::string default_pipeline_name();

@@ -10,8 +10,8 @@
 // world:  our World in both pipelines (pipeline column: soft = soft step,
 //         fx2d = the Fx2D order; default_pipeline names the build's default)
 //         over one-knob-at-a-time sweeps (iterations, substeps, warm
-//         starting, time of impact; Fx2D only: slop, position passes and
-//         block, warm-start variants, solver mode; soft step only: contact
+//         starting, time of impact, solver mode; Fx2D only: slop, position
+//         passes and block, warm-start variants; soft step only: contact
 //         stiffness, damping, push speed, speculative margin) and a substeps x
 //         iterations grid;
 // peers:  Box2D 2.4.1, Chipmunk and (when built in) Box2D v3 with their

@@ -462,7 +462,7 @@ def guidance_pipeline(runs, stacks, default):
         line += (f". In this build `velocity_iterations` did not change any result of the soft step ({len(pairs)} "
                  f"runs at other iteration counts matched their defaults exactly): it solves each substep once and "
                  f"relaxes once, so tune it with the substeps and the contact knobs")
-    return line + ". The exact solver mode always steps the Fx2D way. Per use:"
+    return line + ". Per use:"
 
 
 def guidance_stacks(runs, stacks, default):
@@ -517,12 +517,14 @@ def guidance_stacks(runs, stacks, default):
         lines.append(f"  - The soft step's contacts carry weight by compressing: it rested deeper than Fx2D on "
                      f"{deeper} of {len(scenes)} stacks; where penetration matters more than drift, raise "
                      f"`contact_hertz` with the substeps (it is capped at a quarter of the substep rate).")
-    exact = find(runs, "column", "solver_mode", "exact", "fx2d")
+    exact = [r for r in [find(runs, "column", "solver_mode", "exact", p) for p in PIPELINES] if r]
     tail = "  - Let large resting scenes sleep (Auto sleeps worlds of 256+ bodies)"
     if exact:
-        tail = (f"  - The exact solver mode holds the 20-box column still (drift {mm(exact['err'])}) at "
-                f"{fmt(exact['cpu'])} ms a frame, too costly for large clusters. Let large resting scenes sleep "
-                f"(Auto sleeps worlds of 256+ bodies)")
+        tail = ("  - The exact solver mode on the 20-box column: " +
+                "; ".join(f"{PIPELINE_NAMES[r['pipeline']]} drift {mm(r['err'])} at {fmt(r['cpu'])} ms a frame"
+                          for r in exact) +
+                " (too costly for large clusters: the pyramid is not run exact). Let large resting scenes sleep "
+                "(Auto sleeps worlds of 256+ bodies)")
     lines.append(tail + ".")
     return "\n".join(lines)
 
@@ -547,8 +549,16 @@ def guidance_fast(runs, default):
                 cells.append(cell)
     if not cells:
         return None
-    return line + "; ".join(cells) + (". Keep time of impact on Auto (or On) in either pipeline; in the soft "
-                                      "step keep a speculative margin.")
+    advice = []
+    for p in PIPELINES:
+        off = [find(runs, s, "time_of_impact", "off", p) for s in ["bullet_wall", FAST_BULLET]]
+        if any(r and r["err"] > 0 for r in off):
+            advice.append(f"keep time of impact on Auto (or On) in {PIPELINE_PHRASES[p]}")
+    margin = [find(runs, s, "speculative_margin", None, "soft") for s in ["bullet_wall", FAST_BULLET]]
+    if any(r and r["err"] > 0 for r in margin):
+        advice.append("keep a speculative margin in the soft step")
+    return line + "; ".join(cells) + (". So " + " and ".join(advice) + "." if advice else
+                                      ". No setting measured here let a bullet through.")
 
 
 def guidance_scene(runs, default, scene, title, unit, threshold, advice):
@@ -594,17 +604,17 @@ def guidance_mass_ratio(runs, default):
                 drifts.append(f"{PIPELINE_NAMES[p]} {mm(b['err'])}")
                 if p == default and not b["err"] < DRIFT_TARGET_M:
                     failed.append(ratio_text)
-        exact = [r for r in ours(runs, scene, pipeline="fx2d") if r["solver_mode"] == "exact" and finite(r["err"])]
+        exact = [r for r in ours(runs, scene) if r["solver_mode"] == "exact" and finite(r["err"])]
         if exact:
             e = min(exact, key=lambda r: (r["err"], r["cpu"]))
-            drifts.append(f"exact {mm(e['err'])} ({setting(e)}, {fmt(e['cpu'])} ms)")
+            drifts.append(f"best exact {mm(e['err'])} ({setting(e)}, {fmt(e['cpu'])} ms)")
         cells.append(f"{ratio_text}: " + ", ".join(drifts))
     line = ("- **Heavy on light (mass ratios), exact mode.** Drift of the heavy box on a 1 kg box at the "
             "defaults and in the exact solver mode: " + "; ".join(cells))
     if failed:
         line += (f". At the ratios {', '.join(failed)} the default pipeline's iterative solve let the heavy box "
-                 f"drift 1 mm or more; for large mass ratios use `solver_mode: exact` (it steps the Fx2D way), with "
-                 f"`compliance: 0` to keep the heavy box from sinking by load x compliance")
+                 f"drift 1 mm or more; for large mass ratios use `solver_mode: exact` (it works in both pipelines; "
+                 f"in Fx2D add `compliance: 0` to keep the heavy box from sinking by load x compliance)")
     else:
         line += ". The default pipeline held every ratio measured within 1 mm"
     return line + "."
@@ -956,7 +966,7 @@ def main():
 
 
 def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default):
-    mode_note = ("The World's exact solver mode (which steps the Fx2D way) is swept on every scene but the "
+    mode_note = ("The World's exact solver mode is swept in both pipelines on every scene but the "
                  "pyramid: its one cluster of 210 boxes (about 2400 complementarity rows) did not finish 30 frames "
                  "in exact mode within several minutes, so it is not measured there." if world_has_exact else
                  "`WorldSettings` has no solver mode in the build measured here, so the World is swept in its "
@@ -1025,8 +1035,8 @@ Box2D v3*; the time ratio is CPU time per frame, wall in the table).
   and the Fx2D order (detect, correct positions, solve velocities every
   substep). Shared knobs, one at a time around the scene's settings (4
   substeps x 2 velocity iterations, every effect Auto), in both: velocity
-  iterations, substeps 1 to 16, warm starting On/Off, time of impact On/Off
-  on the headline scenes, and on the pyramid, column and gas a substeps
+  iterations, substeps 1 to 16, warm starting On/Off, the exact solver mode,
+  time of impact On/Off on the headline scenes, and on the pyramid, column and gas a substeps
   {{1, 2, 8}} x iterations {{1, 8}} grid. Fx2D only: iterations up to 256 (the
   pyramid to 64; 32 with --quick), slop 0.1 mm and 1 cm, and on the stacks
   `warm_start_before_integration`, 1 and 16 position passes, `position_block`,

@@ -271,6 +271,12 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
       held_position_[i] = b.position();
       held_theta_[i] = b.theta();
     }
+    else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
+    {
+      // In free flight the substep's mean velocity is the end one less half
+      // its gravity kick: a thrown body follows its parabola exactly.
+      b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
+    }
     BodyVelocity& state = velocity_[i];
     state.moved = b.position() - prepared_position_[i];
     const double turned = b.theta() - prepared_theta_[i];

@@ -137,6 +137,25 @@ TEST(WorldSoftStep, PyramidBoxesStayLevelOnTheirAnchors)
   EXPECT_LT(tilt, kLevel);
 }
 
+TEST(WorldSoftStep, ThrownBodyFollowsItsParabola)
+{
+  // Nothing near it: each substep moves it by its mean velocity, so after t
+  // it is at x0 + v0 t + g t^2 / 2 to round-off, whatever the substeps.
+  WorldSettings settings = soft();
+  World world(settings);
+  const Vec2 x0{0.0, 100.0};
+  const Vec2 v0{3.0, 12.0};
+  const BodyId ball = world.add_body(Body(1.0, 0.1, x0, v0));
+  constexpr int kFrames = 90;
+  world.step(kFrames);
+  const double t = kFrames * settings.dt;
+  const Vec2 expected = x0 + t * v0 + (0.5 * t * t) * settings.gravity;
+  const double error = length(world.body(ball).position() - expected);
+  std::printf("thrown body after %.2f s: %.3g m from its parabola\n", t, error);
+  EXPECT_LT(error, 1e-12 * length(expected));
+  EXPECT_LT(length(world.body(ball).velocity() - (v0 + t * settings.gravity)), 1e-12 * length(v0));
+}
+
 TEST(WorldSoftStep, BulletDoesNotTunnel)
 {
   World world = soft_world(scenes::bullet_wall(1e4));

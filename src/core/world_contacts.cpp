@@ -66,15 +66,22 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   }
   broad_phase_.find_pairs(boxes_, pairs_);
   points_.clear();
+  // The narrow phase of the pairs with a moving body, split across the
+  // workers (each writes its own pairs' slots); then, in pair order, the
+  // points with their cached impulses, so the result is the same for any
+  // number of workers.
+  margin_ = margin;
+  manifolds_.resize(pairs_.size());
+  collided_.resize(pairs_.size());
+  workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
   const double warm_scale = ctx.warm ? settings_.warm_start_factor * ctx.h / cache_h_ : 0.0;
-  for (const BodyPair& pair : pairs_)
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
-    const std::size_t i = pair.first;
-    const std::size_t j = pair.second;
-    const bool dynamic = bodies_[i].type() == BodyType::Dynamic || bodies_[j].type() == BodyType::Dynamic;
-    if (!dynamic)
+    const std::size_t i = pairs_[k].first;
+    const std::size_t j = pairs_[k].second;
+    if (!dynamic_pair(i, j))
     {
       continue;
     }
@@ -83,12 +90,15 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
       carry_sleeping_pair(i, j);
       continue;
     }
-    // The soft step keeps pairs within its speculative margin; the Fx2D step
-    // keeps a body stopped at its time of impact touching its obstacle.
-    const bool touch = clamped(i) || clamped(j);
-    const double touching = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
-    const double tolerance = std::max(margin + reach_[i] + reach_[j], touching);
-    add_manifold(i, j, tolerance, warm_scale, ctx.effects.friction);
+    // A pair whose body woke up earlier in this loop was not collided yet.
+    if (collided_[k] == Collided::NotTried)
+    {
+      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k]) ? Collided::Hit : Collided::Miss;
+    }
+    if (collided_[k] == Collided::Hit)
+    {
+      add_manifold(i, j, manifolds_[k], warm_scale, ctx.effects.friction);
+    }
   }
   for (const ContactPoint& row : points_)
   {
@@ -110,13 +120,38 @@ bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Man
   return collide(a, b, m, tolerance);
 }
 
-void WorldImpl::add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction)
+void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
 {
-  Manifold m;
-  if (!collide_pair(i, j, tolerance, m))
+  WorldImpl& w = *static_cast<WorldImpl*>(world);
+  for (std::size_t k = begin; k < end; ++k)
   {
-    return;
+    const std::size_t i = w.pairs_[k].first;
+    const std::size_t j = w.pairs_[k].second;
+    Collided& result = w.collided_[k];
+    result = Collided::NotTried;
+    if (w.dynamic_pair(i, j) && (w.is_mover(i) || w.is_mover(j)))
+    {
+      result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k]) ? Collided::Hit : Collided::Miss;
+    }
   }
+}
+
+bool WorldImpl::dynamic_pair(std::size_t i, std::size_t j) const
+{
+  return bodies_[i].type() == BodyType::Dynamic || bodies_[j].type() == BodyType::Dynamic;
+}
+
+double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
+{
+  // The soft step keeps pairs within its speculative margin; the Fx2D step
+  // keeps a body stopped at its time of impact touching its obstacle.
+  const bool touch = clamped(i) || clamped(j);
+  const double touching = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
+  return std::max(margin_ + reach_[i] + reach_[j], touching);
+}
+
+void WorldImpl::add_manifold(std::size_t i, std::size_t j, const Manifold& m, double warm_scale, bool friction)
+{
   // A moving body reached a sleeping one: its island takes part again.
   if (asleep_[i] || asleep_[j])
   {

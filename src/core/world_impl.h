@@ -13,6 +13,7 @@
 #include "collision2d/collide.h"
 #include "collision2d/world.h"
 #include "contact_kernel.h"
+#include "worker_pool.h"
 
 namespace collision2d
 {
@@ -110,7 +111,12 @@ struct WorldImpl
   /// How far any point of the body can travel in one frame (m).
   double frame_reach(const Body& b) const;
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
-  void add_manifold(std::size_t i, std::size_t j, double tolerance, double warm_scale, bool friction);
+  /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (a WorkerPool job).
+  static void collide_range(void* world, std::size_t begin, std::size_t end);
+  bool dynamic_pair(std::size_t i, std::size_t j) const;
+  /// How far apart the pair's points are kept (m): margin and reach, or touching.
+  double pair_tolerance(std::size_t i, std::size_t j) const;
+  void add_manifold(std::size_t i, std::size_t j, const Manifold& m, double warm_scale, bool friction);
   void carry_sleeping_pair(std::size_t i, std::size_t j);
   /// Index of the first cached contact of pair (a, b), or of where it would be.
   std::size_t cached_pair(BodyId a, BodyId b) const;
@@ -168,6 +174,17 @@ struct WorldImpl
   BroadPhase sweep_phase_;
   std::vector<Aabb> boxes_;
   std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)
+  double margin_ = 0.0;               ///< this detection's speculative margin (m)
+  /// Narrow-phase outcome of each pair, computed by the workers.
+  enum class Collided : unsigned char
+  {
+    NotTried,
+    Miss,
+    Hit
+  };
+  std::vector<Manifold> manifolds_;
+  std::vector<Collided> collided_;
+  WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<bool> swept_;           ///< bodies swept this substep
   std::vector<double> toi_;           ///< fraction of the substep each body travels

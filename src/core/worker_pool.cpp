@@ -1,0 +1,108 @@
+#include "worker_pool.h"
+
+namespace collision2d
+{
+namespace detail
+{
+WorkerPool::WorkerPool(const WorkerPool& other) { resize(other.workers()); }
+
+WorkerPool& WorkerPool::operator=(const WorkerPool& other)
+{
+  if (this != &other)
+  {
+    resize(other.workers());
+  }
+  return *this;
+}
+
+WorkerPool::~WorkerPool() { stop(); }
+
+void WorkerPool::resize(int workers)
+{
+  const std::size_t threads = workers > 1 ? static_cast<std::size_t>(workers - 1) : 0;
+  if (threads == threads_.size())
+  {
+    return;
+  }
+  stop();
+  quitting_ = false;
+  threads_.reserve(threads);
+  for (std::size_t t = 0; t < threads; ++t)
+  {
+    threads_.emplace_back(&WorkerPool::serve, this, t + 1, generation_);
+  }
+}
+
+void WorkerPool::stop()
+{
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    quitting_ = true;
+  }
+  start_.notify_all();
+  for (std::thread& thread : threads_)
+  {
+    thread.join();
+  }
+  threads_.clear();
+}
+
+void WorkerPool::range(std::size_t index, std::size_t& begin, std::size_t& end) const
+{
+  const std::size_t parts = threads_.size() + 1;
+  begin = count_ * index / parts;
+  end = count_ * (index + 1) / parts;
+}
+
+void WorkerPool::run(std::size_t count, Job job, void* context)
+{
+  if (threads_.empty() || count < 2)
+  {
+    job(context, 0, count);
+    return;
+  }
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    job_ = job;
+    context_ = context;
+    count_ = count;
+    pending_ = threads_.size();
+    ++generation_;
+  }
+  start_.notify_all();
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  range(0, begin, end);
+  job(context, begin, end);
+  std::unique_lock<std::mutex> lock(mutex_);
+  done_.wait(lock, [this] { return pending_ == 0; });
+}
+
+void WorkerPool::serve(std::size_t index, std::size_t seen)
+{
+  for (;;)
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    start_.wait(lock, [&] { return quitting_ || generation_ != seen; });
+    if (quitting_)
+    {
+      return;
+    }
+    seen = generation_;
+    std::size_t begin = 0;
+    std::size_t end = 0;
+    range(index, begin, end);
+    const Job job = job_;
+    void* const context = context_;
+    lock.unlock();
+    job(context, begin, end);
+    lock.lock();
+    if (--pending_ == 0)
+    {
+      done_.notify_one();
+    }
+  }
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,56 @@
+// Internal to the core: the World's worker threads. A job over [0, count) is
+// cut into one contiguous range per worker; the calling thread takes the
+// first range, so one worker means no thread at all. A job writes only to
+// its own range's slots, so the result does not depend on the worker count.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace collision2d
+{
+namespace detail
+{
+class WorkerPool
+{
+public:
+  /// A job: processes items [begin, end) with its context.
+  using Job = void (*)(void* context, std::size_t begin, std::size_t end);
+
+  WorkerPool() = default;
+  /// A copy has its own threads, as many as the original.
+  WorkerPool(const WorkerPool& other);
+  WorkerPool& operator=(const WorkerPool& other);
+  ~WorkerPool();
+
+  /// Workers including the calling thread (at least 1).
+  int workers() const { return static_cast<int>(threads_.size()) + 1; }
+  /// Starts or stops threads so `workers` take part (values below 1 count as 1).
+  void resize(int workers);
+  /// Runs `job` over [0, count) split across the workers; returns when all are done.
+  void run(std::size_t count, Job job, void* context);
+
+private:
+  void stop();
+  /// A thread's loop: waits for a job newer than `seen`, takes its range.
+  void serve(std::size_t index, std::size_t seen);
+  /// The range of [0, count_) that worker `index` takes.
+  void range(std::size_t index, std::size_t& begin, std::size_t& end) const;
+
+  std::vector<std::thread> threads_;
+  std::mutex mutex_;
+  std::condition_variable start_;
+  std::condition_variable done_;
+  std::size_t generation_ = 0;  ///< bumped for each job; threads wait for a new one
+  std::size_t pending_ = 0;     ///< threads still working on the current job
+  bool quitting_ = false;
+  Job job_ = nullptr;
+  void* context_ = nullptr;
+  std::size_t count_ = 0;
+};
+
+}  // namespace detail
+}  // namespace collision2d

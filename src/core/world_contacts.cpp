@@ -68,7 +68,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   points_.clear();
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
-  const double warm_scale = ctx.warm ? settings_.warm_start_factor * ctx.h / cache_h_ : 0.0;
+  const double warm_scale = ctx.warm ? ctx.h / cache_h_ : 0.0;
   for (const BodyPair& pair : pairs_)
   {
     const std::size_t i = pair.first;

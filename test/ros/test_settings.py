@@ -115,7 +115,7 @@ class Settings(unittest.TestCase):
             self.assertEqual(getattr(back, name), getattr(changed, name), name)
         # dynamic_reconfigure shows the loaded settings too.
         shown = dynparam_get()
-        self.assertEqual(shown["world_warm_start_every_substep"], changed.warm_start_every_substep)
+        self.assertEqual(shown["world_warm_start_before_integration"], changed.warm_start_before_integration)
         self.assertEqual(shown["world_sleep_auto_min_bodies"], changed.sleep_auto_min_bodies)
         self.assertEqual(shown["world_toi_displacement_fraction"], changed.toi_displacement_fraction)
 

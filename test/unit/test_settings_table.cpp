@@ -96,11 +96,11 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
     }
   }
   // gravity, dt, substeps, velocity_iterations, slop, compliance,
-  // restitution_threshold, warm_start_factor, toi_displacement_fraction, three
-  // sleep thresholds, position_iterations and the soft step's contact_hertz,
+  // restitution_threshold, toi_displacement_fraction, three sleep thresholds,
+  // position_iterations and the soft step's contact_hertz,
   // contact_damping_ratio, contact_push_speed and speculative_margin have
   // bounds or must be finite.
-  EXPECT_EQ(refused, 17u);
+  EXPECT_EQ(refused, 16u);
 }
 
 TEST(SettingsTable, ValidationMessagesKeepTheirWording)
@@ -159,18 +159,6 @@ TEST(SettingsTable, SceneFileRoundTripKeepsEveryField)
   scene.settings = test::world_settings_off_default();
   const Scene back = scenes::parse_scene_yaml(scenes::scene_to_yaml(scene), "round_trip");
   test::expect_same_world_settings(scene.settings, back.settings);
-}
-
-TEST(SettingsTable, WarmStartEverySubstepFalseSurvivesAFile)
-{
-  // It was dropped by both the reader and the writer and came back true.
-  Scene scene;
-  scene.settings.warm_start_every_substep = false;
-  const std::string text = scenes::scene_to_yaml(scene);
-  EXPECT_NE(text.find("warm_start_every_substep: false"), std::string::npos) << text;
-  EXPECT_FALSE(scenes::parse_scene_yaml(text).settings.warm_start_every_substep);
-  EXPECT_FALSE(scenes::parse_scene_yaml("settings: {warm_start_every_substep: false}\n").settings
-                   .warm_start_every_substep);
 }
 
 // A table of former names as later versions will have one.

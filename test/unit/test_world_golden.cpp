@@ -114,8 +114,6 @@ const Golden kGolden[] = {
        s.velocity_iterations = 4;
      },
      60, 0x1a9a15c3f0dcfe8aULL},
-    {"pyramid_cold_substeps", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
-     [](WorldSettings& s) { s.warm_start_every_substep = false; }, 60, 0x90b5d91c36ba4385ULL},
     {"pyramid_position_block", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.position_block = true;

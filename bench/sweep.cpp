@@ -262,11 +262,6 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
       runs.add("position_iterations", std::to_string(passes), s);
     }
     add_flip(base, &WorldSettings::position_block, "position_block", runs);
-    add_flip(base, &WorldSettings::warm_start_every_substep, "warm_start_every_substep", runs);
-    if (!quick)
-    {
-      add_values(base, &WorldSettings::warm_start_factor, "warm_start_factor", {0.5}, runs);
-    }
   }
   if (is_headline(scene) && !quick)
   {

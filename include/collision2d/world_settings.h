@@ -19,9 +19,6 @@ struct Material
 
 // Why some knobs exist (the table's docs are one line each; their measured
 // effects are in docs/performance.md):
-//  - warm_start_every_substep: false warm-starts only a frame's first substep,
-//    as the plain Fx2D order does; the later substeps then start cold and two
-//    Gauss-Seidel passes cannot carry a tall stack from zero.
 //  - toi_displacement_fraction: a dynamic body is swept for time of impact when
 //    its displacement in one substep exceeds this fraction of (its inner radius
 //    + the smallest inner radius in the world); below it nothing is skipped.
@@ -68,8 +65,6 @@ struct Material
   X(time_of_impact, Toggle, Toggle::Auto, kAnyFinite, "", "Sweeps of fast bodies to their time of impact") \
   X(warm_starting, Toggle, Toggle::Auto, kAnyFinite, "", "Solves start from the last substep's impulses") \
   X(sleeping, Toggle, Toggle::Auto, kAnyFinite, "", "Resting islands sleep") \
-  X(warm_start_factor, double, 1.0, kUnitInterval, "", "Fraction of the cached impulses applied when warm starting") \
-  X(warm_start_every_substep, bool, true, kAnyFinite, "", "Warm-start every substep, not just a frame's first (tall stacks need it)") \
   X(toi_displacement_fraction, double, 0.5, kPositive, "", "Sweep a body moving more than this fraction of its size per substep") \
   X(sleep_linear_speed, double, 0.05, kNonNegative, "m/s", "A dynamic body rests below this speed") \
   X(sleep_angular_speed, double, 0.1, kNonNegative, "rad/s", "... and below this angular speed") \
@@ -101,7 +96,7 @@ void visit_world_settings(Settings& settings, Visit&& visit)
 }
 
 /// Settings that files of earlier versions name and this version does not
-/// (none yet: add a line in world_settings.cpp when a setting is renamed or retired).
+/// (add a line in world_settings.cpp when a setting is renamed or retired).
 const std::vector<FormerSetting>& former_world_settings();
 
 /// Throws std::invalid_argument naming the field for an out-of-range setting.

@@ -76,7 +76,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
-  const double warm_scale = ctx.warm ? settings_.warm_start_factor * ctx.h / cache_h_ : 0.0;
+  const double warm_scale = ctx.warm ? ctx.h / cache_h_ : 0.0;
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
     const std::size_t i = pairs_[k].first;

@@ -44,7 +44,13 @@ const std::vector<FormerSetting>& former_world_settings()
 {
   // {"old_name", "new_name" or "" when retired, "why"}: files that name
   // old_name keep loading, with a warning naming new_name.
-  static const std::vector<FormerSetting> table;
+  static const std::vector<FormerSetting> table = {
+      {"warm_start_factor", "",
+       "it acted only with soft_step false, where any value below 1 made stacks sag or collapse; "
+       "warm starts apply the cached impulses in full"},
+      {"warm_start_every_substep", "",
+       "it acted only with soft_step false, where turning it off made stacks collapse; every substep warm-starts"},
+  };
   return table;
 }
 

@@ -3,7 +3,7 @@
 // its code.
 //
 // Refinements of the plain Fx2D order, each a setting or explained where coded:
-//  - warm starting also on later substeps (warm_start_every_substep);
+//  - warm starting on every substep, not just a frame's first;
 //  - several penetration passes (position_iterations), optionally with a
 //    manifold's two points as one block (position_block), and a sticking
 //    contact taking back the tangential part of its integration move;
@@ -92,7 +92,7 @@ void WorldImpl::fx2d_frame(StepContext& ctx, StepReport& report)
     // the friction state read; swapping keeps both buffers' capacity.
     cache_.swap(contacts_);
     ctx.first = k == 0;
-    ctx.warm = ctx.warm_available && (ctx.first || settings_.warm_start_every_substep);
+    ctx.warm = ctx.warm_available;
     substep(ctx, report);
     publish_contacts();                                   // world_contacts.cpp
     cache_h_ = ctx.h;

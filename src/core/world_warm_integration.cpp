@@ -39,7 +39,7 @@ void WorldImpl::predict_velocities(const StepContext& ctx)
     return;
   }
   // The same rescaling to this substep's length as detection applies.
-  const double scale = settings_.warm_start_factor * ctx.h / cache_h_;
+  const double scale = ctx.h / cache_h_;
   for (std::size_t k = 0; k < points_.size(); ++k)
   {
     ContactPoint& row = points_[k];

@@ -313,13 +313,13 @@ TEST(WorldSettingsMsg, RoundTripAndRejection)
   settings.substeps = 8;
   settings.friction = Toggle::Off;
   settings.sleeping = Toggle::On;
-  settings.warm_start_factor = 0.5;
-  settings.warm_start_every_substep = false;
+  settings.toi_displacement_fraction = 0.25;
+  settings.warm_start_before_integration = true;
   settings.sleep_time = 2.0;
   settings.sleep_auto_min_bodies = 10;
   const WorldSettings back = world_settings_from_msg(world_settings_to_msg(settings));
-  EXPECT_EQ(back.warm_start_factor, 0.5);
-  EXPECT_FALSE(back.warm_start_every_substep);
+  EXPECT_EQ(back.toi_displacement_fraction, 0.25);
+  EXPECT_TRUE(back.warm_start_before_integration);
   EXPECT_EQ(back.sleep_time, 2.0);
   EXPECT_EQ(back.sleep_auto_min_bodies, 10u);
   EXPECT_EQ(back.gravity, settings.gravity);

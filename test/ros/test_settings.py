@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """The settings tables as a user meets them: `dynparam set` with a value out of
 range is refused (the old value stays, `dynparam get` shows it, a WARN names
-the field, value and range), and every WorldConfig field survives SetWorld,
-SaveWorld, LoadScene and LoadWorld.
+the field, value and range), every WorldConfig field survives SetWorld,
+SaveWorld, LoadScene and LoadWorld, and a snapshot naming retired settings
+loads with a WARN.
 """
 import ast
 import os
@@ -115,9 +116,28 @@ class Settings(unittest.TestCase):
             self.assertEqual(getattr(back, name), getattr(changed, name), name)
         # dynamic_reconfigure shows the loaded settings too.
         shown = dynparam_get()
-        self.assertEqual(shown["world_warm_start_every_substep"], changed.warm_start_every_substep)
+        self.assertEqual(shown["world_warm_start_before_integration"], changed.warm_start_before_integration)
         self.assertEqual(shown["world_sleep_auto_min_bodies"], changed.sleep_auto_min_bodies)
         self.assertEqual(shown["world_toi_displacement_fraction"], changed.toi_displacement_fraction)
+
+    def test_a_snapshot_naming_retired_settings_loads_with_a_warn(self):
+        path = os.path.join(tempfile.mkdtemp(), "old.snapshot.yaml")
+        saved = rospy.ServiceProxy("save_world", SaveWorld)(path=path)
+        self.assertTrue(saved.success, saved.message)
+        before = self.get_world().state.settings
+        with open(path) as f:
+            text = f.read()
+        self.assertIn("\nsettings:\n", text)
+        # As an earlier version wrote it: the retired warm-start knobs among the settings.
+        retired = "  warm_start_factor: 0.9\n  warm_start_every_substep: false\n"
+        text = text.replace("\nsettings:\n", "\nsettings:\n" + retired, 1)
+        with open(path, "w") as f:
+            f.write(text)
+        loaded = rospy.ServiceProxy("load_world", LoadWorld)(path=path)
+        self.assertTrue(loaded.success, loaded.message)
+        self.wait_for_warning("settings.warm_start_factor is retired and ignored")
+        self.wait_for_warning("settings.warm_start_every_substep is retired and ignored")
+        self.assertEqual(self.get_world().state.settings, before)
 
 
 if __name__ == "__main__":

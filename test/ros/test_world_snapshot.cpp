@@ -145,6 +145,35 @@ TEST(WorldSnapshotFile, AFileWithoutStepStateStillLoadsAndStartsCold)
   EXPECT_NO_THROW(restored.step());
 }
 
+TEST(WorldSnapshotFile, ASnapshotNamingRetiredSettingsLoadsWithWarningsAndStepsOnTheSame)
+{
+  World original = busy_world();
+  original.step(60);
+  const std::string text = snapshot_to_yaml(take_snapshot(original, "busy", WorldClock{67, 1.1}));
+  // As an earlier version wrote it: the retired warm-start knobs among the settings.
+  std::string old_text = text;
+  const std::size_t settings = old_text.find("\nsettings:\n");
+  ASSERT_NE(settings, std::string::npos) << text;
+  old_text.insert(settings + 11, "  warm_start_factor: 1\n  warm_start_every_substep: true\n");
+  std::vector<std::string> warnings;
+  scenes::set_warning_handler([&](const std::string& message) { warnings.push_back(message); });
+  const WorldSnapshot read = parse_snapshot_yaml(old_text, "old.snapshot.yaml");
+  scenes::set_warning_handler(nullptr);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].rfind("old.snapshot.yaml: settings.warm_start_factor is retired and ignored", 0), 0u)
+      << warnings[0];
+  EXPECT_EQ(warnings[1].rfind("old.snapshot.yaml: settings.warm_start_every_substep is retired and ignored", 0), 0u)
+      << warnings[1];
+  World restored = restore_world(read);
+  EXPECT_EQ(snapshot_to_yaml(take_snapshot(restored, "busy", read.clock)), text);
+  for (int frame = 0; frame < 20; ++frame)
+  {
+    original.step();
+    restored.step();
+    ASSERT_EQ(scene_text(restored), scene_text(original)) << "frame " << frame;
+  }
+}
+
 TEST(WorldSnapshotFile, IsStillAPlainSceneFileAndAPlainSceneIsASnapshot)
 {
   TempFolder folder;

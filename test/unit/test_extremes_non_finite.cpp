@@ -177,7 +177,6 @@ TEST(ExtremesNonFinite, WorldSettingsNameTheField)
       {"slop", [](WorldSettings& s, double v) { s.slop = v; }},
       {"compliance", [](WorldSettings& s, double v) { s.compliance = v; }},
       {"restitution_threshold", [](WorldSettings& s, double v) { s.restitution_threshold = v; }},
-      {"warm_start_factor", [](WorldSettings& s, double v) { s.warm_start_factor = v; }},
       {"toi_displacement_fraction", [](WorldSettings& s, double v) { s.toi_displacement_fraction = v; }},
       {"sleep_linear_speed", [](WorldSettings& s, double v) { s.sleep_linear_speed = v; }},
       {"sleep_angular_speed", [](WorldSettings& s, double v) { s.sleep_angular_speed = v; }},

@@ -391,7 +391,6 @@ TEST(SceneFiles, SaveThenLoadKeepsEverySettingTypeAndAwkwardNumber)
   s.time_of_impact = Toggle::On;
   s.warm_starting = Toggle::Off;
   s.sleeping = Toggle::On;
-  s.warm_start_factor = 0.85;
   s.toi_displacement_fraction = 0.3;
   s.sleep_linear_speed = 0.01;
   s.sleep_angular_speed = 0.02;
@@ -473,7 +472,7 @@ TEST(SceneFiles, EveryErrorNamesTheLineAndTheKey)
       {"settings:\n  dt: 0.01\n  substeps: 0\n", 3, "settings.substeps", "at least 1"},
       {"settings:\n  friction: maybe\n", 2, "settings.friction", "auto, on or off"},
       {"settings:\n  dt: -1\n", 2, "settings.dt", "must be positive"},
-      {"settings:\n  warm_start_factor: 1.5\n", 2, "settings.warm_start_factor", "[0, 1]"},
+      {"settings:\n  contact_push_speed: 0\n", 2, "settings.contact_push_speed", "must be positive"},
       {"settings:\n  gravity: [0, 1]\n", 2, "settings.gravity", "unknown key"},
       {"settings:\n  position_iterations: 0\n", 2, "settings.position_iterations", "at least 1"},
       {"settings:\n  solver_mode: pivoting\n", 2, "settings.solver_mode", "iterative or exact"},

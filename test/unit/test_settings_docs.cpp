@@ -95,16 +95,14 @@ std::string rendered_section()
   visit_world_settings(world, RowWriter(out, "WorldConfig", "world_", true));
   const ResolveSettings resolve;
   visit_resolve_settings(resolve, RowWriter(out, "SolverSettings", "solver_", false));
-  out << "\nFormer names still read from scene and snapshot files (with a WARN naming the replacement):";
-  if (former_world_settings().empty())
-  {
-    out << " none yet.\n";
-  }
+  out << "\nFormer names still read from scene and snapshot files (with a WARN naming the replacement, or "
+      << "saying the setting is retired and ignored):";
+  out << (former_world_settings().empty() ? " none yet.\n" : "\n\n");
   for (const FormerSetting& former : former_world_settings())
   {
-    out << "\n- `" << former.name << "`: "
+    out << "- `" << former.name << "`: "
         << (former.replacement[0] == '\0' ? std::string("retired") : "now `" + std::string(former.replacement) + "`")
-        << (former.note[0] == '\0' ? "" : ", " + std::string(former.note));
+        << (former.note[0] == '\0' ? "" : " (" + std::string(former.note) + ")") << "\n";
   }
   out << kEnd;
   return out.str();

@@ -6,8 +6,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "collision2d/scene.h"
 #include "collision2d/scenes/scene_file.h"
 #include "collision2d/world.h"
 #include "settings_test_support.h"
@@ -96,11 +98,11 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
     }
   }
   // gravity, dt, substeps, velocity_iterations, slop, compliance,
-  // restitution_threshold, warm_start_factor, toi_displacement_fraction, three
-  // sleep thresholds, position_iterations and the soft step's contact_hertz,
+  // restitution_threshold, toi_displacement_fraction, three sleep thresholds,
+  // position_iterations and the soft step's contact_hertz,
   // contact_damping_ratio, contact_push_speed and speculative_margin have
   // bounds or must be finite.
-  EXPECT_EQ(refused, 17u);
+  EXPECT_EQ(refused, 16u);
 }
 
 TEST(SettingsTable, ValidationMessagesKeepTheirWording)
@@ -161,18 +163,6 @@ TEST(SettingsTable, SceneFileRoundTripKeepsEveryField)
   test::expect_same_world_settings(scene.settings, back.settings);
 }
 
-TEST(SettingsTable, WarmStartEverySubstepFalseSurvivesAFile)
-{
-  // It was dropped by both the reader and the writer and came back true.
-  Scene scene;
-  scene.settings.warm_start_every_substep = false;
-  const std::string text = scenes::scene_to_yaml(scene);
-  EXPECT_NE(text.find("warm_start_every_substep: false"), std::string::npos) << text;
-  EXPECT_FALSE(scenes::parse_scene_yaml(text).settings.warm_start_every_substep);
-  EXPECT_FALSE(scenes::parse_scene_yaml("settings: {warm_start_every_substep: false}\n").settings
-                   .warm_start_every_substep);
-}
-
 // A table of former names as later versions will have one.
 const std::vector<FormerSetting> kFormerForTest = {
     {"iterations_per_substep", "velocity_iterations", "renamed in a test"},
@@ -222,8 +212,57 @@ TEST(SettingsTable, UnknownKeysStillFailAndWarningsGoToTheHandler)
   EXPECT_EQ(handled[0], "old.yaml: settings.contact_hertz is retired and ignored");
 }
 
+/// True when former_world_settings() lists `name` as retired.
+bool listed_as_retired(const std::string& name)
+{
+  for (const FormerSetting& former : former_world_settings())
+  {
+    if (former.name == name)
+    {
+      return std::string(former.replacement).empty();
+    }
+  }
+  return false;
+}
+
+TEST(SettingsTable, RetiredWarmStartKnobsLoadWithAWarningAndChangeNothing)
+{
+  // Files of earlier versions may name them; the Fx2D step they acted in.
+  const std::string head = "settings:\n  soft_step: false\n";
+  const std::string tail = "generate:\n  - pyramid: {base: 4}\n";
+  const Scene without = scenes::parse_scene_yaml(head + tail, "new.yaml");
+  const std::pair<std::string, std::string> retired[] = {{"warm_start_factor", "0.9"},
+                                                         {"warm_start_every_substep", "false"}};
+  for (const auto& [name, value] : retired)
+  {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(listed_as_retired(name));
+    std::vector<std::string> warnings;
+    scenes::SceneReading reading;  // the real former_world_settings()
+    reading.warnings = &warnings;
+    const Scene with = scenes::parse_scene_yaml(head + "  " + name + ": " + value + "\n" + tail, "old.yaml", reading);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0].rfind("old.yaml: settings." + name + " is retired and ignored (", 0), 0u) << warnings[0];
+    test::expect_same_world_settings(with.settings, without.settings);
+    EXPECT_EQ(scenes::scene_to_yaml(with), scenes::scene_to_yaml(without));
+    World a = make_world(with);
+    World b = make_world(without);
+    for (int frame = 0; frame < 30; ++frame)
+    {
+      a.step();
+      b.step();
+    }
+    for (BodyId id : b.body_ids())
+    {
+      EXPECT_EQ(a.body(id).position(), b.body(id).position()) << "body " << id;
+      EXPECT_EQ(a.body(id).theta(), b.body(id).theta()) << "body " << id;
+    }
+  }
+}
+
 TEST(SettingsTable, FormerNamesAreNotCurrentNames)
 {
+  ASSERT_FALSE(former_world_settings().empty());
   for (const FormerSetting& former : former_world_settings())
   {
     bool current = false;

@@ -104,9 +104,6 @@ TEST(WorldApi, RejectsBadSettingsNamingTheField)
   s.gravity = Vec2{0.0, NAN};
   expect_rejected(s, "gravity");
   s = WorldSettings();
-  s.warm_start_factor = 1.5;
-  expect_rejected(s, "warm_start_factor");
-  s = WorldSettings();
   s.toi_displacement_fraction = 0.0;
   expect_rejected(s, "toi_displacement_fraction");
   s = WorldSettings();

@@ -114,8 +114,6 @@ const Golden kGolden[] = {
        s.velocity_iterations = 4;
      },
      60, 0x1a9a15c3f0dcfe8aULL},
-    {"pyramid_cold_substeps", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
-     [](WorldSettings& s) { s.warm_start_every_substep = false; }, 60, 0x90b5d91c36ba4385ULL},
     {"pyramid_position_block", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.position_block = true;
@@ -125,9 +123,8 @@ const Golden kGolden[] = {
     {"pyramid_warm_before_integration", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.warm_start_before_integration = true;
-       s.warm_start_factor = 0.9;
      },
-     60, 0x4d97804570f6a62fULL},
+     60, 0xb42a024f68818025ULL},
     {"pyramid_exact", Pipeline::Fx2d, [] { return scenes::pyramid(5); },
      [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x5adcc8fcb5763744ULL},
     {"pyramid_sleeping", Pipeline::Fx2d, [] { return scenes::pyramid(10); },

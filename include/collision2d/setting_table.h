@@ -48,6 +48,8 @@ constexpr SettingRange kPositive{0.0, kUnbounded, true};
 constexpr SettingRange kNonNegative{0.0, kUnbounded, false};
 constexpr SettingRange kUnitInterval{0.0, 1.0, false};
 constexpr SettingRange kAtLeastOne{1.0, kUnbounded, false};
+/// Worker threads: more than a large machine has cores only costs.
+constexpr SettingRange kWorkerCount{1.0, 256.0, false};
 
 struct SettingInfo
 {

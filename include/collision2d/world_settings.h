@@ -79,7 +79,8 @@ struct Material
   X(contact_hertz, double, 40.0, kNonNegative, "Hz", "Soft step: contact stiffness (at most a quarter of the substep rate; twice it against static bodies)") \
   X(contact_damping_ratio, double, 10.0, kNonNegative, "", "Soft step: damping ratio of the contact spring") \
   X(contact_push_speed, double, 3.0, kPositive, "m/s", "Soft step: fastest a penetration is pushed out") \
-  X(speculative_margin, double, 0.02, kNonNegative, "m", "Soft step: pairs within this gap get contacts before they touch")
+  X(speculative_margin, double, 0.02, kNonNegative, "m", "Soft step: pairs within this gap get contacts before they touch") \
+  X(workers, int, 1, kWorkerCount, "", "Threads stepping the world (the narrow phase today); trajectories are the same for any count")
 // clang-format on
 
 struct WorldSettings

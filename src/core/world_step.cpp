@@ -38,6 +38,7 @@ StepReport WorldImpl::step(int frames)
     msg << "step: frames must be >= 1 (got " << frames << ")";
     throw std::invalid_argument(msg.str());
   }
+  workers_.resize(settings_.workers);
   save_motion();
   StepReport report;
   try

@@ -99,10 +99,10 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
   }
   // gravity, dt, substeps, velocity_iterations, slop, compliance,
   // restitution_threshold, toi_displacement_fraction, three sleep thresholds,
-  // position_iterations and the soft step's contact_hertz,
-  // contact_damping_ratio, contact_push_speed and speculative_margin have
-  // bounds or must be finite.
-  EXPECT_EQ(refused, 16u);
+  // position_iterations, the soft step's contact_hertz,
+  // contact_damping_ratio, contact_push_speed and speculative_margin, and
+  // workers have bounds or must be finite.
+  EXPECT_EQ(refused, 17u);
 }
 
 TEST(SettingsTable, ValidationMessagesKeepTheirWording)

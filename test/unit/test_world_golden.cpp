@@ -249,6 +249,31 @@ TEST(WorldGoldenRuns, AreRepeatable)
   EXPECT_EQ(run_hash(g.scene(), g.pipeline, g.tweak, 30), run_hash(g.scene(), g.pipeline, g.tweak, 30));
 }
 
+TEST(WorldGoldenRuns, WorkersDoNotChangeTrajectories)
+{
+  // The narrow phase is split across the workers, each writing only its own
+  // pairs' results: every bit of every run must match the one-worker pin.
+  for (const char* name : {"pyramid_soft_step", "pyramid_defaults", "gas_soft_step", "demo_soft_step",
+                           "pyramid_soft_step_sleeping"})
+  {
+    const Golden* golden = nullptr;
+    for (const Golden& g : kGolden)
+    {
+      golden = std::string(g.name) == name ? &g : golden;
+    }
+    ASSERT_NE(golden, nullptr) << name;
+    for (int workers : {2, 4})
+    {
+      const auto tweak = [&](WorldSettings& s) {
+        golden->tweak(s);
+        s.workers = workers;
+      };
+      EXPECT_EQ(run_hash(golden->scene(), golden->pipeline, tweak, golden->frames), golden->expected)
+          << name << " with " << workers << " workers";
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, WorldGolden, ::testing::ValuesIn(kGolden),
                          [](const ::testing::TestParamInfo<Golden>& info) { return std::string(info.param.name); });
 

@@ -15,26 +15,7 @@
 #include "collision2d/broad_phase.h"
 #include "random_scene.h"
 
-// Counts every allocation of this test binary, so the reuse test can see
-// whether find_pairs allocates. GCC cannot tell these replacements pair
-// malloc with free and warns at every inlined delete.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace
-{
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size)
-{
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size))
-  {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "allocation_counter.h"
 
 namespace collision2d
 {
@@ -324,14 +305,14 @@ TEST(BroadPhase, WarmedUpCallsAllocateNothing)
   {
     broad_phase.find_pairs(frame, pairs);
   }
-  const long before = g_allocations.load();
+  const long before = test::g_allocations.load();
   for (const std::vector<Aabb>& frame : frames)
   {
     broad_phase.find_pairs(frame, pairs);
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(test::g_allocations.load() - before, 0);
   EXPECT_EQ(pairs, brute_force(frames.back()));
-  EXPECT_GT(g_allocations.load() - before, 0) << "the counter must see the brute force's allocations";
+  EXPECT_GT(test::g_allocations.load() - before, 0) << "the counter must see the brute force's allocations";
 }
 
 }  // namespace

@@ -5,36 +5,16 @@
 // The exact mode builds each island's LCP per solve and is not covered.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
-#include <new>
 #include <string>
 
 #include "collision2d/scene.h"
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
 
-// Counts every allocation of this test binary. GCC cannot tell these
-// replacements pair malloc with free and warns at every inlined delete.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-namespace
-{
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size)
-{
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size))
-  {
-    return p;
-  }
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "allocation_counter.h"
 
 namespace collision2d
 {
@@ -68,12 +48,12 @@ TEST_P(WorldAllocation, WarmedUpStepsAllocateNothing)
   {
     world.step();  // as counted below: a step of several frames saves its state once
   }
-  const long before = g_allocations.load();
+  const long before = test::g_allocations.load();
   for (int f = 0; f < kCountedFrames; ++f)
   {
     world.step();
   }
-  const long allocations = g_allocations.load() - before;
+  const long allocations = test::g_allocations.load() - before;
   std::printf("%s: %ld allocations in %d frames after %d of warm-up\n", c.name, allocations, kCountedFrames,
               kWarmUpFrames);
   EXPECT_EQ(allocations, 0) << c.name;
@@ -103,9 +83,9 @@ INSTANTIATE_TEST_SUITE_P(Scenes, WorldAllocation, ::testing::ValuesIn(kCases),
 TEST(WorldAllocation, TheCounterSeesAllocations)
 {
   // The control: building a world allocates, so a zero above is a measurement.
-  const long before = g_allocations.load();
+  const long before = test::g_allocations.load();
   World world = make_world(scenes::pyramid(3));
-  EXPECT_GT(g_allocations.load() - before, 0);
+  EXPECT_GT(test::g_allocations.load() - before, 0);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "collision2d/collide.h"
 #include "collision2d/world.h"
 #include "contact_kernel.h"
+#include "soft_rows.h"
 #include "worker_pool.h"
 
 namespace collision2d
@@ -73,7 +74,12 @@ struct WorldImpl
   /// take only the islands it could not solve).
   void solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report);
   void aim_exact_targets(const StepContext& ctx, bool use_bias);
+  /// Warm start and one soft pass over the frame's manifolds: in colour
+  /// order on the rows (iterative mode), else in point order.
+  void warm_start_soft();
   void solve_soft(const StepContext& ctx, bool use_bias);
+  void warm_start_manifold(std::size_t first);
+  void solve_soft_manifold(std::size_t first, const StepContext& ctx, bool use_bias);
   /// A sticking point's slip from its anchor now (m); 0 for a sliding one.
   double anchor_drift(const ContactPoint& p) const;
   /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
@@ -197,6 +203,8 @@ struct WorldImpl
   std::vector<bool> stopped_;            ///< soft step: stopped at its time of impact this frame
   std::vector<bool> touching_;           ///< soft step: has a contact point this frame
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
+  SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours
+  bool rows_on_ = false;                 ///< ... in use this frame
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
   std::vector<double> held_theta_;
   std::vector<double> prev_theta_;

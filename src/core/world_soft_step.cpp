@@ -54,6 +54,11 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   load_velocities();                                      // world_solve.cpp
   prepare_points(ctx.effects);
   prepare_soft_points(ctx);
+  rows_on_ = settings_.solver_mode != SolverMode::Exact;
+  if (rows_on_)
+  {
+    soft_rows_.pack(points_, velocity_, ctx.effects.friction);  // soft_rows.cpp
+  }
   // 3. Substeps.
   for (int k = 0; k < settings_.substeps; ++k)
   {
@@ -64,6 +69,10 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     ++report.substeps;
   }
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
+  if (rows_on_)
+  {
+    soft_rows_.unpack(points_, velocity_);
+  }
   restitution_pass(report);
   update_anchors();
   store_velocities();
@@ -173,7 +182,7 @@ void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport
   }
   if (use_bias)
   {
-    warm_start();
+    warm_start_soft();
   }
   solve_soft(ctx, use_bias);
 }
@@ -194,34 +203,87 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
   }
 }
 
+void WorldImpl::warm_start_soft()
+{
+  if (!rows_on_)
+  {
+    warm_start();                                          // world_solve.cpp
+    return;
+  }
+  for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
+  {
+    soft_rows_.warm_start_rows(c, velocity_);
+    for (std::size_t first : soft_rows_.others(c))
+    {
+      warm_start_manifold(first);
+    }
+  }
+  for (std::size_t first : soft_rows_.overflow())
+  {
+    warm_start_manifold(first);
+  }
+}
+
 void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
 {
-  const bool friction = ctx.effects.friction;
-  const double push = settings_.contact_push_speed;
-  for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
+  if (!rows_on_)
   {
-    ContactPoint& p = points_[k];
-    if (!p.active || p.exact)
+    for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
     {
-      continue;
+      solve_soft_manifold(k, ctx, use_bias);
     }
-    const bool rough = friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
-    if (p.count == 2)
+    return;
+  }
+  // A colour's manifolds share no moving body: its rows and its other
+  // manifolds may go in any order, and the rows four at a time.
+  const RowPass pass{ctx.inv_h, settings_.contact_push_speed, use_bias};
+  for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
+  {
+    soft_rows_.solve_rows(c, velocity_, pass);
+    for (std::size_t first : soft_rows_.others(c))
     {
-      ContactPoint& q = points_[k + 1];
-      solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
-      if (rough)
-      {
-        const double pull = use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p) + anchor_drift(q)), push) : 0.0;
-        solve_friction_pair(p, q, velocity_, pull);
-      }
-      continue;
+      solve_soft_manifold(first, ctx, use_bias);
     }
-    solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
+  }
+  for (std::size_t first : soft_rows_.overflow())
+  {
+    solve_soft_manifold(first, ctx, use_bias);
+  }
+}
+
+void WorldImpl::warm_start_manifold(std::size_t first)
+{
+  detail::warm_start(points_[first], velocity_);
+  if (points_[first].count == 2)
+  {
+    detail::warm_start(points_[first + 1], velocity_);
+  }
+}
+
+void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool use_bias)
+{
+  ContactPoint& p = points_[k];
+  if (!p.active || p.exact)
+  {
+    return;
+  }
+  const bool rough = ctx.effects.friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
+  const double push = settings_.contact_push_speed;
+  if (p.count == 2)
+  {
+    ContactPoint& q = points_[k + 1];
+    solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
     if (rough)
     {
-      solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p), push) : 0.0);
+      const double pull = use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p) + anchor_drift(q)), push) : 0.0;
+      solve_friction_pair(p, q, velocity_, pull);
     }
+    return;
+  }
+  solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
+  if (rough)
+  {
+    solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p), push) : 0.0);
   }
 }
 

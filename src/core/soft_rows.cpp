@@ -1,0 +1,301 @@
+// The soft step's rows in colours (soft_rows.h): greedy colouring, packing
+// into batches, the passes in colour order, the scalar lane path and the
+// choice of the wide one.
+#include "soft_rows.h"
+
+#include <algorithm>
+#include <atomic>
+
+#include "soft_rows_kernel.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// Colours tried before a manifold goes to the overflow: a box in a stack
+/// touches at most six others, so greedy colouring needs far fewer.
+constexpr std::size_t kMaxColours = 24;
+constexpr std::size_t kBitsPerWord = 64;
+
+std::atomic<bool> g_wide_enabled{true};
+
+struct ScalarOps
+{
+  int j = 0;
+  double load(const double* f) const { return f[j]; }
+  void store(double* f, double v) const { f[j] = v; }
+  void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<double>& side) const
+  {
+    const BodyVelocity& s = state[index[j]];
+    side.v = {s.v.x, s.v.y};
+    side.w = s.omega;
+    side.moved = {s.moved.x, s.moved.y};
+    side.c = s.turned_cos;
+    side.s = s.turned_sin;
+  }
+  void scatter(std::vector<BodyVelocity>& state, const std::uint32_t* index, const rows::Side<double>& side) const
+  {
+    BodyVelocity& s = state[index[j]];
+    s.v = Vec2{side.v.x, side.v.y};
+    s.omega = side.w;
+  }
+};
+
+bool row_manifold(const ContactPoint& p) { return p.count == 2 && p.pair_block; }
+
+}  // namespace
+
+bool wide_rows_active()
+{
+#if defined(__x86_64__) || defined(__i386__)
+  static const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
+#else
+  static const bool cpu_has_avx2 = false;
+#endif
+  return g_wide_enabled.load(std::memory_order_relaxed) && wide_rows_compiled() && cpu_has_avx2;
+}
+
+void set_wide_rows_enabled(bool enabled) { g_wide_enabled.store(enabled, std::memory_order_relaxed); }
+
+void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
+{
+  for (int j = 0; j < lanes; ++j)
+  {
+    rows::warm_start_rows<double>(ScalarOps{j}, batch, velocity);
+  }
+}
+
+void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+{
+  for (int j = 0; j < lanes; ++j)
+  {
+    rows::solve_rows<double>(ScalarOps{j}, batch, velocity, pass);
+  }
+}
+
+void SoftRows::colour_manifold(std::size_t first, std::size_t a, std::size_t b, bool row, std::size_t& colour)
+{
+  // a and b are the bodies the manifold moves (SIZE_MAX for one that cannot move).
+  const auto taken = [&](std::size_t c, std::size_t i) {
+    return i != SIZE_MAX && (used_[c * words_ + i / kBitsPerWord] >> (i % kBitsPerWord) & 1U) != 0;
+  };
+  for (colour = 0; colour < kMaxColours; ++colour)
+  {
+    if (!taken(colour, a) && !taken(colour, b))
+    {
+      break;
+    }
+  }
+  if (colour == kMaxColours)
+  {
+    overflow_.push_back(first);
+    return;
+  }
+  for (std::size_t i : {a, b})
+  {
+    if (i != SIZE_MAX)
+    {
+      used_[colour * words_ + i / kBitsPerWord] |= std::uint64_t{1} << (i % kBitsPerWord);
+    }
+  }
+  if (!row)
+  {
+    colours_[colour].others.push_back(first);
+  }
+}
+
+void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction)
+{
+  spare_ = static_cast<std::uint32_t>(velocity.size());
+  velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
+  words_ = velocity.size() / kBitsPerWord + 1;
+  used_.assign(kMaxColours * words_, 0);
+  colours_.resize(kMaxColours);
+  for (RowColour& c : colours_)
+  {
+    c.others.clear();
+    c.lanes = 0;
+  }
+  overflow_.clear();
+  // First pass: colour every manifold; rows are counted, then placed.
+  row_colour_.clear();
+  row_count_.assign(kMaxColours, 0);
+  for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
+  {
+    const ContactPoint& p = points[k];
+    if (!p.active)
+    {
+      continue;
+    }
+    const std::size_t a = p.inv_mass_a != 0.0 ? p.a : SIZE_MAX;
+    const std::size_t b = p.inv_mass_b != 0.0 ? p.b : SIZE_MAX;
+    const bool row = row_manifold(p);
+    std::size_t colour = 0;
+    colour_manifold(k, a, b, row, colour);
+    if (row && colour < kMaxColours)
+    {
+      row_colour_.push_back(k);
+      row_colour_.push_back(colour);
+      ++row_count_[colour];
+    }
+  }
+  // Second pass: each colour's rows in whole batches, the last one padded.
+  std::size_t batches = 0;
+  for (std::size_t c = 0; c < kMaxColours; ++c)
+  {
+    colours_[c].begin = batches;
+    batches += (row_count_[c] + kRowLanes - 1) / kRowLanes;
+    colours_[c].end = batches;
+  }
+  rows_.resize(batches);
+  for (std::size_t c = 0; c < kMaxColours; ++c)
+  {
+    for (std::size_t r = colours_[c].begin; r < colours_[c].end; ++r)
+    {
+      for (int j = 0; j < kRowLanes; ++j)
+      {
+        fill_lane(rows_[r], j, points, SIZE_MAX, friction);
+      }
+    }
+  }
+  for (std::size_t e = 0; e < row_colour_.size(); e += 2)
+  {
+    RowColour& c = colours_[row_colour_[e + 1]];
+    const std::size_t slot = c.lanes++;
+    fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, row_colour_[e], friction);
+  }
+}
+
+void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& points, std::size_t first,
+                         bool friction) const
+{
+  if (first == SIZE_MAX)
+  {
+    // Padding: the spare body on both sides, nothing to push.
+    r.a[j] = spare_;
+    r.b[j] = spare_;
+    r.first[j] = SIZE_MAX;
+    for (double* f : {r.nx, r.ny, r.tx, r.ty, r.ra1x, r.ra1y, r.rb1x, r.rb1y, r.ra2x, r.ra2y, r.rb2x, r.rb2y,
+                      r.base1, r.base2, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
+                      r.bias_rate, r.mu_s, r.mu_k, r.rough, r.kinetic1, r.kinetic2, r.anchor1, r.anchor2,
+                      r.normal1, r.normal2, r.tangent1, r.tangent2, r.frame1, r.frame2, r.sliding1, r.sliding2})
+    {
+      f[j] = 0.0;
+    }
+    r.k11[j] = 1.0;
+    r.k22[j] = 1.0;
+    r.pair_tangent_mass[j] = 1.0;
+    r.mass_scale[j] = 1.0;
+    return;
+  }
+  const ContactPoint& p = points[first];
+  const ContactPoint& q = points[first + 1];
+  r.a[j] = static_cast<std::uint32_t>(p.a);
+  r.b[j] = static_cast<std::uint32_t>(p.b);
+  r.first[j] = first;
+  r.nx[j] = p.normal.x;
+  r.ny[j] = p.normal.y;
+  r.tx[j] = p.tangent.x;
+  r.ty[j] = p.tangent.y;
+  r.ra1x[j] = p.r_a.x;
+  r.ra1y[j] = p.r_a.y;
+  r.rb1x[j] = p.r_b.x;
+  r.rb1y[j] = p.r_b.y;
+  r.ra2x[j] = q.r_a.x;
+  r.ra2y[j] = q.r_a.y;
+  r.rb2x[j] = q.r_b.x;
+  r.rb2y[j] = q.r_b.y;
+  r.base1[j] = p.base_separation;
+  r.base2[j] = q.base_separation;
+  r.k11[j] = p.k_n;
+  r.k12[j] = p.pair_k12;
+  r.k22[j] = q.k_n;
+  r.pair_tangent_mass[j] = p.pair_tangent_mass;
+  r.inv_mass_a[j] = p.inv_mass_a;
+  r.inv_mass_b[j] = p.inv_mass_b;
+  r.inv_inertia_a[j] = p.inv_inertia_a;
+  r.inv_inertia_b[j] = p.inv_inertia_b;
+  r.bias_rate[j] = p.softness.bias_rate;
+  r.mass_scale[j] = p.softness.mass_scale;
+  r.mu_s[j] = p.mu_s;
+  r.mu_k[j] = p.mu_k;
+  r.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1.0 : 0.0;
+  r.kinetic1[j] = p.kinetic ? 1.0 : 0.0;
+  r.kinetic2[j] = q.kinetic ? 1.0 : 0.0;
+  r.anchor1[j] = p.anchor_drift;
+  r.anchor2[j] = q.anchor_drift;
+  r.normal1[j] = p.lambda_n;
+  r.normal2[j] = q.lambda_n;
+  r.tangent1[j] = p.lambda_t;
+  r.tangent2[j] = q.lambda_t;
+  r.frame1[j] = p.frame_impulse;
+  r.frame2[j] = q.frame_impulse;
+  r.sliding1[j] = p.sliding ? 1.0 : 0.0;
+  r.sliding2[j] = q.sliding ? 1.0 : 0.0;
+}
+
+void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity)
+{
+  const RowColour& c = colours_[colour];
+  const bool wide = wide_rows_active();
+  for (std::size_t r = c.begin; r < c.end; ++r)
+  {
+    const int lanes = static_cast<int>(std::min<std::size_t>(kRowLanes, c.lanes - (r - c.begin) * kRowLanes));
+    if (wide)
+    {
+      warm_start_batch_wide(rows_[r], velocity);
+    }
+    else
+    {
+      warm_start_batch_scalar(rows_[r], lanes, velocity);
+    }
+  }
+}
+
+void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+{
+  const RowColour& c = colours_[colour];
+  const bool wide = wide_rows_active();
+  for (std::size_t r = c.begin; r < c.end; ++r)
+  {
+    const int lanes = static_cast<int>(std::min<std::size_t>(kRowLanes, c.lanes - (r - c.begin) * kRowLanes));
+    if (wide)
+    {
+      solve_batch_wide(rows_[r], velocity, pass);
+    }
+    else
+    {
+      solve_batch_scalar(rows_[r], lanes, velocity, pass);
+    }
+  }
+}
+
+void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const
+{
+  velocity.pop_back();
+  for (const RowBatch& r : rows_)
+  {
+    for (int j = 0; j < kRowLanes; ++j)
+    {
+      if (r.first[j] == SIZE_MAX)
+      {
+        continue;
+      }
+      ContactPoint& p = points[r.first[j]];
+      ContactPoint& q = points[r.first[j] + 1];
+      p.lambda_n = r.normal1[j];
+      q.lambda_n = r.normal2[j];
+      p.lambda_t = r.tangent1[j];
+      q.lambda_t = r.tangent2[j];
+      p.frame_impulse = r.frame1[j];
+      q.frame_impulse = r.frame2[j];
+      p.sliding = r.sliding1[j] != 0.0;
+      q.sliding = r.sliding2[j] != 0.0;
+    }
+  }
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,112 @@
+// Internal to the core: the soft step's contact rows in colours. Each frame
+// the two-point manifolds whose normal block is solvable are packed four to a
+// batch (struct of arrays) and coloured so that no two manifolds of one colour
+// move the same body; a colour's batches can then be solved four lanes at a
+// time (AVX2, chosen at run time) with exactly the bits of the scalar path,
+// since lanes never share a body. Single-point and nearly dependent manifolds,
+// and any that find no colour, stay on the kernel's point verbs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "contact_kernel.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// Lanes in one batch.
+constexpr int kRowLanes = 4;
+
+/// Four two-point manifolds, one per lane. Masks are 0 or 1.
+struct alignas(32) RowBatch
+{
+  std::uint32_t a[kRowLanes];  ///< body indices; padding lanes name the spare body
+  std::uint32_t b[kRowLanes];
+  std::size_t first[kRowLanes];  ///< index of the manifold's first point
+  double nx[kRowLanes], ny[kRowLanes], tx[kRowLanes], ty[kRowLanes];
+  double ra1x[kRowLanes], ra1y[kRowLanes], rb1x[kRowLanes], rb1y[kRowLanes];
+  double ra2x[kRowLanes], ra2y[kRowLanes], rb2x[kRowLanes], rb2y[kRowLanes];
+  double base1[kRowLanes], base2[kRowLanes];          ///< gap at prepare less the anchors' offset (m)
+  double k11[kRowLanes], k12[kRowLanes], k22[kRowLanes];  ///< normal block (1/kg)
+  double pair_tangent_mass[kRowLanes];                ///< kg
+  double inv_mass_a[kRowLanes], inv_mass_b[kRowLanes], inv_inertia_a[kRowLanes], inv_inertia_b[kRowLanes];
+  double bias_rate[kRowLanes], mass_scale[kRowLanes];  ///< the pair's softness
+  double mu_s[kRowLanes], mu_k[kRowLanes];
+  double rough[kRowLanes];                             ///< friction acts
+  double kinetic1[kRowLanes], kinetic2[kRowLanes];
+  double anchor1[kRowLanes], anchor2[kRowLanes];       ///< slip since sticking, at prepare (m)
+  double normal1[kRowLanes], normal2[kRowLanes];       ///< accumulated normal impulses (N s)
+  double tangent1[kRowLanes], tangent2[kRowLanes];     ///< accumulated tangential impulses (N s)
+  double frame1[kRowLanes], frame2[kRowLanes];         ///< normal impulse applied this frame (N s)
+  double sliding1[kRowLanes], sliding2[kRowLanes];  ///< friction at its bound
+};
+
+/// What every row of one pass shares.
+struct RowPass
+{
+  double inv_h = 0.0;       ///< 1/s
+  double max_push = 0.0;    ///< m/s
+  bool use_bias = false;    ///< false: the relax pass
+};
+
+/// One colour: its batches (rows_[begin, end)) and the points it leaves to
+/// the point verbs (the index of each manifold's first point).
+struct RowColour
+{
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  std::size_t lanes = 0;  ///< manifolds in the batches; the last batch may be padded
+  std::vector<std::size_t> others;
+};
+
+/// The frame's manifolds in colours. The World walks the colours in order:
+/// each colour's batches (solve_rows), then its other manifolds on the point
+/// verbs, and the overflow last.
+class SoftRows
+{
+public:
+  /// Colours and packs this frame's active points (prepared, soft terms set).
+  /// `velocity` gains one spare body at its end for the padding lanes.
+  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction);
+  std::size_t colour_count() const { return colours_.size(); }
+  const std::vector<std::size_t>& others(std::size_t colour) const { return colours_[colour].others; }
+  const std::vector<std::size_t>& overflow() const { return overflow_; }
+  void warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity);
+  void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+  /// The rows' impulses and friction state back into their points; drops the spare body.
+  void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const;
+
+private:
+  void colour_manifold(std::size_t first, std::size_t a, std::size_t b, bool row, std::size_t& colour);
+  void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
+                 bool friction) const;
+
+  std::vector<RowBatch> rows_;
+  std::vector<RowColour> colours_;
+  std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
+  std::vector<std::uint64_t> used_;      ///< per colour, a bit per body it moves
+  std::vector<std::size_t> row_colour_;  ///< scratch: (first point, colour) of each row manifold
+  std::vector<std::size_t> row_count_;   ///< scratch: row manifolds per colour
+  std::size_t words_ = 0;
+  std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
+};
+
+/// Whether the four-lane path runs (AVX2 compiled in and present on this CPU,
+/// and not switched off). The scalar path gives the same bits.
+bool wide_rows_active();
+/// Tests: run the scalar path even where the wide one is available.
+void set_wide_rows_enabled(bool enabled);
+
+/// The kernel entry points over one batch (soft_rows_kernel.h); the wide ones
+/// are defined only where AVX2 is compiled in.
+void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
+void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+bool wide_rows_compiled();
+void warm_start_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity);
+void solve_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,286 @@
+// Internal to soft_rows*.cpp: the soft step's verbs on a batch of two-point
+// manifolds, written once for a lane type V: double (one lane, the scalar
+// path) or a four-wide vector (soft_rows_avx2.cpp). Every branch of the point
+// verbs (contact_kernel_soft.cpp, contact_kernel.cpp) is computed and
+// selected, in both types, so the wide path has exactly the scalar path's
+// bits. The lane type provides + - * /, comparisons giving a mask M, mask
+// and/or, sel(mask, if_true, if_false), neg, abs, and Ops<V> to load, store,
+// gather and scatter.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "soft_rows.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace rows
+{
+// The one-lane type's operations; the wide type's are found by argument lookup.
+inline double sel(bool m, double a, double b) { return m ? a : b; }
+inline double neg(double a) { return -a; }
+inline double abs(double a) { return std::abs(a); }
+
+/// std::max(a, b) and std::min(a, b) as selects, so zeros keep their sign alike.
+template <class V>
+V vmax(V a, V b)
+{
+  return sel(a < b, b, a);
+}
+template <class V>
+V vmin(V a, V b)
+{
+  return sel(b < a, b, a);
+}
+
+template <class V>
+struct V2
+{
+  V x;
+  V y;
+};
+template <class V>
+V2<V> operator+(V2<V> a, V2<V> b) { return {a.x + b.x, a.y + b.y}; }
+template <class V>
+V2<V> operator-(V2<V> a, V2<V> b) { return {a.x - b.x, a.y - b.y}; }
+template <class V>
+V2<V> scale(V2<V> a, V s) { return {a.x * s, a.y * s}; }
+template <class V>
+V dot(V2<V> a, V2<V> b) { return a.x * b.x + a.y * b.y; }
+template <class V>
+V cross(V2<V> a, V2<V> b) { return a.x * b.y - a.y * b.x; }
+/// cross(w, v) of vec2.h: (-w v.y, w v.x).
+template <class V>
+V2<V> cross(V w, V2<V> v) { return {neg(w) * v.y, w * v.x}; }
+template <class V>
+V2<V> rotate(V2<V> v, V c, V s) { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+
+/// One side of every lane's manifold: a body's velocity and pose change.
+template <class V>
+struct Side
+{
+  V2<V> v;
+  V w;
+  V2<V> moved;
+  V c;
+  V s;
+};
+
+/// A lane's two bodies and its fixed data, loaded once per pass.
+template <class V>
+struct Lane
+{
+  Side<V> a;
+  Side<V> b;
+  V2<V> n, t, ra1, rb1, ra2, rb2;
+  V inv_ma, inv_mb, inv_ia, inv_ib;
+};
+
+template <class V, class Ops>
+Lane<V> load_lane(const Ops& ops, const RowBatch& r, const std::vector<BodyVelocity>& state)
+{
+  Lane<V> l;
+  ops.gather(state, r.a, l.a);
+  ops.gather(state, r.b, l.b);
+  l.n = {ops.load(r.nx), ops.load(r.ny)};
+  l.t = {ops.load(r.tx), ops.load(r.ty)};
+  l.ra1 = {ops.load(r.ra1x), ops.load(r.ra1y)};
+  l.rb1 = {ops.load(r.rb1x), ops.load(r.rb1y)};
+  l.ra2 = {ops.load(r.ra2x), ops.load(r.ra2y)};
+  l.rb2 = {ops.load(r.rb2x), ops.load(r.rb2y)};
+  l.inv_ma = ops.load(r.inv_mass_a);
+  l.inv_mb = ops.load(r.inv_mass_b);
+  l.inv_ia = ops.load(r.inv_inertia_a);
+  l.inv_ib = ops.load(r.inv_inertia_b);
+  return l;
+}
+
+/// relative_velocity_at: b's velocity at r_b less a's at r_a.
+template <class V>
+V2<V> relative_velocity(const Lane<V>& l, V2<V> ra, V2<V> rb)
+{
+  return ((l.b.v + cross(l.b.w, rb)) - l.a.v) - cross(l.a.w, ra);
+}
+
+/// apply_impulse_at: p on b, -p on a; a body with no inverse mass is untouched.
+template <class V>
+void apply(Lane<V>& l, V2<V> ra, V2<V> rb, V2<V> p)
+{
+  const V zero = V(0.0);
+  const auto moves_a = l.inv_ma != zero;
+  const auto moves_b = l.inv_mb != zero;
+  const V2<V> va = l.a.v - scale(p, l.inv_ma);
+  const V wa = l.a.w - l.inv_ia * cross(ra, p);
+  const V2<V> vb = l.b.v + scale(p, l.inv_mb);
+  const V wb = l.b.w + l.inv_ib * cross(rb, p);
+  l.a.v = {sel(moves_a, va.x, l.a.v.x), sel(moves_a, va.y, l.a.v.y)};
+  l.a.w = sel(moves_a, wa, l.a.w);
+  l.b.v = {sel(moves_b, vb.x, l.b.v.x), sel(moves_b, vb.y, l.b.v.y)};
+  l.b.w = sel(moves_b, wb, l.b.w);
+}
+
+/// The pose change between a point's anchors since prepare (m): the common
+/// part of current_separation and current_slip.
+template <class V>
+V2<V> anchor_offset(const Lane<V>& l, V2<V> ra, V2<V> rb)
+{
+  return ((l.b.moved - l.a.moved) + rotate(rb, l.b.c, l.b.s)) - rotate(ra, l.a.c, l.a.s);
+}
+
+template <class V, class Ops>
+void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, double* normal, double* tangent, double* frame)
+{
+  const V ln = ops.load(normal);
+  const V lt = ops.load(tangent);
+  ops.store(frame, ops.load(frame) + ln);
+  const V zero = V(0.0);
+  Lane<V> pushed = l;
+  apply(pushed, ra, rb, scale(l.n, ln) + scale(l.t, lt));
+  const auto any = (ln != zero) | (lt != zero);
+  l.a.v = {sel(any, pushed.a.v.x, l.a.v.x), sel(any, pushed.a.v.y, l.a.v.y)};
+  l.a.w = sel(any, pushed.a.w, l.a.w);
+  l.b.v = {sel(any, pushed.b.v.x, l.b.v.x), sel(any, pushed.b.v.y, l.b.v.y)};
+  l.b.w = sel(any, pushed.b.w, l.b.w);
+}
+
+template <class V, class Ops>
+void warm_start_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state)
+{
+  Lane<V> l = load_lane<V>(ops, r, state);
+  warm_start_point(ops, l, l.ra1, l.rb1, r.normal1, r.tangent1, r.frame1);
+  warm_start_point(ops, l, l.ra2, l.rb2, r.normal2, r.tangent2, r.frame2);
+  ops.scatter(state, r.a, l.a);
+  ops.scatter(state, r.b, l.b);
+}
+
+/// soft_terms: a speculative gap may close within the substep; an overlap is
+/// pushed out through the softness (biased pass only), at most max_push.
+template <class V>
+void soft_terms(V s, V rate, V mass_scale, const RowPass& pass, V& bias, V& scale_out)
+{
+  const V zero = V(0.0);
+  const auto open = zero < s;
+  const V push = vmax((mass_scale * rate) * s, neg(V(pass.max_push)));
+  const V closed_bias = pass.use_bias ? push : zero;
+  const V closed_scale = pass.use_bias ? mass_scale : V(1.0);
+  bias = sel(open, s * V(pass.inv_h), closed_bias);
+  scale_out = sel(open, V(1.0), closed_scale);
+}
+
+/// solve_lcp2: the 2x2 normal LCP by its four cases, all computed.
+template <class V>
+void lcp2(V k11, V k12, V k22, V q1, V q2, V& y1, V& y2)
+{
+  const V zero = V(0.0);
+  const V det = k11 * k22 - k12 * k12;
+  const V both1 = (k12 * q2 - k22 * q1) / det;
+  const V both2 = (k12 * q1 - k11 * q2) / det;
+  const auto both = (both1 >= zero) & (both2 >= zero);
+  const V first = vmax(zero, neg(q1) / k11);
+  const auto first_only = (k12 * first + q2) >= zero;
+  const V second_raw = vmax(zero, neg(q2) / k22);
+  const V second = sel((k12 * second_raw + q1) >= zero, second_raw, zero);
+  y1 = sel(both, both1, sel(first_only, first, zero));
+  y2 = sel(both, both2, sel(first_only, zero, second));
+}
+
+/// set_soft_impulse: the new accumulated normal impulse and its change applied.
+template <class V, class Ops>
+void set_normal(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, double* normal, double* frame, V total)
+{
+  const V applied = total - ops.load(normal);
+  ops.store(normal, total);
+  ops.store(frame, ops.load(frame) + applied);
+  apply(l, ra, rb, scale(l.n, applied));
+}
+
+/// The manifold's two normals as one block (solve_soft_normal_block).
+template <class V, class Ops>
+void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass, V s1, V s2)
+{
+  const V rate = ops.load(r.bias_rate);
+  const V mass_scale = ops.load(r.mass_scale);
+  V bias1, bias2, scale1, scale2;
+  soft_terms(s1, rate, mass_scale, pass, bias1, scale1);
+  soft_terms(s2, rate, mass_scale, pass, bias2, scale2);
+  const V k11 = ops.load(r.k11);
+  const V k12 = ops.load(r.k12);
+  const V k22 = ops.load(r.k22);
+  const V x1 = ops.load(r.normal1);
+  const V x2 = ops.load(r.normal2);
+  const V q1 = (dot(relative_velocity(l, l.ra1, l.rb1), l.n) + bias1 / scale1) - (k11 * x1 + k12 * x2);
+  const V q2 = (dot(relative_velocity(l, l.ra2, l.rb2), l.n) + bias2 / scale2) - (k12 * x1 + k22 * x2);
+  V y1, y2;
+  lcp2(k11, k12, k22, q1, q2, y1, y2);
+  set_normal(ops, l, l.ra1, l.rb1, r.normal1, r.frame1, scale1 * y1);
+  set_normal(ops, l, l.ra2, l.rb2, r.normal2, r.frame2, scale2 * y2);
+}
+
+/// The manifold's friction as one row at its midpoint (solve_friction_pair),
+/// pulled back toward the sticking anchors by `pull` (m/s).
+template <class V, class Ops>
+void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
+{
+  const V zero = V(0.0);
+  const V half = V(0.5);
+  const V2<V> ra = scale(l.ra1 + l.ra2, half);
+  const V2<V> rb = scale(l.rb1 + l.rb2, half);
+  const V slip = dot(relative_velocity(l, ra, rb), l.t);
+  const V vt = sel(pull == zero, slip, slip + pull);
+  const V n1 = ops.load(r.normal1);
+  const V normal_sum = n1 + ops.load(r.normal2);
+  const V old_total = ops.load(r.tangent1) + ops.load(r.tangent2);
+  const V needed = old_total - vt * ops.load(r.pair_tangent_mass);
+  const V cone = sel(ops.load(r.kinetic1) != zero, ops.load(r.mu_k), ops.load(r.mu_s));
+  const V limit = cone * normal_sum;
+  const auto rough = ops.load(r.rough) != zero;
+  const V sliding = sel(limit < abs(needed), V(1.0), zero);
+  ops.store(r.sliding1, sel(rough, sliding, ops.load(r.sliding1)));
+  ops.store(r.sliding2, sel(rough, sliding, ops.load(r.sliding2)));
+  const V total = vmax(neg(limit), vmin(limit, needed));
+  Lane<V> pushed = l;
+  apply(pushed, ra, rb, scale(l.t, total - old_total));
+  l.a.v = {sel(rough, pushed.a.v.x, l.a.v.x), sel(rough, pushed.a.v.y, l.a.v.y)};
+  l.a.w = sel(rough, pushed.a.w, l.a.w);
+  l.b.v = {sel(rough, pushed.b.v.x, l.b.v.x), sel(rough, pushed.b.v.y, l.b.v.y)};
+  l.b.w = sel(rough, pushed.b.w, l.b.w);
+  const V share = sel(zero < normal_sum, n1 / normal_sum, half);
+  const V first = share * total;
+  ops.store(r.tangent1, sel(rough, first, ops.load(r.tangent1)));
+  ops.store(r.tangent2, sel(rough, total - first, ops.load(r.tangent2)));
+}
+
+/// The anchor pull of the biased pass: the mean slip of the two points since
+/// they stuck, pulled back at the contact's rate, capped at max_push.
+template <class V, class Ops>
+V anchor_pull(const Ops& ops, const Lane<V>& l, const RowBatch& r, V2<V> d1, V2<V> d2, const RowPass& pass)
+{
+  const V zero = V(0.0);
+  const V slip1 = dot(d1 - (l.rb1 - l.ra1), l.t);
+  const V slip2 = dot(d2 - (l.rb2 - l.ra2), l.t);
+  const V drift1 = sel(ops.load(r.kinetic1) != zero, zero, ops.load(r.anchor1) + slip1);
+  const V drift2 = sel(ops.load(r.kinetic2) != zero, zero, ops.load(r.anchor2) + slip2);
+  const V pull = (ops.load(r.mass_scale) * ops.load(r.bias_rate)) * (V(0.5) * (drift1 + drift2));
+  const V max_push = V(pass.max_push);
+  return vmax(neg(max_push), vmin(max_push, pull));
+}
+
+template <class V, class Ops>
+void solve_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state, const RowPass& pass)
+{
+  Lane<V> l = load_lane<V>(ops, r, state);
+  const V2<V> d1 = anchor_offset(l, l.ra1, l.rb1);
+  const V2<V> d2 = anchor_offset(l, l.ra2, l.rb2);
+  solve_normals(ops, l, r, pass, ops.load(r.base1) + dot(d1, l.n), ops.load(r.base2) + dot(d2, l.n));
+  const V pull = pass.use_bias ? anchor_pull(ops, l, r, d1, d2, pass) : V(0.0);
+  solve_friction(ops, l, r, pull);
+  ops.scatter(state, r.a, l.a);
+  ops.scatter(state, r.b, l.b);
+}
+
+}  // namespace rows
+}  // namespace detail
+}  // namespace collision2d

@@ -1,10 +1,14 @@
-// collision2d_scaling_bench: time per frame and peak memory for one gas-like
-// scene of n scattered disks (scenes::elastic_gas), one size per process so
-// that the peak resident set (VmHWM) belongs to that size alone.
+// collision2d_scaling_bench: time per frame and peak memory for one scene of
+// about n bodies, one size per process so that the peak resident set (VmHWM)
+// belongs to that size alone. Scenes: gas (scenes::elastic_gas, n scattered
+// disks), pyramid and rain (stack_scenes.h: the Box2D v3 comparison's rules).
 //
-//   collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]
+//   collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain] [--workers W]
+//                             [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]
 //
-// Prints one CSV row: engine,bodies,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib.
+// Prints one CSV row: engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,
+// vmhwm_start_kib (the peak before the scene was built). --workers sets ours
+// (WorldSettings::workers); the peers run as their adapters do, on one thread.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +19,7 @@
 
 #include "collision2d/scenes/standard_scenes.h"
 #include "engine.h"
+#include "stack_scenes.h"
 #include "timing.h"
 
 namespace
@@ -23,6 +28,7 @@ using namespace collision2d;
 using namespace collision2d::bench;
 
 constexpr int kWarmupFrames = 3;          // first frames build caches and scratch
+constexpr int kRainWarmupFrames = 60;     // 1 s: the rain's lowest rows land and pile first
 constexpr double kFrameBudget = 2e4;      // body-frames per repetition: ~constant work per size
 constexpr int kMinFrames = 3;
 constexpr int kMaxFrames = 120;
@@ -34,13 +40,15 @@ struct Arguments
   EngineKind engine = EngineKind::Collision2d;
   int repetitions = kDefaultRepetitions;
   bool header = false;
+  std::string scene = "gas";
+  int workers = 1;
 };
 
 [[noreturn]] void usage(const std::string& problem)
 {
   std::fprintf(stderr,
-               "%s\nusage: collision2d_scaling_bench --bodies N [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] "
-               "[--header]\n",
+               "%s\nusage: collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain] [--workers W] "
+               "[--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -70,6 +78,14 @@ Arguments parse_arguments(int argc, char** argv)
     {
       args.engine = parse_engine(argv[++i]);
     }
+    else if (flag == "--scene" && has_value)
+    {
+      args.scene = argv[++i];
+    }
+    else if (flag == "--workers" && has_value)
+    {
+      args.workers = std::atoi(argv[++i]);
+    }
     else if (flag == "--reps" && has_value)
     {
       args.repetitions = std::atoi(argv[++i]);
@@ -87,9 +103,17 @@ Arguments parse_arguments(int argc, char** argv)
   {
     return args;
   }
-  if (args.bodies < 1 || args.repetitions < 1)
+  if (args.bodies < 1 || args.repetitions < 1 || args.workers < 1)
   {
-    usage("--bodies and --reps must be positive");
+    usage("--bodies, --reps and --workers must be positive");
+  }
+  if (args.workers > 1 && args.engine != EngineKind::Collision2d)
+  {
+    usage("--workers applies to collision2d only");
+  }
+  if (args.scene != "gas" && args.scene != "pyramid" && args.scene != "rain")
+  {
+    usage("unknown scene '" + args.scene + "'");
   }
   return args;
 }
@@ -119,16 +143,21 @@ int main(int argc, char** argv)
   const Arguments args = parse_arguments(argc, argv);
   if (args.header)
   {
-    std::printf("engine,bodies,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib\n");
+    std::printf("engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,vmhwm_start_kib\n");
     return 0;
   }
   try
   {
-    const Scene scene = scenes::elastic_gas(static_cast<int>(args.bodies));
+    const long start_kib = peak_resident_kib();
+    Scene scene = args.scene == "gas" ? scenes::elastic_gas(static_cast<int>(args.bodies))
+                                      : make_throughput_scene(args.scene, args.bodies);
+    scene.settings.workers = args.workers;
+    const long bodies = std::count_if(scene.bodies.begin(), scene.bodies.end(),
+                                      [](const SceneBody& b) { return b.body.type() == BodyType::Dynamic; });
     EngineConfig config{args.engine, PeerVariant::Defaults, scene.settings};
     std::unique_ptr<Engine> engine = make_engine(scene, config);
-    time_frames(*engine, kWarmupFrames);
-    const int frames = std::clamp(static_cast<int>(kFrameBudget / args.bodies), kMinFrames, kMaxFrames);
+    time_frames(*engine, args.scene == "rain" ? kRainWarmupFrames : kWarmupFrames);
+    const int frames = std::clamp(static_cast<int>(kFrameBudget / bodies), kMinFrames, kMaxFrames);
     std::vector<double> wall;
     std::vector<double> cpu;
     for (int r = 0; r < args.repetitions; ++r)
@@ -137,8 +166,8 @@ int main(int argc, char** argv)
       wall.push_back(t.wall_ms);
       cpu.push_back(t.cpu_ms);
     }
-    std::printf("%s,%ld,%d,%.6g,%.6g,%ld\n", engine_name(args.engine).c_str(), args.bodies, frames, median(wall),
-                median(cpu), peak_resident_kib());
+    std::printf("%s,%s,%ld,%d,%d,%.6g,%.6g,%ld,%ld\n", engine_name(args.engine).c_str(), args.scene.c_str(), bodies,
+                args.workers, frames, median(wall), median(cpu), peak_resident_kib(), start_kib);
   }
   catch (const std::exception& error)
   {

@@ -3,6 +3,8 @@
 // theirs; only the sizes, material, ground and settings differ.
 #include "stack_scenes.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "collision2d/scenes/scene_parts.h"
@@ -23,6 +25,7 @@ constexpr double kGroundWidth = 200.0;     // m: wider than the base-100 pyramid
 constexpr double kGroundThickness = 1.0;   // m
 constexpr double kRunSeconds = 10.0;       // s: drift is measured from 1 s to here
 constexpr int kColumnBoxes = 20;
+constexpr double kGroundMargin = 1.5;      // ground width / widest row of a throughput scene
 
 const char* const kPyramidPrefix = "stack_pyramid_";
 const char* const kColumnName = "stack_column_20";
@@ -32,7 +35,7 @@ Material stack_material()
   return Material{0.0, kFriction, kFriction};
 }
 
-Scene stack_base(const std::string& name)
+Scene stack_base(const std::string& name, double ground_width = kGroundWidth)
 {
   Scene scene;
   scene.name = name;
@@ -41,7 +44,7 @@ Scene stack_base(const std::string& name)
   scene.settings.substeps = kSubsteps;
   scene.settings.sleeping = Toggle::Off;
   scenes::GroundParams ground;
-  ground.width = kGroundWidth;
+  ground.width = ground_width;
   ground.thickness = kGroundThickness;
   ground.top = 0.0;
   ground.material = stack_material();
@@ -96,6 +99,39 @@ BenchScene make_stack_scene(const std::string& name)
     scenes::add_pyramid(scene, pyramid);
   }
   return BenchScene{name, scene, SceneKind::Resting, kRunSeconds};
+}
+
+Scene make_throughput_scene(const std::string& kind, long bodies)
+{
+  if (bodies < 1)
+  {
+    throw std::invalid_argument("throughput scene: bodies must be at least 1");
+  }
+  if (kind == "pyramid")
+  {
+    // base (base + 1) / 2 <= bodies
+    const int base = static_cast<int>((std::sqrt(8.0 * static_cast<double>(bodies) + 1.0) - 1.0) / 2.0);
+    Scene scene = stack_base("pyramid_" + std::to_string(bodies), std::max(kGroundWidth, kGroundMargin * base));
+    scenes::PyramidParams pyramid;
+    pyramid.base = std::max(1, base);
+    pyramid.box = kBox;
+    pyramid.mass = kBoxMass;
+    pyramid.at = Vec2{0.0, 0.5 * kBox};
+    pyramid.material = stack_material();
+    scenes::add_pyramid(scene, pyramid);
+    return scene;
+  }
+  if (kind == "rain")
+  {
+    scenes::RainParams rain;
+    rain.count = static_cast<int>(bodies);
+    rain.material = stack_material();
+    const double width = scenes::rain_columns(rain) * rain.spacing;
+    Scene scene = stack_base("rain_" + std::to_string(bodies), std::max(kGroundWidth, kGroundMargin * width));
+    scenes::add_rain(scene, rain);
+    return scene;
+  }
+  throw std::invalid_argument("unknown throughput scene '" + kind + "' (pyramid, rain)");
 }
 
 }  // namespace bench

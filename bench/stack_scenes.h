@@ -22,5 +22,11 @@ bool is_stack_scene(const std::string& name);
 /// Throws std::invalid_argument for a name not in stack_scene_names().
 BenchScene make_stack_scene(const std::string& name);
 
+/// Throughput scenes under the same rules, about `bodies` dynamic bodies:
+/// "pyramid" (the largest pyramid with at most that many boxes) and "rain"
+/// (scene_parts.h: disks and boxes falling onto the ground). The ground grows
+/// to fit. Throws std::invalid_argument for another kind.
+Scene make_throughput_scene(const std::string& kind, long bodies);
+
 }  // namespace bench
 }  // namespace collision2d

@@ -309,7 +309,13 @@ plot {plot}
     return True
 
 
+def gas_rows(scaling):
+    """The elastic-gas scaling runs (files written before the scene column are all gas)."""
+    return [r for r in scaling if r.get("scene", "gas") in ("gas", "", None)]
+
+
 def plot_scaling(scaling, png, workdir):
+    scaling = gas_rows(scaling)
     lines = []
     for engine in ["collision2d"] + PEERS + OPTIONAL_PEERS:
         rows = [r for r in scaling if r["engine"] == engine]
@@ -332,6 +338,129 @@ set key left top
 plot {", ".join(lines)}, x/100.0 * 0.1 dt 2 lc rgb 'gray' title 'slope 1 (reference)'
 """, workdir)
     return True
+
+
+THROUGHPUT_SCENES = ["pyramid", "rain"]
+WORKER_SPEEDUP_TARGET = 1.7
+WORKER_SPEEDUP_MIN_BODIES = 5000
+MEMORY_TARGET_KIB_PER_BODY = 1.0
+
+
+def throughput_rows(scaling, scene, engine, workers="1"):
+    rows = [r for r in scaling if r.get("scene") == scene and r["engine"] == engine and r.get("workers", "1") == workers]
+    return sorted(rows, key=lambda r: number(r["bodies"]))
+
+
+def plot_throughput(scaling, png, workdir):
+    lines = []
+    for scene in THROUGHPUT_SCENES:
+        for engine, workers in [("collision2d", "1"), ("collision2d", "2"), ("box2d_v3", "1")]:
+            rows = throughput_rows(scaling, scene, engine, workers)
+            if not rows:
+                continue
+            name = f"{scene}_{engine}_{workers}"
+            with open(os.path.join(workdir, name + ".dat"), "w") as f:
+                for r in rows:
+                    f.write(f"{r['bodies']} {r['ms_per_step']}\n")
+            label = f"{scene}: {'ours' if engine == 'collision2d' else 'Box2D v3'}" + \
+                (f", {workers} workers" if engine == "collision2d" else "")
+            style = "dt 1" if scene == "pyramid" else "dt 3"
+            lines.append(f"'{workdir}/{name}.dat' with linespoints pt 7 lw 2 {style} title '{label}'")
+    if not lines:
+        return False
+    gnuplot(f"""set terminal pngcairo size 800,560 noenhanced
+set output '{png}'
+set title 'Throughput: time per frame against bodies (4 substeps, sleeping off)'
+set logscale xy
+set xlabel 'dynamic bodies'
+set ylabel 'wall time per frame (ms, median)'
+set grid
+set key left top
+plot {", ".join(lines)}, x/100.0 * 0.1 dt 2 lc rgb 'gray' title 'slope 1 (reference)'
+""", workdir)
+    return True
+
+
+def plot_workers(scaling, png, workdir):
+    lines = []
+    for scene in THROUGHPUT_SCENES:
+        one = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "1")}
+        two = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "2")}
+        pts = [(number(b), one[b] / two[b]) for b in one if b in two and two[b] > 0]
+        if not pts:
+            continue
+        with open(os.path.join(workdir, f"speedup_{scene}.dat"), "w") as f:
+            for b, x in sorted(pts):
+                f.write(f"{b} {x}\n")
+        lines.append(f"'{workdir}/speedup_{scene}.dat' with linespoints pt 7 lw 2 title '{scene}'")
+    if not lines:
+        return False
+    gnuplot(f"""set terminal pngcairo size 800,480 noenhanced
+set output '{png}'
+set title 'Ours: speed-up of 2 workers over 1 (wall time per frame)'
+set logscale x
+set xlabel 'dynamic bodies'
+set ylabel 'time with 1 worker / time with 2'
+set yrange [0:2.2]
+set grid
+set key left top
+plot {", ".join(lines)}, {WORKER_SPEEDUP_TARGET} dt 2 lc rgb 'gray' title 'target {WORKER_SPEEDUP_TARGET}'
+""", workdir)
+    return True
+
+
+def throughput_target_rows(scaling, stacks, default):
+    rows = []
+    big = stack_rows(stacks, "stack_pyramid_100", default, seconds=max((r["seconds"] for r in stacks), default=0))
+    if big and finite(big["cpu_ms_over_box2d_v3"]):
+        rows.append(["base-100 pyramid, 1 worker: ms/frame <= 1x Box2D v3's",
+                     f"CPU {fmt(big['cpu_ms_over_box2d_v3'])}x ({fmt(big['cpu_ms_per_frame'])} ms)",
+                     verdict(big["cpu_ms_over_box2d_v3"], 1.0, strict=False)])
+    else:
+        rows.append(["base-100 pyramid, 1 worker: ms/frame <= 1x Box2D v3's", "Box2D v3 not in this run",
+                     "not measured"])
+    speedups = []
+    for scene in THROUGHPUT_SCENES:
+        one = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "1")}
+        two = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "2")}
+        speedups += [(scene, b, one[b] / two[b]) for b in one
+                     if b in two and number(b) >= WORKER_SPEEDUP_MIN_BODIES and two[b] > 0]
+    if speedups:
+        worst = min(speedups, key=lambda x: x[2])
+        rows.append([f"2 workers >= {WORKER_SPEEDUP_TARGET}x faster than 1 at >= {WORKER_SPEEDUP_MIN_BODIES} bodies",
+                     ", ".join(f"{sc} {b}: {fmt(x)}x" for sc, b, x in speedups),
+                     "met" if worst[2] >= WORKER_SPEEDUP_TARGET else
+                     f"missed by {fmt(WORKER_SPEEDUP_TARGET / worst[2])}x ({worst[0]} {worst[1]})"])
+    slope = scaling_slope(scaling, "collision2d", scenes=tuple(THROUGHPUT_SCENES))
+    rows.append([f"slope of log time against log bodies <= {SLOPE_TARGET} (pyramid and rain, 1 worker)",
+                 f"{fmt(slope)}", "met" if finite(slope) and slope <= SLOPE_TARGET else
+                 f"missed by {fmt(slope - SLOPE_TARGET)}" if finite(slope) else "not measured"])
+    mem = [(r["scene"], r["bodies"], (number(r["vmhwm_kib"]) - number(r["vmhwm_start_kib"])) / number(r["bodies"]))
+           for sc in THROUGHPUT_SCENES for r in throughput_rows(scaling, sc, "collision2d")
+           if number(r["bodies"]) >= 1e4 and r.get("vmhwm_start_kib")]
+    if mem:
+        worst = max(mem, key=lambda x: x[2])
+        rows.append([f"peak memory above the empty process <= {fmt(MEMORY_TARGET_KIB_PER_BODY)} kB per body "
+                     "(1e4 bodies and up)", ", ".join(f"{sc} {b}: {fmt(x)} kB" for sc, b, x in mem),
+                     "met" if worst[2] <= MEMORY_TARGET_KIB_PER_BODY else
+                     f"missed by {fmt(worst[2] / MEMORY_TARGET_KIB_PER_BODY)}x ({worst[0]} {worst[1]})"])
+    rows.append(["identical trajectories for 1, 2 and 4 workers",
+                 "checked by the unit test WorldGoldenRuns.WorkersDoNotChangeTrajectories (every bit of five "
+                 "golden runs)", "tested, not measured here"])
+    return rows
+
+
+def throughput_section(scaling, stacks, default):
+    runs = [r for r in scaling if r.get("scene") in THROUGHPUT_SCENES]
+    if not runs:
+        return "Not measured in this run.\n"
+    rows = [[r["scene"], r["engine"], r["workers"], r["bodies"], r["frames"], number(r["ms_per_step"]),
+             number(r["ms_per_step"]) * 1e3 / number(r["bodies"]),
+             (number(r["vmhwm_kib"]) - number(r["vmhwm_start_kib"])) / number(r["bodies"])]
+            for r in sorted(runs, key=lambda r: (r["scene"], r["engine"], r["workers"], number(r["bodies"])))]
+    return (table(["target", "measured", "verdict"], throughput_target_rows(scaling, stacks, default)) + "\n" +
+            table(["scene", "engine", "workers", "bodies", "timed frames", "ms/frame (wall)", "us per body",
+                   "peak memory above start (kB/body)"], rows))
 
 
 # ---------------------------------------------------------------------------
@@ -806,8 +935,9 @@ def exact_target_row(runs, solver, world_has_exact):
             f"{fallbacks} fallbacks", "not measurable in the World"]
 
 
-def scaling_slope(scaling, engine):
-    pts = [(number(r["bodies"]), number(r["ms_per_step"])) for r in scaling if r["engine"] == engine]
+def scaling_slope(scaling, engine, scenes=("gas",), workers="1"):
+    pts = [(number(r["bodies"]), number(r["ms_per_step"])) for r in scaling if r["engine"] == engine
+           and r.get("scene", "gas") in scenes and r.get("workers", "1") == workers]
     pts = [p for p in pts if finite(p[1]) and p[1] > 0]
     return least_squares_slope(pts) if len(pts) >= 2 else float("nan")
 
@@ -890,6 +1020,7 @@ def solver_section(solver):
 
 
 def scaling_section(scaling):
+    scaling = gas_rows(scaling)
     rows = [[r["engine"], r["bodies"], r["frames"], number(r["ms_per_step"]), number(r["cpu_ms_per_step"]),
              number(r["vmhwm_kib"]) / 1024.0] for r in scaling]
     slopes = [[e, scaling_slope(scaling, e)] for e in ["collision2d"] + PEERS + OPTIONAL_PEERS
@@ -959,13 +1090,19 @@ def main():
             if plot_pareto(runs, scene, png, work, default):
                 plots.append(f"![{scene}](perf/pareto_{scene}.png)")
         scaling_png = plot_scaling(scaling, os.path.join(args.perf_dir, "scaling.png"), work)
+        if plot_throughput(scaling, os.path.join(args.perf_dir, "throughput.png"), work):
+            plots_extra = ["![throughput](perf/throughput.png)"]
+        else:
+            plots_extra = []
+        if plot_workers(scaling, os.path.join(args.perf_dir, "workers.png"), work):
+            plots_extra.append("![workers](perf/workers.png)")
 
-    doc = render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default)
+    doc = render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra)
     with open(args.doc, "w") as f:
         f.write(doc)
 
 
-def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default):
+def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra=()):
     mode_note = ("The World's exact solver mode is swept in both pipelines on every scene but the "
                  "pyramid: its one cluster of 210 boxes (about 2400 complementarity rows) did not finish 30 frames "
                  "in exact mode within several minutes, so it is not measured there." if world_has_exact else
@@ -1172,6 +1309,19 @@ both are speeds); the Coulomb bound excess.
 {"![scaling](perf/scaling.png)" if scaling_png else ""}
 
 {scaling_section(scaling)}
+## Throughput
+
+`collision2d_scaling_bench --scene pyramid|rain` under the stack scenes'
+rules (unit boxes, mu 0.6, g -10, 4 substeps, sleeping off): the largest
+pyramid of at most n boxes, and a rain of n disks and boxes falling onto the
+ground (timed after its first second, when the lowest rows have landed).
+Ours with 1 and 2 workers (`WorldSettings::workers`), Box2D v3 on one
+thread when it is in the run; one process per size, so the peak memory is
+that size's alone.
+
+{chr(10).join(plots_extra)}
+
+{throughput_section(scaling, stacks, default)}
 ## Knob sweeps, scene by scene
 {knob_section(runs)}
 ## Where the World's time goes (profile notes)

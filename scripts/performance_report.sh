@@ -2,7 +2,8 @@
 # Regenerates the performance report in one command: builds the benchmarks
 # (ROS-free, Release), runs the speed/accuracy sweep with the peers, the
 # solver residual sweep, the stack scenes against every peer and the
-# scaling runs (one process per size, for the peak memory), then writes
+# scaling runs and the throughput runs (pyramid and rain, 1 and 2 workers;
+# one process per size, for the peak memory), then writes
 # docs/perf/*.csv, docs/perf/*.png (gnuplot) and docs/performance.md.
 # Ours runs in both pipelines (soft step and Fx2D, each set explicitly) in
 # the sweep and the stacks; the report follows whichever is the default.
@@ -30,6 +31,7 @@ OUT="$ROOT/docs/perf"
 QUICK=()
 BUILD_FIRST=1
 SCALING_SIZES=(100 1000 10000 100000)
+THROUGHPUT_SIZES=(100 1000 10000 100000)
 SCALING_ENGINES=(collision2d box2d chipmunk)
 BOX2D_V3_DIR="${COLLISION2D_BOX2D_V3_DIR:-}"
 BOX2D_V3_LIBRARY="${COLLISION2D_BOX2D_V3_LIBRARY:-}"
@@ -38,7 +40,7 @@ STACK_REPS=5
 
 for arg in "$@"; do
   case "$arg" in
-    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3 ;;
+    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3; THROUGHPUT_SIZES=(100 1000 10000) ;;
     --no-build) BUILD_FIRST=0 ;;
     *) echo "usage: $0 [--quick] [--no-build]" >&2; exit 2 ;;
   esac
@@ -101,6 +103,21 @@ for n in "${SCALING_SIZES[@]}"; do
   done
 done
 part_done scaling
+
+log "throughput: pyramid and rain, ours with 1 and 2 workers${BOX2D_V3_DIR:+, Box2D v3}"
+for scene in pyramid rain; do
+  for n in "${THROUGHPUT_SIZES[@]}"; do
+    for workers in 1 2; do
+      "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
+        grep "^collision2d," >> "$OUT/scaling.csv" || log "throughput: ours at $scene $n not measured"
+    done
+    if [[ -n $BOX2D_V3_DIR ]]; then
+      "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
+        grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n not measured"
+    fi
+  done
+done
+part_done throughput
 
 ELAPSED=$(( $(date +%s) - START ))
 log "measured in ${ELAPSED} s; writing plots and docs/performance.md"

@@ -220,5 +220,37 @@ void add_incline(Scene& scene, const InclineParams& p)
   add(scene, make_box(p.mass, p.box, p.box, rotate(Vec2{0.0, lift}, c, s), p.angle), p.material, "box");
 }
 
+int rain_columns(const RainParams& p)
+{
+  return p.columns > 0 ? p.columns : std::max(1, static_cast<int>(std::ceil(std::sqrt(2.0 * p.count))));
+}
+
+void add_rain(Scene& scene, const RainParams& p)
+{
+  require_count(p.count, "rain");
+  require_positive(p.size, "rain", "size");
+  if (!(p.spacing > p.size))
+  {
+    throw std::invalid_argument("rain: spacing must exceed size");
+  }
+  // Sizes cycle through these fractions of `size`; disks and boxes alternate.
+  constexpr double kScales[] = {1.0, 0.8, 0.6, 0.9, 0.7};
+  constexpr int kScaleCount = 5;
+  const int columns = rain_columns(p);
+  const double left = -0.5 * (columns - 1) * p.spacing;
+  for (int i = 0; i < p.count; ++i)
+  {
+    const int row = i / columns;
+    const int col = i % columns;
+    const double scale = kScales[(i / 2) % kScaleCount] * p.size;
+    const Vec2 centre{left + col * p.spacing, p.bottom + 0.5 * p.size + row * p.spacing};
+    const Vec2 velocity{0.0, -p.speed};
+    const bool disk = (i + row) % 2 == 0;
+    const double mass = p.density * (disk ? kTwoPi / 8.0 * scale * scale : scale * scale);
+    add(scene, disk ? Body(mass, 0.5 * scale, centre, velocity) : make_box(mass, scale, scale, centre, 0.0, velocity),
+        p.material, "rain_" + std::to_string(i));
+  }
+}
+
 }  // namespace scenes
 }  // namespace collision2d

@@ -313,6 +313,30 @@ TEST(StandardScenes, BuildingBlocksRejectImpossibleParameters)
 // ---------------------------------------------------------------------------
 // Shipped scene files
 
+TEST(StandardScenes, RainFallsAsAlternatingDisksAndBoxesWithoutTouching)
+{
+  Scene scene;
+  scenes::RainParams rain;
+  rain.count = 200;
+  scenes::add_rain(scene, rain);
+  ASSERT_EQ(scene.bodies.size(), 200u);
+  EXPECT_EQ(touching_pairs(scene), 0u);
+  std::size_t disks = 0;
+  for (const SceneBody& b : scene.bodies)
+  {
+    EXPECT_EQ(b.body.type(), BodyType::Dynamic);
+    EXPECT_EQ(b.body.velocity().y, -rain.speed);
+    EXPECT_GE(b.body.position().y, rain.bottom);
+    disks += b.body.shape() == Shape::Disk ? 1 : 0;
+  }
+  EXPECT_EQ(disks, 100u);  // disks and boxes in turn, shifted by a row so columns mix too
+  Scene again;
+  scenes::add_rain(again, rain);
+  EXPECT_EQ(again.bodies.back().body.position(), scene.bodies.back().body.position());
+  rain.spacing = rain.size;
+  EXPECT_THROW(scenes::add_rain(again, rain), std::invalid_argument);
+}
+
 TEST(SceneFiles, EveryShippedSceneEqualsItsBuilderBodyForBody)
 {
   const std::vector<std::string> names = standard_scene_names();

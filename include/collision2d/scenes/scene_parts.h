@@ -126,5 +126,23 @@ struct InclineParams
 };
 void add_incline(Scene& scene, const InclineParams& params);
 
+/// A rain: `count` bodies on a grid above the line y = bottom, disks and boxes
+/// in turn with sizes varying by a fixed pattern (no randomness, so every
+/// engine gets the same bodies), falling at `speed` onto whatever lies below.
+struct RainParams
+{
+  int count = 1000;
+  double size = 0.5;        ///< largest disk diameter and box edge (m)
+  double spacing = 1.0;     ///< grid pitch, > size (m)
+  int columns = 0;          ///< bodies per row; 0: about twice as wide as high
+  double bottom = 1.0;      ///< y of the lowest row's centres less half a size (m)
+  double speed = 2.0;       ///< downward speed at the start (m/s)
+  double density = 1.0;     ///< kg/m^2
+  Material material = rough_material();
+};
+void add_rain(Scene& scene, const RainParams& params);
+/// The columns add_rain uses for these parameters.
+int rain_columns(const RainParams& params);
+
 }  // namespace scenes
 }  // namespace collision2d

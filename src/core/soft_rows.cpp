@@ -177,21 +177,26 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
     r.a[j] = spare_;
     r.b[j] = spare_;
     r.first[j] = SIZE_MAX;
-    for (double* f : {r.nx, r.ny, r.tx, r.ty, r.ra1x, r.ra1y, r.rb1x, r.rb1y, r.ra2x, r.ra2y, r.rb2x, r.rb2y,
-                      r.base1, r.base2, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
-                      r.bias_rate, r.mu_s, r.mu_k, r.rough, r.kinetic1, r.kinetic2, r.anchor1, r.anchor2,
-                      r.normal1, r.normal2, r.tangent1, r.tangent2, r.frame1, r.frame2, r.sliding1, r.sliding2})
+    for (double* f : {r.nx, r.ny, r.tx, r.ty, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
+                      r.bias_rate, r.mu_s, r.mu_k, r.rough})
     {
       f[j] = 0.0;
     }
-    r.k11[j] = 1.0;
-    r.k22[j] = 1.0;
-    r.pair_tangent_mass[j] = 1.0;
-    r.mass_scale[j] = 1.0;
+    for (double* f : {r.k11, r.k22, r.pair_tangent_mass, r.mass_scale})
+    {
+      f[j] = 1.0;
+    }
+    for (RowPoint& q : r.point)
+    {
+      for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.kinetic, q.anchor, q.normal, q.tangent, q.frame,
+                        q.sliding})
+      {
+        f[j] = 0.0;
+      }
+    }
     return;
   }
   const ContactPoint& p = points[first];
-  const ContactPoint& q = points[first + 1];
   r.a[j] = static_cast<std::uint32_t>(p.a);
   r.b[j] = static_cast<std::uint32_t>(p.b);
   r.first[j] = first;
@@ -199,19 +204,9 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   r.ny[j] = p.normal.y;
   r.tx[j] = p.tangent.x;
   r.ty[j] = p.tangent.y;
-  r.ra1x[j] = p.r_a.x;
-  r.ra1y[j] = p.r_a.y;
-  r.rb1x[j] = p.r_b.x;
-  r.rb1y[j] = p.r_b.y;
-  r.ra2x[j] = q.r_a.x;
-  r.ra2y[j] = q.r_a.y;
-  r.rb2x[j] = q.r_b.x;
-  r.rb2y[j] = q.r_b.y;
-  r.base1[j] = p.base_separation;
-  r.base2[j] = q.base_separation;
   r.k11[j] = p.k_n;
   r.k12[j] = p.pair_k12;
-  r.k22[j] = q.k_n;
+  r.k22[j] = points[first + 1].k_n;
   r.pair_tangent_mass[j] = p.pair_tangent_mass;
   r.inv_mass_a[j] = p.inv_mass_a;
   r.inv_mass_b[j] = p.inv_mass_b;
@@ -222,18 +217,22 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   r.mu_s[j] = p.mu_s;
   r.mu_k[j] = p.mu_k;
   r.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1.0 : 0.0;
-  r.kinetic1[j] = p.kinetic ? 1.0 : 0.0;
-  r.kinetic2[j] = q.kinetic ? 1.0 : 0.0;
-  r.anchor1[j] = p.anchor_drift;
-  r.anchor2[j] = q.anchor_drift;
-  r.normal1[j] = p.lambda_n;
-  r.normal2[j] = q.lambda_n;
-  r.tangent1[j] = p.lambda_t;
-  r.tangent2[j] = q.lambda_t;
-  r.frame1[j] = p.frame_impulse;
-  r.frame2[j] = q.frame_impulse;
-  r.sliding1[j] = p.sliding ? 1.0 : 0.0;
-  r.sliding2[j] = q.sliding ? 1.0 : 0.0;
+  for (int k = 0; k < 2; ++k)
+  {
+    const ContactPoint& c = points[first + k];
+    RowPoint& q = r.point[k];
+    q.ra_x[j] = c.r_a.x;
+    q.ra_y[j] = c.r_a.y;
+    q.rb_x[j] = c.r_b.x;
+    q.rb_y[j] = c.r_b.y;
+    q.base[j] = c.base_separation;
+    q.kinetic[j] = c.kinetic ? 1.0 : 0.0;
+    q.anchor[j] = c.anchor_drift;
+    q.normal[j] = c.lambda_n;
+    q.tangent[j] = c.lambda_t;
+    q.frame[j] = c.frame_impulse;
+    q.sliding[j] = c.sliding ? 1.0 : 0.0;
+  }
 }
 
 void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity)
@@ -283,16 +282,15 @@ void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocit
       {
         continue;
       }
-      ContactPoint& p = points[r.first[j]];
-      ContactPoint& q = points[r.first[j] + 1];
-      p.lambda_n = r.normal1[j];
-      q.lambda_n = r.normal2[j];
-      p.lambda_t = r.tangent1[j];
-      q.lambda_t = r.tangent2[j];
-      p.frame_impulse = r.frame1[j];
-      q.frame_impulse = r.frame2[j];
-      p.sliding = r.sliding1[j] != 0.0;
-      q.sliding = r.sliding2[j] != 0.0;
+      for (int k = 0; k < 2; ++k)
+      {
+        ContactPoint& c = points[r.first[j] + k];
+        const RowPoint& q = r.point[k];
+        c.lambda_n = q.normal[j];
+        c.lambda_t = q.tangent[j];
+        c.frame_impulse = q.frame[j];
+        c.sliding = q.sliding[j] != 0.0;
+      }
     }
   }
 }

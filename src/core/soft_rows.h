@@ -20,6 +20,19 @@ namespace detail
 /// Lanes in one batch.
 constexpr int kRowLanes = 4;
 
+/// One point of each lane's manifold.
+struct alignas(32) RowPoint
+{
+  double ra_x[kRowLanes], ra_y[kRowLanes], rb_x[kRowLanes], rb_y[kRowLanes];  ///< lever arms (m)
+  double base[kRowLanes];     ///< gap at prepare less the anchors' offset (m)
+  double kinetic[kRowLanes];  ///< slid before: the kinetic cone applies
+  double anchor[kRowLanes];   ///< slip since sticking, at prepare (m)
+  double normal[kRowLanes];   ///< accumulated normal impulse (N s)
+  double tangent[kRowLanes];  ///< accumulated tangential impulse (N s)
+  double frame[kRowLanes];    ///< normal impulse applied this frame (N s)
+  double sliding[kRowLanes];  ///< friction at its bound
+};
+
 /// Four two-point manifolds, one per lane. Masks are 0 or 1.
 struct alignas(32) RowBatch
 {
@@ -27,21 +40,13 @@ struct alignas(32) RowBatch
   std::uint32_t b[kRowLanes];
   std::size_t first[kRowLanes];  ///< index of the manifold's first point
   double nx[kRowLanes], ny[kRowLanes], tx[kRowLanes], ty[kRowLanes];
-  double ra1x[kRowLanes], ra1y[kRowLanes], rb1x[kRowLanes], rb1y[kRowLanes];
-  double ra2x[kRowLanes], ra2y[kRowLanes], rb2x[kRowLanes], rb2y[kRowLanes];
-  double base1[kRowLanes], base2[kRowLanes];          ///< gap at prepare less the anchors' offset (m)
   double k11[kRowLanes], k12[kRowLanes], k22[kRowLanes];  ///< normal block (1/kg)
   double pair_tangent_mass[kRowLanes];                ///< kg
   double inv_mass_a[kRowLanes], inv_mass_b[kRowLanes], inv_inertia_a[kRowLanes], inv_inertia_b[kRowLanes];
   double bias_rate[kRowLanes], mass_scale[kRowLanes];  ///< the pair's softness
   double mu_s[kRowLanes], mu_k[kRowLanes];
   double rough[kRowLanes];                             ///< friction acts
-  double kinetic1[kRowLanes], kinetic2[kRowLanes];
-  double anchor1[kRowLanes], anchor2[kRowLanes];       ///< slip since sticking, at prepare (m)
-  double normal1[kRowLanes], normal2[kRowLanes];       ///< accumulated normal impulses (N s)
-  double tangent1[kRowLanes], tangent2[kRowLanes];     ///< accumulated tangential impulses (N s)
-  double frame1[kRowLanes], frame2[kRowLanes];         ///< normal impulse applied this frame (N s)
-  double sliding1[kRowLanes], sliding2[kRowLanes];  ///< friction at its bound
+  RowPoint point[2];
 };
 
 /// What every row of one pass shares.

@@ -87,10 +87,10 @@ Lane<V> load_lane(const Ops& ops, const RowBatch& r, const std::vector<BodyVeloc
   ops.gather(state, r.b, l.b);
   l.n = {ops.load(r.nx), ops.load(r.ny)};
   l.t = {ops.load(r.tx), ops.load(r.ty)};
-  l.ra1 = {ops.load(r.ra1x), ops.load(r.ra1y)};
-  l.rb1 = {ops.load(r.rb1x), ops.load(r.rb1y)};
-  l.ra2 = {ops.load(r.ra2x), ops.load(r.ra2y)};
-  l.rb2 = {ops.load(r.rb2x), ops.load(r.rb2y)};
+  l.ra1 = {ops.load(r.point[0].ra_x), ops.load(r.point[0].ra_y)};
+  l.rb1 = {ops.load(r.point[0].rb_x), ops.load(r.point[0].rb_y)};
+  l.ra2 = {ops.load(r.point[1].ra_x), ops.load(r.point[1].ra_y)};
+  l.rb2 = {ops.load(r.point[1].rb_x), ops.load(r.point[1].rb_y)};
   l.inv_ma = ops.load(r.inv_mass_a);
   l.inv_mb = ops.load(r.inv_mass_b);
   l.inv_ia = ops.load(r.inv_inertia_a);
@@ -131,11 +131,11 @@ V2<V> anchor_offset(const Lane<V>& l, V2<V> ra, V2<V> rb)
 }
 
 template <class V, class Ops>
-void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, double* normal, double* tangent, double* frame)
+void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, RowPoint& point)
 {
-  const V ln = ops.load(normal);
-  const V lt = ops.load(tangent);
-  ops.store(frame, ops.load(frame) + ln);
+  const V ln = ops.load(point.normal);
+  const V lt = ops.load(point.tangent);
+  ops.store(point.frame, ops.load(point.frame) + ln);
   const V zero = V(0.0);
   Lane<V> pushed = l;
   apply(pushed, ra, rb, scale(l.n, ln) + scale(l.t, lt));
@@ -150,8 +150,8 @@ template <class V, class Ops>
 void warm_start_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state)
 {
   Lane<V> l = load_lane<V>(ops, r, state);
-  warm_start_point(ops, l, l.ra1, l.rb1, r.normal1, r.tangent1, r.frame1);
-  warm_start_point(ops, l, l.ra2, l.rb2, r.normal2, r.tangent2, r.frame2);
+  warm_start_point(ops, l, l.ra1, l.rb1, r.point[0]);
+  warm_start_point(ops, l, l.ra2, l.rb2, r.point[1]);
   ops.scatter(state, r.a, l.a);
   ops.scatter(state, r.b, l.b);
 }
@@ -189,11 +189,11 @@ void lcp2(V k11, V k12, V k22, V q1, V q2, V& y1, V& y2)
 
 /// set_soft_impulse: the new accumulated normal impulse and its change applied.
 template <class V, class Ops>
-void set_normal(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, double* normal, double* frame, V total)
+void set_normal(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, RowPoint& point, V total)
 {
-  const V applied = total - ops.load(normal);
-  ops.store(normal, total);
-  ops.store(frame, ops.load(frame) + applied);
+  const V applied = total - ops.load(point.normal);
+  ops.store(point.normal, total);
+  ops.store(point.frame, ops.load(point.frame) + applied);
   apply(l, ra, rb, scale(l.n, applied));
 }
 
@@ -209,14 +209,14 @@ void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass,
   const V k11 = ops.load(r.k11);
   const V k12 = ops.load(r.k12);
   const V k22 = ops.load(r.k22);
-  const V x1 = ops.load(r.normal1);
-  const V x2 = ops.load(r.normal2);
+  const V x1 = ops.load(r.point[0].normal);
+  const V x2 = ops.load(r.point[1].normal);
   const V q1 = (dot(relative_velocity(l, l.ra1, l.rb1), l.n) + bias1 / scale1) - (k11 * x1 + k12 * x2);
   const V q2 = (dot(relative_velocity(l, l.ra2, l.rb2), l.n) + bias2 / scale2) - (k12 * x1 + k22 * x2);
   V y1, y2;
   lcp2(k11, k12, k22, q1, q2, y1, y2);
-  set_normal(ops, l, l.ra1, l.rb1, r.normal1, r.frame1, scale1 * y1);
-  set_normal(ops, l, l.ra2, l.rb2, r.normal2, r.frame2, scale2 * y2);
+  set_normal(ops, l, l.ra1, l.rb1, r.point[0], scale1 * y1);
+  set_normal(ops, l, l.ra2, l.rb2, r.point[1], scale2 * y2);
 }
 
 /// The manifold's friction as one row at its midpoint (solve_friction_pair),
@@ -230,16 +230,16 @@ void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
   const V2<V> rb = scale(l.rb1 + l.rb2, half);
   const V slip = dot(relative_velocity(l, ra, rb), l.t);
   const V vt = sel(pull == zero, slip, slip + pull);
-  const V n1 = ops.load(r.normal1);
-  const V normal_sum = n1 + ops.load(r.normal2);
-  const V old_total = ops.load(r.tangent1) + ops.load(r.tangent2);
+  const V n1 = ops.load(r.point[0].normal);
+  const V normal_sum = n1 + ops.load(r.point[1].normal);
+  const V old_total = ops.load(r.point[0].tangent) + ops.load(r.point[1].tangent);
   const V needed = old_total - vt * ops.load(r.pair_tangent_mass);
-  const V cone = sel(ops.load(r.kinetic1) != zero, ops.load(r.mu_k), ops.load(r.mu_s));
+  const V cone = sel(ops.load(r.point[0].kinetic) != zero, ops.load(r.mu_k), ops.load(r.mu_s));
   const V limit = cone * normal_sum;
   const auto rough = ops.load(r.rough) != zero;
   const V sliding = sel(limit < abs(needed), V(1.0), zero);
-  ops.store(r.sliding1, sel(rough, sliding, ops.load(r.sliding1)));
-  ops.store(r.sliding2, sel(rough, sliding, ops.load(r.sliding2)));
+  ops.store(r.point[0].sliding, sel(rough, sliding, ops.load(r.point[0].sliding)));
+  ops.store(r.point[1].sliding, sel(rough, sliding, ops.load(r.point[1].sliding)));
   const V total = vmax(neg(limit), vmin(limit, needed));
   Lane<V> pushed = l;
   apply(pushed, ra, rb, scale(l.t, total - old_total));
@@ -249,8 +249,8 @@ void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
   l.b.w = sel(rough, pushed.b.w, l.b.w);
   const V share = sel(zero < normal_sum, n1 / normal_sum, half);
   const V first = share * total;
-  ops.store(r.tangent1, sel(rough, first, ops.load(r.tangent1)));
-  ops.store(r.tangent2, sel(rough, total - first, ops.load(r.tangent2)));
+  ops.store(r.point[0].tangent, sel(rough, first, ops.load(r.point[0].tangent)));
+  ops.store(r.point[1].tangent, sel(rough, total - first, ops.load(r.point[1].tangent)));
 }
 
 /// The anchor pull of the biased pass: the mean slip of the two points since
@@ -261,8 +261,8 @@ V anchor_pull(const Ops& ops, const Lane<V>& l, const RowBatch& r, V2<V> d1, V2<
   const V zero = V(0.0);
   const V slip1 = dot(d1 - (l.rb1 - l.ra1), l.t);
   const V slip2 = dot(d2 - (l.rb2 - l.ra2), l.t);
-  const V drift1 = sel(ops.load(r.kinetic1) != zero, zero, ops.load(r.anchor1) + slip1);
-  const V drift2 = sel(ops.load(r.kinetic2) != zero, zero, ops.load(r.anchor2) + slip2);
+  const V drift1 = sel(ops.load(r.point[0].kinetic) != zero, zero, ops.load(r.point[0].anchor) + slip1);
+  const V drift2 = sel(ops.load(r.point[1].kinetic) != zero, zero, ops.load(r.point[1].anchor) + slip2);
   const V pull = (ops.load(r.mass_scale) * ops.load(r.bias_rate)) * (V(0.5) * (drift1 + drift2));
   const V max_push = V(pass.max_push);
   return vmax(neg(max_push), vmin(max_push, pull));
@@ -274,7 +274,7 @@ void solve_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state, c
   Lane<V> l = load_lane<V>(ops, r, state);
   const V2<V> d1 = anchor_offset(l, l.ra1, l.rb1);
   const V2<V> d2 = anchor_offset(l, l.ra2, l.rb2);
-  solve_normals(ops, l, r, pass, ops.load(r.base1) + dot(d1, l.n), ops.load(r.base2) + dot(d2, l.n));
+  solve_normals(ops, l, r, pass, ops.load(r.point[0].base) + dot(d1, l.n), ops.load(r.point[1].base) + dot(d2, l.n));
   const V pull = pass.use_bias ? anchor_pull(ops, l, r, d1, d2, pass) : V(0.0);
   solve_friction(ops, l, r, pull);
   ops.scatter(state, r.a, l.a);

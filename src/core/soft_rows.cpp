@@ -119,6 +119,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     c.lanes = 0;
   }
   overflow_.clear();
+  coloured_ = 0;
   // First pass: colour every manifold; rows are counted, then placed.
   row_colour_.clear();
   row_count_.assign(kMaxColours, 0);
@@ -134,6 +135,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     const bool row = row_manifold(p);
     std::size_t colour = 0;
     colour_manifold(k, a, b, row, colour);
+    coloured_ += colour < kMaxColours ? 1 : 0;
     if (row && colour < kMaxColours)
     {
       row_colour_.push_back(k);
@@ -235,40 +237,36 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   }
 }
 
-void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity)
+namespace
 {
-  const RowColour& c = colours_[colour];
-  const bool wide = wide_rows_active();
-  for (std::size_t r = c.begin; r < c.end; ++r)
+/// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches.
+template <class F>
+void each_batch(const RowColour& c, std::vector<RowBatch>& rows, std::size_t part, std::size_t parts, F f)
+{
+  const std::size_t n = c.end - c.begin;
+  for (std::size_t r = c.begin + n * part / parts; r < c.begin + n * (part + 1) / parts; ++r)
   {
-    const int lanes = static_cast<int>(std::min<std::size_t>(kRowLanes, c.lanes - (r - c.begin) * kRowLanes));
-    if (wide)
-    {
-      warm_start_batch_wide(rows_[r], velocity);
-    }
-    else
-    {
-      warm_start_batch_scalar(rows_[r], lanes, velocity);
-    }
+    f(rows[r], static_cast<int>(std::min<std::size_t>(kRowLanes, c.lanes - (r - c.begin) * kRowLanes)));
   }
 }
+}  // namespace
 
-void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, std::size_t part,
+                               std::size_t parts)
 {
-  const RowColour& c = colours_[colour];
   const bool wide = wide_rows_active();
-  for (std::size_t r = c.begin; r < c.end; ++r)
-  {
-    const int lanes = static_cast<int>(std::min<std::size_t>(kRowLanes, c.lanes - (r - c.begin) * kRowLanes));
-    if (wide)
-    {
-      solve_batch_wide(rows_[r], velocity, pass);
-    }
-    else
-    {
-      solve_batch_scalar(rows_[r], lanes, velocity, pass);
-    }
-  }
+  each_batch(colours_[colour], rows_, part, parts, [&](RowBatch& batch, int lanes) {
+    wide ? warm_start_batch_wide(batch, velocity) : warm_start_batch_scalar(batch, lanes, velocity);
+  });
+}
+
+void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass,
+                          std::size_t part, std::size_t parts)
+{
+  const bool wide = wide_rows_active();
+  each_batch(colours_[colour], rows_, part, parts, [&](RowBatch& batch, int lanes) {
+    wide ? solve_batch_wide(batch, velocity, pass) : solve_batch_scalar(batch, lanes, velocity, pass);
+  });
 }
 
 void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const

@@ -79,8 +79,13 @@ public:
   std::size_t colour_count() const { return colours_.size(); }
   const std::vector<std::size_t>& others(std::size_t colour) const { return colours_[colour].others; }
   const std::vector<std::size_t>& overflow() const { return overflow_; }
-  void warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity);
-  void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+  /// Manifolds in colours (rows and others), not counting the overflow.
+  std::size_t coloured() const { return coloured_; }
+  /// A colour's batches, or part `part` of `parts` of them (the parts share no body).
+  void warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, std::size_t part = 0,
+                       std::size_t parts = 1);
+  void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
+                  std::size_t parts = 1);
   /// The rows' impulses and friction state back into their points; drops the spare body.
   void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const;
 
@@ -96,6 +101,7 @@ private:
   std::vector<std::size_t> row_colour_;  ///< scratch: (first point, colour) of each row manifold
   std::vector<std::size_t> row_count_;   ///< scratch: row manifolds per colour
   std::size_t words_ = 0;
+  std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
 };
 

@@ -1,5 +1,9 @@
 #include "worker_pool.h"
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace collision2d
 {
 namespace detail
@@ -45,6 +49,47 @@ void WorkerPool::stop()
     thread.join();
   }
   threads_.clear();
+}
+
+namespace
+{
+/// Spins between yields at a sync(): long enough to catch a worker that is
+/// a few microseconds behind, short enough not to starve a busy machine.
+constexpr int kSpinsBeforeYield = 64;
+
+void pause()
+{
+#if defined(__x86_64__) || defined(__i386__)
+  _mm_pause();
+#endif
+}
+}  // namespace
+
+void WorkerPool::sync()
+{
+  const std::size_t workers = threads_.size() + 1;
+  if (workers == 1)
+  {
+    return;
+  }
+  const std::size_t phase = phase_.load(std::memory_order_acquire);
+  if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == workers)
+  {
+    arrived_.store(0, std::memory_order_relaxed);
+    phase_.fetch_add(1, std::memory_order_release);
+    return;
+  }
+  for (int spins = 0; phase_.load(std::memory_order_acquire) == phase; ++spins)
+  {
+    if (spins < kSpinsBeforeYield)
+    {
+      pause();
+    }
+    else
+    {
+      std::this_thread::yield();
+    }
+  }
 }
 
 void WorkerPool::range(std::size_t index, std::size_t& begin, std::size_t& end) const

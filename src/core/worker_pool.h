@@ -4,6 +4,7 @@
 // its own range's slots, so the result does not depend on the worker count.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <mutex>
@@ -32,6 +33,13 @@ public:
   void resize(int workers);
   /// Runs `job` over [0, count) split across the workers; returns when all are done.
   void run(std::size_t count, Job job, void* context);
+  /// Runs `job` once on every worker at the same time, as job(context, w, w + 1)
+  /// for worker w; inside it the workers may meet at sync().
+  void run_team(Job job, void* context) { run(static_cast<std::size_t>(workers()), job, context); }
+  /// Inside a run_team job: returns once every worker has called it, and
+  /// what each wrote before is seen by all after. Workers spin (they are
+  /// expected to arrive within microseconds of each other).
+  void sync();
 
 private:
   void stop();
@@ -50,6 +58,8 @@ private:
   Job job_ = nullptr;
   void* context_ = nullptr;
   std::size_t count_ = 0;
+  std::atomic<std::size_t> arrived_{0};  ///< workers at the current sync()
+  std::atomic<std::size_t> phase_{0};    ///< bumped when the last one arrives
 };
 
 }  // namespace detail

@@ -31,6 +31,9 @@ struct StepContext
   bool warm = false;           ///< this substep starts from cached impulses
 };
 
+/// One soft pass's parameters (world_soft_solve.cpp).
+struct SoftPass;
+
 /// Each body's pose and velocity, what a failed step puts back.
 struct BodyMotion
 {
@@ -74,10 +77,13 @@ struct WorldImpl
   /// take only the islands it could not solve).
   void solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report);
   void aim_exact_targets(const StepContext& ctx, bool use_bias);
-  /// Warm start and one soft pass over the frame's manifolds: in colour
-  /// order on the rows (iterative mode), else in point order.
-  void warm_start_soft();
-  void solve_soft(const StepContext& ctx, bool use_bias);
+  // world_soft_solve.cpp: the soft passes.
+  /// A warm start (with `warm`) and one soft pass over the frame's manifolds:
+  /// by colour on the rows (iterative mode, shared among the workers), else
+  /// in point order.
+  void soft_pass(const StepContext& ctx, bool use_bias, bool warm);
+  static void soft_pass_part(void* pass, std::size_t worker, std::size_t end);
+  void soft_colours(const SoftPass& pass, std::size_t part, std::size_t parts);
   void warm_start_manifold(std::size_t first);
   void solve_soft_manifold(std::size_t first, const StepContext& ctx, bool use_bias);
   /// A sticking point's slip from its anchor now (m); 0 for a sliding one.

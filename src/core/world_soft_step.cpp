@@ -180,11 +180,7 @@ void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport
     aim_exact_targets(ctx, use_bias);
     solve_exact_islands(report, &exact_targets_, !use_bias);  // world_exact.cpp
   }
-  if (use_bias)
-  {
-    warm_start_soft();
-  }
-  solve_soft(ctx, use_bias);
+  soft_pass(ctx, use_bias, use_bias);                    // world_soft_solve.cpp
 }
 
 void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
@@ -201,102 +197,6 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
     const double push = std::min(-p.softness.mass_scale * p.softness.bias_rate * s, settings_.contact_push_speed);
     exact_targets_[k] = s > 0.0 ? -s * ctx.inv_h : (use_bias ? push : 0.0);
   }
-}
-
-void WorldImpl::warm_start_soft()
-{
-  if (!rows_on_)
-  {
-    warm_start();                                          // world_solve.cpp
-    return;
-  }
-  for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
-  {
-    soft_rows_.warm_start_rows(c, velocity_);
-    for (std::size_t first : soft_rows_.others(c))
-    {
-      warm_start_manifold(first);
-    }
-  }
-  for (std::size_t first : soft_rows_.overflow())
-  {
-    warm_start_manifold(first);
-  }
-}
-
-void WorldImpl::solve_soft(const StepContext& ctx, bool use_bias)
-{
-  if (!rows_on_)
-  {
-    for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
-    {
-      solve_soft_manifold(k, ctx, use_bias);
-    }
-    return;
-  }
-  // A colour's manifolds share no moving body: its rows and its other
-  // manifolds may go in any order, and the rows four at a time.
-  const RowPass pass{ctx.inv_h, settings_.contact_push_speed, use_bias};
-  for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
-  {
-    soft_rows_.solve_rows(c, velocity_, pass);
-    for (std::size_t first : soft_rows_.others(c))
-    {
-      solve_soft_manifold(first, ctx, use_bias);
-    }
-  }
-  for (std::size_t first : soft_rows_.overflow())
-  {
-    solve_soft_manifold(first, ctx, use_bias);
-  }
-}
-
-void WorldImpl::warm_start_manifold(std::size_t first)
-{
-  detail::warm_start(points_[first], velocity_);
-  if (points_[first].count == 2)
-  {
-    detail::warm_start(points_[first + 1], velocity_);
-  }
-}
-
-void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool use_bias)
-{
-  ContactPoint& p = points_[k];
-  if (!p.active || p.exact)
-  {
-    return;
-  }
-  const bool rough = ctx.effects.friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
-  const double push = settings_.contact_push_speed;
-  if (p.count == 2)
-  {
-    ContactPoint& q = points_[k + 1];
-    solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
-    if (rough)
-    {
-      const double pull = use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p) + anchor_drift(q)), push) : 0.0;
-      solve_friction_pair(p, q, velocity_, pull);
-    }
-    return;
-  }
-  solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
-  if (rough)
-  {
-    solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p), push) : 0.0);
-  }
-}
-
-double WorldImpl::anchor_drift(const ContactPoint& p) const
-{
-  return p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
-}
-
-double WorldImpl::anchor_pull(const ContactPoint& p, double drift, double max_push) const
-{
-  // As the normal's push-out: the spring's rate, capped.
-  const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
-  return std::max(-max_push, std::min(max_push, pull));
 }
 
 void WorldImpl::update_anchors()

@@ -275,6 +275,17 @@ TEST(WorldGoldenRuns, WorkersDoNotChangeTrajectories)
   }
 }
 
+TEST(WorldGoldenRuns, SharedSoftPassesDoNotChangeTrajectories)
+{
+  // A pyramid large enough that the workers share every colour of the soft
+  // passes (and the narrow phase): every bit must match one worker's run.
+  const auto scene = [] { return scenes::pyramid(40); };
+  const auto with = [](int workers) { return [workers](WorldSettings& s) { s.workers = workers; }; };
+  const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), 20);
+  EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), 20), one);
+  EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), 20), one);
+}
+
 TEST(WorldGoldenRuns, WideRowsMatchTheScalarPath)
 {
   // The scalar rows are the reference the soft-step pins were made with; the

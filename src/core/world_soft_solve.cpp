@@ -1,0 +1,158 @@
+// The soft step's passes over the frame's manifolds (world_soft_step.cpp
+// calls them each substep): a warm start and a biased pass, or the relax.
+// In the iterative mode they walk the colours of the soft rows (soft_rows.h);
+// a colour's manifolds share no moving body, so its rows go four at a time
+// and, with several workers, its manifolds are shared out among them, all
+// meeting before the next colour. Any split gives the same bits. The exact
+// mode keeps the point order.
+#include "world_impl.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// Coloured manifolds below which a pass is too short to share among workers
+/// (a meeting per colour costs about a microsecond).
+constexpr std::size_t kMinTeamManifolds = 512;
+
+/// Part `part` of `parts` of [0, n).
+std::size_t part_begin(std::size_t n, std::size_t part, std::size_t parts) { return n * part / parts; }
+
+}  // namespace
+
+struct SoftPass
+{
+  WorldImpl* world = nullptr;
+  const StepContext* ctx = nullptr;
+  bool use_bias = false;
+  bool warm = false;
+};
+
+void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
+{
+  if (!rows_on_)
+  {
+    if (warm)
+    {
+      warm_start();                                        // world_solve.cpp
+    }
+    for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
+    {
+      solve_soft_manifold(k, ctx, use_bias);
+    }
+    return;
+  }
+  SoftPass pass{this, &ctx, use_bias, warm};
+  if (workers_.workers() > 1 && soft_rows_.coloured() >= kMinTeamManifolds)
+  {
+    workers_.run_team(&WorldImpl::soft_pass_part, &pass);
+    return;
+  }
+  soft_colours(pass, 0, 1);
+}
+
+void WorldImpl::soft_pass_part(void* pass, std::size_t worker, std::size_t)
+{
+  SoftPass& p = *static_cast<SoftPass*>(pass);
+  p.world->soft_colours(p, worker, static_cast<std::size_t>(p.world->workers_.workers()));
+}
+
+void WorldImpl::soft_colours(const SoftPass& pass, std::size_t part, std::size_t parts)
+{
+  const auto meet = [&] {
+    if (parts > 1)
+    {
+      workers_.sync();
+    }
+  };
+  const auto others = [&](std::size_t c, auto verb) {
+    const std::vector<std::size_t>& list = soft_rows_.others(c);
+    for (std::size_t k = part_begin(list.size(), part, parts); k < part_begin(list.size(), part + 1, parts); ++k)
+    {
+      verb(list[k]);
+    }
+  };
+  const auto overflow = [&](auto verb) {
+    if (part == 0)
+    {
+      for (std::size_t first : soft_rows_.overflow())
+      {
+        verb(first);
+      }
+    }
+  };
+  const auto warm = [&](std::size_t first) { warm_start_manifold(first); };
+  const auto solve = [&](std::size_t first) { solve_soft_manifold(first, *pass.ctx, pass.use_bias); };
+  if (pass.warm)
+  {
+    for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
+    {
+      soft_rows_.warm_start_rows(c, velocity_, part, parts);
+      others(c, warm);
+      meet();
+    }
+    overflow(warm);
+    meet();
+  }
+  const RowPass rows{pass.ctx->inv_h, settings_.contact_push_speed, pass.use_bias};
+  for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
+  {
+    soft_rows_.solve_rows(c, velocity_, rows, part, parts);
+    others(c, solve);
+    meet();
+  }
+  overflow(solve);
+}
+
+void WorldImpl::warm_start_manifold(std::size_t first)
+{
+  detail::warm_start(points_[first], velocity_);
+  if (points_[first].count == 2)
+  {
+    detail::warm_start(points_[first + 1], velocity_);
+  }
+}
+
+void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool use_bias)
+{
+  ContactPoint& p = points_[k];
+  if (!p.active || p.exact)
+  {
+    return;
+  }
+  const bool rough = ctx.effects.friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
+  const double push = settings_.contact_push_speed;
+  if (p.count == 2)
+  {
+    ContactPoint& q = points_[k + 1];
+    solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
+    if (rough)
+    {
+      const double pull = use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p) + anchor_drift(q)), push) : 0.0;
+      solve_friction_pair(p, q, velocity_, pull);
+    }
+    return;
+  }
+  solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
+  if (rough)
+  {
+    solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p), push) : 0.0);
+  }
+}
+
+double WorldImpl::anchor_drift(const ContactPoint& p) const
+{
+  return p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+}
+
+double WorldImpl::anchor_pull(const ContactPoint& p, double drift, double max_push) const
+{
+  // As the normal's push-out: the spring's rate, capped.
+  const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
+  return std::max(-max_push, std::min(max_push, pull));
+}
+
+}  // namespace detail
+}  // namespace collision2d

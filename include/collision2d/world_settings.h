@@ -80,7 +80,7 @@ struct Material
   X(contact_damping_ratio, double, 10.0, kNonNegative, "", "Soft step: damping ratio of the contact spring") \
   X(contact_push_speed, double, 3.0, kPositive, "m/s", "Soft step: fastest a penetration is pushed out") \
   X(speculative_margin, double, 0.02, kNonNegative, "m", "Soft step: pairs within this gap get contacts before they touch") \
-  X(workers, int, 1, kWorkerCount, "", "Threads stepping the world (the narrow phase today); trajectories are the same for any count")
+  X(workers, int, 1, kWorkerCount, "", "Threads stepping the world (narrow phase, soft contact passes); trajectories are the same for any count")
 // clang-format on
 
 struct WorldSettings

@@ -111,8 +111,8 @@ bool wide_rows_active();
 /// Tests: run the scalar path even where the wide one is available.
 void set_wide_rows_enabled(bool enabled);
 
-/// The kernel entry points over one batch (soft_rows_kernel.h); the wide ones
-/// are defined only where AVX2 is compiled in.
+/// The kernel entry points over one batch (soft_rows_kernel.h). The wide ones
+/// live in soft_rows_avx2.cpp; a build without AVX2 makes them the scalar path.
 void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
 void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 bool wide_rows_compiled();

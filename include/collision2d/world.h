@@ -47,8 +47,10 @@ struct StepReport
   int frames = 0;
   int substeps = 0;                 ///< substeps done in total
   std::size_t contact_count = 0;    ///< contact points in the last substep
-  /// Largest depth left after correction (m): the last substep's contact
-  /// pairs measured again at the poses the step ends with.
+  /// Largest depth left after correction at the poses the step ends with
+  /// (m): in the Fx2D step the last substep's contact pairs detected again;
+  /// in the soft step the frame's contact points followed by the bodies' pose
+  /// changes (as the solver sees them; detection is once per frame).
   double max_penetration = 0.0;
   double kinetic_energy = 0.0;      ///< of the dynamic bodies after the step (J)
   ActiveEffects active;             ///< union over the step's frames

@@ -94,6 +94,9 @@ struct WorldImpl
   void update_anchors();
   void integrate_positions(StepContext& ctx, StepReport& report);
   void restitution_pass(StepReport& report);
+  /// The deepest overlap of the frame's contact points at the poses now,
+  /// followed from the pose changes since they were prepared (m).
+  double followed_penetration() const;
 
   // world_effects.cpp
   StepContext select_effects() const;

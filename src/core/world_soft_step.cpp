@@ -247,6 +247,16 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   }
 }
 
+double WorldImpl::followed_penetration() const
+{
+  double deepest = 0.0;
+  for (const ContactPoint& p : points_)
+  {
+    deepest = p.active ? std::max(deepest, -current_separation(p, velocity_)) : deepest;
+  }
+  return deepest;
+}
+
 void WorldImpl::restitution_pass(StepReport& report)
 {
   double fastest = 0.0;

@@ -189,7 +189,9 @@ void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
 
 void WorldImpl::finish_report(StepReport& report) const
 {
-  report.max_penetration = measure_penetration();
+  // The soft step follows its contacts' gaps from the poses; the Fx2D step,
+  // whose correction is linearised, measures them again.
+  report.max_penetration = settings_.soft_step ? followed_penetration() : measure_penetration();
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     if (bodies_[i].type() == BodyType::Dynamic)

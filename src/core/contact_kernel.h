@@ -54,17 +54,16 @@ Softness make_softness(double hertz, double damping_ratio, double h);
 /// target, the friction state and the accumulated impulses.
 struct ContactPoint
 {
+  // The fields the solver passes read come first, so a point's pass touches
+  // as few cache lines as possible; what only detection and prepare use follows.
+
   // Geometry.
   std::size_t a = 0;  ///< body index, a < b
   std::size_t b = 0;
   Vec2 normal;        ///< unit, from a to b
   Vec2 tangent;       ///< perp(normal): tangential impulses act on b along it
-  Vec2 point;         ///< world contact point at detection (m)
   Vec2 r_a;           ///< lever arm from a's centre to the point (m)
   Vec2 r_b;
-  double penetration = 0.0;  ///< depth at detection (m)
-  double separation = 0.0;   ///< signed gap at detection (m): -depth, > 0 for a speculative point
-  std::uint32_t feature = 0;
 
   // Masses. Per point, because the World drops a body's inertia where it
   // cannot turn (rotation off, a smooth disk); 0 for static and kinematic bodies.
@@ -73,39 +72,49 @@ struct ContactPoint
   double inv_inertia_a = 0.0;  ///< 1/(kg m^2)
   double inv_inertia_b = 0.0;
   double k_n = 0.0;            ///< inverse effective mass along the normal (1/kg)
-  double k_t = 0.0;            ///< inverse effective mass along the tangent (1/kg)
   double normal_mass = 0.0;    ///< 1 / k_n (kg)
-  double tangent_mass = 0.0;   ///< 1 / k_t (kg)
   double pair_tangent_mass = 0.0;  ///< 1 / K_t at a two-point manifold's midpoint (kg)
 
-  // Targets, friction state and impulses.
-  double target = 0.0;    ///< post-solve normal separation speed (m/s), fixed at prepare
-  double restitution = 0.0;  ///< the pair's e
+  // Friction state and impulses.
   double mu_s = 0.0;      ///< static friction coefficient
   double mu_k = 0.0;      ///< kinetic friction coefficient
-  bool kinetic = false;   ///< slid before: the kinetic bound applies
-  bool sliding = false;   ///< friction at its bound in the last solve
   double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
   double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
 
-  // Soft step: the gap at prepare less the anchors' offset, so the current gap
-  // follows from the bodies' pose changes; the pre-solve normal speed; the
-  // impulse the frame applied (restitution only acts where it pushed).
-  double base_separation = 0.0;  ///< m
-  double approach_speed = 0.0;   ///< normal relative speed at prepare (m/s), < 0 approaching
+  // Soft step: the impulse the frame applied (restitution only acts where it
+  // pushed), the slip carried from earlier frames, and the gap at prepare
+  // less the anchors' offset, so the current gap follows from the bodies'
+  // pose changes.
   double frame_impulse = 0.0;    ///< normal impulse applied over the frame, warm starts included (N s)
   double anchor_drift = 0.0;     ///< tangential slip since the point last stuck, at prepare (m)
+  double base_separation = 0.0;  ///< m
   double pair_k12 = 0.0;         ///< first point of a manifold: pair_coupling, fixed for the frame (1/kg)
-  bool pair_block = false;       ///< ... and whether its 2x2 block is solvable
   Softness softness;
+  int count = 1;                 ///< points in this pair's manifold
+  bool pair_block = false;       ///< first point of a manifold: whether its 2x2 block is solvable
+  bool kinetic = false;          ///< slid before: the kinetic bound applies
+  bool sliding = false;          ///< friction at its bound in the last solve
+  bool active = true;            ///< World: false for a sleeping island's carried point
+  bool exact = false;            ///< World: solved by its island's LCP this substep
+  bool position_solved = false;  ///< World: penetration corrected by its island's LCP
+
+  // Detection.
+  Vec2 point;                ///< world contact point at detection (m)
+  double penetration = 0.0;  ///< depth at detection (m)
+  double separation = 0.0;   ///< signed gap at detection (m): -depth, > 0 for a speculative point
+  std::uint32_t feature = 0;
+
+  // Prepare: the tangent's own mass, the Newton target and, for the soft
+  // step, the pre-solve normal speed.
+  double k_t = 0.0;           ///< inverse effective mass along the tangent (1/kg)
+  double tangent_mass = 0.0;  ///< 1 / k_t (kg)
+  double target = 0.0;        ///< post-solve normal separation speed (m/s), fixed at prepare
+  double restitution = 0.0;   ///< the pair's e
+  double approach_speed = 0.0;  ///< normal relative speed at prepare (m/s), < 0 approaching
 
   // Bookkeeping of the solvers that own the point.
   std::size_t contact = 0;  ///< index into the caller's contact list
   std::size_t cluster = 0;  ///< representative body of the coupled cluster
-  int count = 1;            ///< points in this pair's manifold
-  bool active = true;       ///< World: false for a sleeping island's carried point
-  bool exact = false;       ///< World: solved by its island's LCP this substep
-  bool position_solved = false;  ///< World: penetration corrected by its island's LCP
 };
 
 /// Inverse effective mass of an impulse along `dir` at lever arms r_a, r_b (1/kg).

@@ -141,12 +141,16 @@ void WorldImpl::aim_at_impact(ContactPoint& p) const
 {
   // A speculative point is hit later in the frame, after gravity has closed
   // its gap faster: its target is e times the approach speed at contact.
+  if (p.separation <= 0.0 || p.restitution == 0.0)
+  {
+    return;  // checked first: most points touch or do not bounce
+  }
   const auto falls = [&](std::size_t i) { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; };
   const Vec2 closing_gravity = (falls(p.a) ? settings_.gravity : Vec2{0.0, 0.0}) -
                                (falls(p.b) ? settings_.gravity : Vec2{0.0, 0.0});
   const double closing = dot(closing_gravity, p.normal);  // m/s^2, > 0 closes the gap
   const double approach = std::max(0.0, -p.approach_speed);
-  if (p.separation <= 0.0 || p.restitution == 0.0 || closing <= 0.0)
+  if (closing <= 0.0)
   {
     return;
   }
@@ -241,9 +245,12 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
     }
     BodyVelocity& state = velocity_[i];
     state.moved = b.position() - prepared_position_[i];
+    // A body that has not turned (static, asleep, not spinning) needs no
+    // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
     const double turned = b.theta() - prepared_theta_[i];
-    state.turned_cos = std::cos(turned);
-    state.turned_sin = std::sin(turned);
+    const bool still = turned == 0.0 && !std::signbit(turned);
+    state.turned_cos = still ? 1.0 : std::cos(turned);
+    state.turned_sin = still ? 0.0 : std::sin(turned);
   }
 }
 

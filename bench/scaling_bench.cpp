@@ -154,7 +154,10 @@ int main(int argc, char** argv)
     scene.settings.workers = args.workers;
     const long bodies = std::count_if(scene.bodies.begin(), scene.bodies.end(),
                                       [](const SceneBody& b) { return b.body.type() == BodyType::Dynamic; });
-    EngineConfig config{args.engine, PeerVariant::Defaults, scene.settings};
+    // The throughput scenes follow the stack comparison's rule: each peer with
+    // its own defaults but our substeps and sleeping off, as the scene sets ours.
+    const PeerVariant variant = args.scene == "gas" ? PeerVariant::Defaults : PeerVariant::Substepped;
+    EngineConfig config{args.engine, variant, scene.settings};
     std::unique_ptr<Engine> engine = make_engine(scene, config);
     time_frames(*engine, args.scene == "rain" ? kRainWarmupFrames : kWarmupFrames);
     const int frames = std::clamp(static_cast<int>(kFrameBudget / bodies), kMinFrames, kMaxFrames);

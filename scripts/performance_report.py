@@ -363,7 +363,7 @@ def plot_throughput(scaling, png, workdir):
                 for r in rows:
                     f.write(f"{r['bodies']} {r['ms_per_step']}\n")
             label = f"{scene}: {'ours' if engine == 'collision2d' else 'Box2D v3'}" + \
-                (f", {workers} workers" if engine == "collision2d" else "")
+                (f", {workers} worker{'s' if workers != '1' else ''}" if engine == "collision2d" else "")
             style = "dt 1" if scene == "pyramid" else "dt 3"
             lines.append(f"'{workdir}/{name}.dat' with linespoints pt 7 lw 2 {style} title '{label}'")
     if not lines:

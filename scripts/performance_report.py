@@ -314,30 +314,37 @@ def gas_rows(scaling):
     return [r for r in scaling if r.get("scene", "gas") in ("gas", "", None)]
 
 
-def plot_scaling(scaling, png, workdir):
-    scaling = gas_rows(scaling)
+def plot_time_against_bodies(series, png, title, xlabel, workdir):
+    """One log-log line per (name, rows, label, style) of time per frame against bodies."""
     lines = []
-    for engine in ["collision2d"] + PEERS + OPTIONAL_PEERS:
-        rows = [r for r in scaling if r["engine"] == engine]
+    for name, rows, label, style in series:
         if not rows:
             continue
-        with open(os.path.join(workdir, engine + "_scaling.dat"), "w") as f:
+        with open(os.path.join(workdir, name + ".dat"), "w") as f:
             for r in rows:
                 f.write(f"{r['bodies']} {r['ms_per_step']}\n")
-        lines.append(f"'{workdir}/{engine}_scaling.dat' with linespoints pt 7 lw 2 title '{engine}'")
+        lines.append(f"'{workdir}/{name}.dat' with linespoints pt 7 lw 2 {style} title '{label}'")
     if not lines:
         return False
     gnuplot(f"""set terminal pngcairo size 800,560 noenhanced
 set output '{png}'
-set title 'Scaling: elastic gas of n disks (ours at its defaults, peers at theirs)'
+set title '{title}'
 set logscale xy
-set xlabel 'bodies'
+set xlabel '{xlabel}'
 set ylabel 'wall time per frame (ms, median)'
 set grid
 set key left top
 plot {", ".join(lines)}, x/100.0 * 0.1 dt 2 lc rgb 'gray' title 'slope 1 (reference)'
 """, workdir)
     return True
+
+
+def plot_scaling(scaling, png, workdir):
+    scaling = gas_rows(scaling)
+    series = [(engine + "_scaling", [r for r in scaling if r["engine"] == engine], engine, "")
+              for engine in ["collision2d"] + PEERS + OPTIONAL_PEERS]
+    return plot_time_against_bodies(series, png, "Scaling: elastic gas of n disks (ours at its defaults, peers at theirs)",
+                                    "bodies", workdir)
 
 
 THROUGHPUT_SCENES = ["pyramid", "rain"]
@@ -352,33 +359,15 @@ def throughput_rows(scaling, scene, engine, workers="1"):
 
 
 def plot_throughput(scaling, png, workdir):
-    lines = []
+    series = []
     for scene in THROUGHPUT_SCENES:
         for engine, workers in [("collision2d", "1"), ("collision2d", "2"), ("box2d_v3", "1")]:
-            rows = throughput_rows(scaling, scene, engine, workers)
-            if not rows:
-                continue
-            name = f"{scene}_{engine}_{workers}"
-            with open(os.path.join(workdir, name + ".dat"), "w") as f:
-                for r in rows:
-                    f.write(f"{r['bodies']} {r['ms_per_step']}\n")
             label = f"{scene}: {'ours' if engine == 'collision2d' else 'Box2D v3'}" + \
                 (f", {workers} worker{'s' if workers != '1' else ''}" if engine == "collision2d" else "")
-            style = "dt 1" if scene == "pyramid" else "dt 3"
-            lines.append(f"'{workdir}/{name}.dat' with linespoints pt 7 lw 2 {style} title '{label}'")
-    if not lines:
-        return False
-    gnuplot(f"""set terminal pngcairo size 800,560 noenhanced
-set output '{png}'
-set title 'Throughput: time per frame against bodies (4 substeps, sleeping off)'
-set logscale xy
-set xlabel 'dynamic bodies'
-set ylabel 'wall time per frame (ms, median)'
-set grid
-set key left top
-plot {", ".join(lines)}, x/100.0 * 0.1 dt 2 lc rgb 'gray' title 'slope 1 (reference)'
-""", workdir)
-    return True
+            series.append((f"{scene}_{engine}_{workers}", throughput_rows(scaling, scene, engine, workers), label,
+                           "dt 1" if scene == "pyramid" else "dt 3"))
+    return plot_time_against_bodies(series, png, "Throughput: time per frame against bodies (4 substeps, sleeping off)",
+                                    "dynamic bodies", workdir)
 
 
 def plot_workers(scaling, png, workdir):

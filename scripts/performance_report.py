@@ -370,16 +370,21 @@ def plot_throughput(scaling, png, workdir):
                                     "dynamic bodies", workdir)
 
 
+def worker_speedups(scaling, scene):
+    """(bodies, time with 1 worker / time with 2) for each size run both ways, ascending."""
+    one = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "1")}
+    two = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "2")}
+    return sorted((number(b), one[b] / two[b]) for b in one if b in two and two[b] > 0)
+
+
 def plot_workers(scaling, png, workdir):
     lines = []
     for scene in THROUGHPUT_SCENES:
-        one = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "1")}
-        two = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "2")}
-        pts = [(number(b), one[b] / two[b]) for b in one if b in two and two[b] > 0]
+        pts = worker_speedups(scaling, scene)
         if not pts:
             continue
         with open(os.path.join(workdir, f"speedup_{scene}.dat"), "w") as f:
-            for b, x in sorted(pts):
+            for b, x in pts:
                 f.write(f"{b} {x}\n")
         lines.append(f"'{workdir}/speedup_{scene}.dat' with linespoints pt 7 lw 2 title '{scene}'")
     if not lines:
@@ -408,12 +413,8 @@ def throughput_target_rows(scaling, stacks, default):
     else:
         rows.append(["base-100 pyramid, 1 worker: ms/frame <= 1x Box2D v3's", "Box2D v3 not in this run",
                      "not measured"])
-    speedups = []
-    for scene in THROUGHPUT_SCENES:
-        one = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "1")}
-        two = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "2")}
-        speedups += [(scene, b, one[b] / two[b]) for b in one
-                     if b in two and number(b) >= WORKER_SPEEDUP_MIN_BODIES and two[b] > 0]
+    speedups = [(scene, int(b), x) for scene in THROUGHPUT_SCENES for b, x in worker_speedups(scaling, scene)
+                if b >= WORKER_SPEEDUP_MIN_BODIES]
     if speedups:
         worst = min(speedups, key=lambda x: x[2])
         rows.append([f"2 workers >= {WORKER_SPEEDUP_TARGET}x faster than 1 at >= {WORKER_SPEEDUP_MIN_BODIES} bodies",

@@ -75,35 +75,25 @@ void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& v
   }
 }
 
-void SoftRows::colour_manifold(std::size_t first, std::size_t a, std::size_t b, bool row, std::size_t& colour)
+std::size_t SoftRows::take_colour(std::size_t a, std::size_t b)
 {
   // a and b are the bodies the manifold moves (SIZE_MAX for one that cannot move).
   const auto taken = [&](std::size_t c, std::size_t i) {
     return i != SIZE_MAX && (used_[c * words_ + i / kBitsPerWord] >> (i % kBitsPerWord) & 1U) != 0;
   };
-  for (colour = 0; colour < kMaxColours; ++colour)
+  std::size_t colour = 0;
+  while (colour < kMaxColours && (taken(colour, a) || taken(colour, b)))
   {
-    if (!taken(colour, a) && !taken(colour, b))
-    {
-      break;
-    }
-  }
-  if (colour == kMaxColours)
-  {
-    overflow_.push_back(first);
-    return;
+    ++colour;
   }
   for (std::size_t i : {a, b})
   {
-    if (i != SIZE_MAX)
+    if (colour < kMaxColours && i != SIZE_MAX)
     {
       used_[colour * words_ + i / kBitsPerWord] |= std::uint64_t{1} << (i % kBitsPerWord);
     }
   }
-  if (!row)
-  {
-    colours_[colour].others.push_back(first);
-  }
+  return colour;
 }
 
 void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction)
@@ -122,7 +112,6 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   coloured_ = 0;
   // First pass: colour every manifold; rows are counted, then placed.
   row_colour_.clear();
-  row_count_.assign(kMaxColours, 0);
   for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
   {
     const ContactPoint& p = points[k];
@@ -130,43 +119,45 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     {
       continue;
     }
-    const std::size_t a = p.inv_mass_a != 0.0 ? p.a : SIZE_MAX;
-    const std::size_t b = p.inv_mass_b != 0.0 ? p.b : SIZE_MAX;
-    const bool row = row_manifold(p);
-    std::size_t colour = 0;
-    colour_manifold(k, a, b, row, colour);
-    coloured_ += colour < kMaxColours ? 1 : 0;
-    if (row && colour < kMaxColours)
+    const std::size_t colour = take_colour(p.inv_mass_a != 0.0 ? p.a : SIZE_MAX, p.inv_mass_b != 0.0 ? p.b : SIZE_MAX);
+    if (colour == kMaxColours)
     {
-      row_colour_.push_back(k);
-      row_colour_.push_back(colour);
-      ++row_count_[colour];
+      overflow_.push_back(k);
+      continue;
+    }
+    ++coloured_;
+    if (row_manifold(p))
+    {
+      row_colour_.emplace_back(k, colour);
+      ++colours_[colour].lanes;
+    }
+    else
+    {
+      colours_[colour].others.push_back(k);
     }
   }
   // Second pass: each colour's rows in whole batches, the last one padded.
   std::size_t batches = 0;
-  for (std::size_t c = 0; c < kMaxColours; ++c)
+  for (RowColour& c : colours_)
   {
-    colours_[c].begin = batches;
-    batches += (row_count_[c] + kRowLanes - 1) / kRowLanes;
-    colours_[c].end = batches;
+    c.begin = batches;
+    batches += (c.lanes + kRowLanes - 1) / kRowLanes;
+    c.end = batches;
+    c.lanes = 0;  // counts again as the rows are placed
   }
   rows_.resize(batches);
-  for (std::size_t c = 0; c < kMaxColours; ++c)
+  for (const auto& [first, colour] : row_colour_)
   {
-    for (std::size_t r = colours_[c].begin; r < colours_[c].end; ++r)
-    {
-      for (int j = 0; j < kRowLanes; ++j)
-      {
-        fill_lane(rows_[r], j, points, SIZE_MAX, friction);
-      }
-    }
-  }
-  for (std::size_t e = 0; e < row_colour_.size(); e += 2)
-  {
-    RowColour& c = colours_[row_colour_[e + 1]];
+    RowColour& c = colours_[colour];
     const std::size_t slot = c.lanes++;
-    fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, row_colour_[e], friction);
+    fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, first, friction);
+  }
+  for (const RowColour& c : colours_)
+  {
+    for (std::size_t slot = c.lanes; slot < (c.end - c.begin) * kRowLanes; ++slot)
+    {
+      fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, SIZE_MAX, friction);
+    }
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "contact_kernel.h"
@@ -90,7 +91,9 @@ public:
   void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const;
 
 private:
-  void colour_manifold(std::size_t first, std::size_t a, std::size_t b, bool row, std::size_t& colour);
+  /// The first colour free of bodies a and b (SIZE_MAX: one that cannot
+  /// move), now taken by them; colour_count() when none is free.
+  std::size_t take_colour(std::size_t a, std::size_t b);
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
 
@@ -98,8 +101,7 @@ private:
   std::vector<RowColour> colours_;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
   std::vector<std::uint64_t> used_;      ///< per colour, a bit per body it moves
-  std::vector<std::size_t> row_colour_;  ///< scratch: (first point, colour) of each row manifold
-  std::vector<std::size_t> row_count_;   ///< scratch: row manifolds per colour
+  std::vector<std::pair<std::size_t, std::size_t>> row_colour_;  ///< scratch: (first point, colour) of each row
   std::size_t words_ = 0;
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body

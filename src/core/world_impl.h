@@ -82,6 +82,8 @@ struct WorldImpl
   /// by colour on the rows (iterative mode, shared among the workers), else
   /// in point order.
   void soft_pass(const StepContext& ctx, bool use_bias, bool warm);
+  /// Whether the soft step solves on its rows (the exact mode keeps the points).
+  bool rows_on() const { return settings_.solver_mode != SolverMode::Exact; }
   static void soft_pass_part(void* pass, std::size_t worker, std::size_t end);
   void soft_colours(const SoftPass& pass, std::size_t part, std::size_t parts);
   void warm_start_manifold(std::size_t first);
@@ -213,7 +215,6 @@ struct WorldImpl
   std::vector<bool> touching_;           ///< soft step: has a contact point this frame
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours
-  bool rows_on_ = false;                 ///< ... in use this frame
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
   std::vector<double> held_theta_;
   std::vector<double> prev_theta_;

@@ -32,7 +32,7 @@ struct SoftPass
 
 void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
 {
-  if (!rows_on_)
+  if (!rows_on())
   {
     if (warm)
     {

@@ -54,8 +54,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   load_velocities();                                      // world_solve.cpp
   prepare_points(ctx.effects);
   prepare_soft_points(ctx);
-  rows_on_ = settings_.solver_mode != SolverMode::Exact;
-  if (rows_on_)
+  if (rows_on())
   {
     soft_rows_.pack(points_, velocity_, ctx.effects.friction);  // soft_rows.cpp
   }
@@ -69,7 +68,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     ++report.substeps;
   }
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
-  if (rows_on_)
+  if (rows_on())
   {
     soft_rows_.unpack(points_, velocity_);
   }

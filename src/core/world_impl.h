@@ -65,8 +65,12 @@ struct WorldImpl
   void finish_report(StepReport& report) const;
   /// Throws std::overflow_error naming the first body whose state is not finite.
   void require_finite_state() const;
-  void save_motion();
+  /// Keeps aside what a step of `frames` frames changes.
+  void save_motion(int frames);
   void restore_motion();
+  /// The last contacts become the cache that warm starting reads; swapping
+  /// keeps both buffers' capacity.
+  void swap_contact_buffers();
 
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
@@ -230,7 +234,9 @@ struct WorldImpl
 
   // What a failed step puts back (kept across steps: no allocation per step).
   std::vector<BodyMotion> saved_motion_;
-  std::vector<WorldContact> saved_contacts_;
+  std::vector<WorldContact> saved_contacts_;  ///< unless contacts_in_cache_
+  bool contacts_in_cache_ = false;  ///< the step's contacts before it are in cache_ after its one swap
+  int contact_swaps_ = 0;           ///< swaps of the contact buffers since save_motion
   std::vector<bool> saved_asleep_;
   std::vector<double> saved_rest_time_;
   std::vector<ContactPoint> saved_points_;  ///< only when a prediction reads them next step

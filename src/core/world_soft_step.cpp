@@ -48,7 +48,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   ctx.first = true;
   ctx.warm = ctx.warm_available;
   // 1. Collide once: contacts within the margin, impulses from the last frame.
-  cache_.swap(contacts_);
+  swap_contact_buffers();                                 // world_step.cpp
   detect(ctx, settings_.speculative_margin, report);      // world_contacts.cpp
   // 2. Prepare: masses and Newton targets from the velocities before the frame.
   load_velocities();                                      // world_solve.cpp

@@ -39,7 +39,7 @@ StepReport WorldImpl::step(int frames)
     throw std::invalid_argument(msg.str());
   }
   workers_.resize(settings_.workers);
-  save_motion();
+  save_motion(frames);
   StepReport report;
   try
   {
@@ -89,9 +89,7 @@ void WorldImpl::fx2d_frame(StepContext& ctx, StepReport& report)
 {
   for (int k = 0; k < settings_.substeps; ++k)
   {
-    // The previous substep's contacts become the cache that warm starting and
-    // the friction state read; swapping keeps both buffers' capacity.
-    cache_.swap(contacts_);
+    swap_contact_buffers();
     ctx.first = k == 0;
     ctx.warm = ctx.warm_available;
     substep(ctx, report);
@@ -232,7 +230,13 @@ void keep_copy(const std::vector<T>& from, std::vector<T>& to)
 }
 }  // namespace
 
-void WorldImpl::save_motion()
+void WorldImpl::swap_contact_buffers()
+{
+  cache_.swap(contacts_);
+  ++contact_swaps_;
+}
+
+void WorldImpl::save_motion(int frames)
 {
   // Only what a step changes is kept aside (no outlines, no scratch), in
   // buffers that keep their capacity from step to step.
@@ -242,7 +246,15 @@ void WorldImpl::save_motion()
     const Body& b = bodies_[i];
     saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
   }
-  keep_copy(contacts_, saved_contacts_);
+  // A step that swaps the contact buffers once leaves the contacts it started
+  // from untouched in cache_ (detection only reads it): no copy is needed.
+  const int swaps = frames * (settings_.soft_step ? 1 : settings_.substeps);
+  contacts_in_cache_ = swaps == 1;
+  contact_swaps_ = 0;
+  if (!contacts_in_cache_)
+  {
+    keep_copy(contacts_, saved_contacts_);
+  }
   saved_asleep_ = asleep_;
   keep_copy(rest_time_, saved_rest_time_);
   saved_time_ = time_;
@@ -266,7 +278,14 @@ void WorldImpl::restore_motion()
     b.set_velocity(m.velocity);
     b.set_omega(m.omega);
   }
-  contacts_.swap(saved_contacts_);
+  if (!contacts_in_cache_)
+  {
+    contacts_.swap(saved_contacts_);
+  }
+  else if (contact_swaps_ == 1)
+  {
+    contacts_.swap(cache_);
+  }
   asleep_.swap(saved_asleep_);
   rest_time_.swap(saved_rest_time_);
   time_ = saved_time_;

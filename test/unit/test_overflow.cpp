@@ -162,6 +162,59 @@ TEST(Overflow, WorldStepRefusesNamingTheBody)
               now.theta() == then.theta() && now.omega() == then.omega());
 }
 
+bool same_contacts(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
+{
+  if (x.size() != y.size())
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < x.size(); ++k)
+  {
+    const WorldContact& p = x[k];
+    const WorldContact& q = y[k];
+    if (p.a != q.a || p.b != q.b || p.contact.feature != q.contact.feature || p.contact.normal != q.contact.normal ||
+        p.contact.point != q.contact.point || p.impulse.normal != q.impulse.normal ||
+        p.impulse.tangent != q.impulse.tangent || p.sliding != q.sliding || p.anchor_drift != q.anchor_drift)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+TEST(Overflow, RefusedWorldStepPutsTheContactsBack)
+{
+  // Two overlapping disks are pushed apart (a contact with impulses); then a
+  // third, far away, is thrown at 1e308 m/s under 1e308 m/s^2, so the next
+  // frame overflows. A one-frame step keeps its starting contacts in the
+  // warm-start cache instead of copying them; either way the refused call
+  // must put them back.
+  for (const bool soft : {true, false})
+  {
+    for (const int frames : {1, 2})
+    {
+      WorldSettings settings;
+      settings.soft_step = soft;
+      settings.gravity = {0.0, 0.0};
+      settings.dt = 1.0;
+      settings.substeps = 1;
+      World world(settings);
+      world.add_body(Body(1.0, 1.0, {0.0, 0.0}, {}));
+      world.add_body(Body(1.0, 1.0, {1.99, 0.0}, {}));
+      const BodyId thrown = world.add_body(Body(1.0, 1.0, {100.0, 0.0}, {}));
+      world.step();
+      ASSERT_FALSE(world.contacts().empty()) << "soft " << soft;
+      settings.gravity = {0.0, -1e308};
+      world.set_settings(settings);
+      world.set_body_state(thrown, {100.0, 0.0}, 0.0, {0.0, -1e308}, 0.0);
+      const World before = world;
+      EXPECT_THROW(world.step(frames), std::overflow_error) << "soft " << soft << ", frames " << frames;
+      EXPECT_TRUE(same_contacts(world.contacts(), before.contacts())) << "soft " << soft << ", frames " << frames;
+      EXPECT_EQ(world.frame_count(), before.frame_count());
+    }
+  }
+}
+
 TEST(Overflow, InRangeWorldStepsWithoutRefusal)
 {
   // The guard must not fire on the largest promised inputs: 1e4 m/s at 1e6 m.

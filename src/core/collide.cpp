@@ -28,9 +28,14 @@
 #include <limits>
 #include <stdexcept>
 #include <utility>
+#include <vector>
+
+#include "posed_polygon.h"
 
 namespace collision2d
 {
+using detail::PosedPolygon;
+
 namespace
 {
 constexpr std::uint32_t kIndexMask = 0xFFFu;
@@ -66,8 +71,7 @@ std::uint32_t pack_feature(FeatureKind kind, bool second_is_reference, std::size
 }
 
 /// Body::world_vertex and Body::world_face_normal with the same arithmetic,
-/// but visible to the compiler here: the narrow phase asks for them per face
-/// and per vertex, where a call into body.cpp costs more than the rotation.
+/// but visible to the compiler here (pose_polygon calls them per vertex).
 Vec2 world_vertex_of(const Body& b, std::size_t i)
 {
   return b.position() + rotate(b.local_vertices()[i], b.cos_theta(), b.sin_theta());
@@ -205,16 +209,16 @@ struct FaceQuery
 
 /// Largest over the reference's faces of the smallest signed distance of the
 /// other polygon's vertices to that face plane (SAT on the reference normals).
-FaceQuery max_face_separation(const Body& reference, const Body& other)
+FaceQuery max_face_separation(const PosedPolygon& reference, const Body& other)
 {
   FaceQuery best;
   const auto& other_vertices = other.local_vertices();
-  for (std::size_t i = 0; i < reference.vertex_count(); ++i)
+  for (std::size_t i = 0; i < reference.body->vertex_count(); ++i)
   {
-    const Vec2 n = world_normal_of(reference, i);
+    const Vec2 n = reference.normals[i];
     // Work in the other body's frame: one rotation per face, not per vertex.
     const Vec2 n_other = rotate_inv(n, other.cos_theta(), other.sin_theta());
-    const double offset = dot(n, other.position() - world_vertex_of(reference, i));
+    const double offset = dot(n, other.position() - reference.vertices[i]);
     double deepest = std::numeric_limits<double>::infinity();
     for (const Vec2& v : other_vertices)
     {
@@ -275,16 +279,16 @@ int clip_segment(const ClipPoint in[2], int in_count, Vec2 dir, double limit, Cl
 
 /// Incident edge of `incident` clipped to the side planes of reference face
 /// `face`; points within reach go into m (normal = reference face normal).
-void clip_incident_edge(const Body& reference, std::size_t face, const Body& incident, bool second_is_reference,
-                        double touch_tolerance, Manifold& m)
+void clip_incident_edge(const PosedPolygon& reference, std::size_t face, const PosedPolygon& incident,
+                        bool second_is_reference, double touch_tolerance, Manifold& m)
 {
-  const Vec2 n = world_normal_of(reference, face);
+  const Vec2 n = reference.normals[face];
   const Vec2 tangent = perp(n);  // along the counter-clockwise reference face
-  const Vec2 r1 = world_vertex_of(reference, face);
-  const Vec2 r2 = world_vertex_of(reference, (face + 1) % reference.vertex_count());
-  const std::size_t edge = incident_edge(incident, n);
-  const ClipPoint segment[2] = {{world_vertex_of(incident, edge), 0},
-                                {world_vertex_of(incident, (edge + 1) % incident.vertex_count()), 1}};
+  const Vec2 r1 = reference.vertices[face];
+  const Vec2 r2 = reference.vertices[(face + 1) % reference.body->vertex_count()];
+  const std::size_t edge = incident_edge(*incident.body, n);
+  const ClipPoint segment[2] = {{incident.vertices[edge], 0},
+                                {incident.vertices[(edge + 1) % incident.body->vertex_count()], 1}};
   ClipPoint after_first[2];
   ClipPoint clipped[2];
   const int first_count = clip_segment(segment, 2, -tangent, -dot(tangent, r1), after_first);
@@ -310,40 +314,41 @@ void clip_incident_edge(const Body& reference, std::size_t face, const Body& inc
 /// Last resort when clipping keeps no point although SAT found an overlap
 /// (the incident edge ends at or beyond a side plane of the reference face): the incident polygon's
 /// deepest vertex against the reference face, at the SAT depth.
-void deepest_vertex_point(const Body& reference, std::size_t face, const Body& incident, bool second_is_reference,
-                          double separation, Manifold& m)
+void deepest_vertex_point(const PosedPolygon& reference, std::size_t face, const PosedPolygon& incident,
+                          bool second_is_reference, double separation, Manifold& m)
 {
-  const Vec2 n = world_normal_of(reference, face);
-  const Vec2 r1 = world_vertex_of(reference, face);
+  const Vec2 n = reference.normals[face];
+  const Vec2 r1 = reference.vertices[face];
   std::size_t deepest = 0;
-  for (std::size_t j = 1; j < incident.vertex_count(); ++j)
+  for (std::size_t j = 1; j < incident.body->vertex_count(); ++j)
   {
-    if (dot(n, world_vertex_of(incident, j) - r1) < dot(n, world_vertex_of(incident, deepest) - r1))
+    if (dot(n, incident.vertices[j] - r1) < dot(n, incident.vertices[deepest] - r1))
     {
       deepest = j;
     }
   }
   m.normal = n;
-  add_point(m, world_vertex_of(incident, deepest) - n * (0.5 * separation), -separation,
+  add_point(m, incident.vertices[deepest] - n * (0.5 * separation), -separation,
             pack_feature(FeatureKind::PolygonPolygon, second_is_reference, face, deepest, 0));
 }
 
-bool polygon_polygon(const Body& a, const Body& b, Manifold& m, double touch_tolerance)
+bool polygon_polygon(const PosedPolygon& a, const PosedPolygon& b, Manifold& m, double touch_tolerance)
 {
-  const FaceQuery query_a = max_face_separation(a, b);
+  const FaceQuery query_a = max_face_separation(a, *b.body);
   if (!within_reach(-query_a.separation, touch_tolerance))
   {
     return false;
   }
-  const FaceQuery query_b = max_face_separation(b, a);
+  const FaceQuery query_b = max_face_separation(b, *a.body);
   if (!within_reach(-query_b.separation, touch_tolerance))
   {
     return false;
   }
-  const double bias = kReferenceRelative * std::abs(query_a.separation) + kReferenceHysteresis * (a.radius() + b.radius());
+  const double bias =
+      kReferenceRelative * std::abs(query_a.separation) + kReferenceHysteresis * (a.body->radius() + b.body->radius());
   const bool b_is_reference = query_b.separation > query_a.separation + bias;
-  const Body& reference = b_is_reference ? b : a;
-  const Body& incident = b_is_reference ? a : b;
+  const PosedPolygon& reference = b_is_reference ? b : a;
+  const PosedPolygon& incident = b_is_reference ? a : b;
   const FaceQuery& query = b_is_reference ? query_b : query_a;
   clip_incident_edge(reference, query.face, incident, b_is_reference, touch_tolerance, m);
   if (m.count == 0)
@@ -357,31 +362,82 @@ bool polygon_polygon(const Body& a, const Body& b, Manifold& m, double touch_tol
   return true;
 }
 
+/// Room for a polygon's posed outline: on the stack up to kStackVertices
+/// vertices (the narrow phase allocates nothing for common shapes).
+class PoseBuffer
+{
+public:
+  PosedPolygon pose(const Body& polygon)
+  {
+    const std::size_t n = polygon.vertex_count();
+    Vec2* vertices = stack_;
+    if (n > kStackVertices)
+    {
+      heap_.resize(2 * n);
+      vertices = heap_.data();
+    }
+    detail::pose_polygon(polygon, vertices, vertices + n);
+    return {&polygon, vertices, vertices + n};
+  }
+
+private:
+  static constexpr std::size_t kStackVertices = 16;
+  Vec2 stack_[2 * kStackVertices];
+  std::vector<Vec2> heap_;
+};
+
+bool disk_involved(const Body& a, const Body& b, Manifold& m, double touch_tolerance)
+{
+  if (a.shape() == Shape::Disk && b.shape() == Shape::Disk)
+  {
+    return disk_disk(a, b, m, touch_tolerance);
+  }
+  if (b.shape() == Shape::Disk)
+  {
+    return polygon_disk(a, b, m, touch_tolerance, false);
+  }
+  if (!polygon_disk(b, a, m, touch_tolerance, true))
+  {
+    return false;
+  }
+  m.normal = -m.normal;  // computed from the polygon (b) toward the disk (a)
+  return true;
+}
+
 }  // namespace
 
 bool collide(const Body& a, const Body& b, Manifold& m, double touch_tolerance)
 {
   m.count = 0;
-  const bool a_disk = a.shape() == Shape::Disk;
-  const bool b_disk = b.shape() == Shape::Disk;
-  if (a_disk && b_disk)
+  if (a.shape() == Shape::Disk || b.shape() == Shape::Disk)
   {
-    return disk_disk(a, b, m, touch_tolerance);
+    return disk_involved(a, b, m, touch_tolerance);
   }
-  if (b_disk)
+  PoseBuffer pose_a;
+  PoseBuffer pose_b;
+  return polygon_polygon(pose_a.pose(a), pose_b.pose(b), m, touch_tolerance);
+}
+
+namespace detail
+{
+void pose_polygon(const Body& polygon, Vec2* vertices, Vec2* normals)
+{
+  for (std::size_t i = 0; i < polygon.vertex_count(); ++i)
   {
-    return polygon_disk(a, b, m, touch_tolerance, false);
+    vertices[i] = world_vertex_of(polygon, i);
+    normals[i] = world_normal_of(polygon, i);
   }
-  if (a_disk)
+}
+
+bool collide_posed(const PosedPolygon& a, const PosedPolygon& b, Manifold& m, double touch_tolerance)
+{
+  m.count = 0;
+  if (a.vertices == nullptr || b.vertices == nullptr)
   {
-    if (!polygon_disk(b, a, m, touch_tolerance, true))
-    {
-      return false;
-    }
-    m.normal = -m.normal;  // computed from the polygon (b) toward the disk (a)
-    return true;
+    return disk_involved(*a.body, *b.body, m, touch_tolerance);
   }
   return polygon_polygon(a, b, m, touch_tolerance);
 }
 
+}  // namespace detail
 }  // namespace collision2d

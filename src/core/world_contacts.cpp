@@ -65,6 +65,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
   }
   broad_phase_.find_pairs(boxes_, pairs_);
+  pose_bodies();
   points_.clear();
   // The narrow phase of the pairs with a moving body, split across the
   // workers (each writes its own pairs' slots); then, in pair order, the
@@ -93,7 +94,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     // A pair whose body woke up earlier in this loop was not collided yet.
     if (collided_[k] == Collided::NotTried)
     {
-      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k]) ? Collided::Hit : Collided::Miss;
+      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k], true) ? Collided::Hit : Collided::Miss;
     }
     if (collided_[k] == Collided::Hit)
     {
@@ -106,7 +107,43 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   }
 }
 
-bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const
+void WorldImpl::pose_bodies()
+{
+  const std::size_t n = bodies_.size();
+  posed_offset_.resize(n);
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    posed_offset_[i] = total;
+    total += 2 * bodies_[i].vertex_count();
+  }
+  posed_vertices_.resize(total);
+  workers_.run(n, &WorldImpl::pose_range, this);
+}
+
+void WorldImpl::pose_range(void* world, std::size_t begin, std::size_t end)
+{
+  WorldImpl& w = *static_cast<WorldImpl*>(world);
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    const Body& b = w.bodies_[i];
+    Vec2* vertices = w.posed_vertices_.data() + w.posed_offset_[i];
+    pose_polygon(b, vertices, vertices + b.vertex_count());
+  }
+}
+
+PosedPolygon WorldImpl::posed(std::size_t i) const
+{
+  const Body& b = bodies_[i];
+  if (b.shape() == Shape::Disk)
+  {
+    return {&b, nullptr, nullptr};
+  }
+  const Vec2* vertices = posed_vertices_.data() + posed_offset_[i];
+  return {&b, vertices, vertices + b.vertex_count()};
+}
+
+bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const
 {
   const Body& a = bodies_[i];
   const Body& b = bodies_[j];
@@ -117,7 +154,7 @@ bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Man
     m.points[0] = ManifoldPoint{a.position(), a.radius() + b.radius(), 0};
     return true;
   }
-  return collide(a, b, m, tolerance);
+  return posed_now ? collide_posed(posed(i), posed(j), m, tolerance) : collide(a, b, m, tolerance);
 }
 
 void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
@@ -131,7 +168,7 @@ void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
     result = Collided::NotTried;
     if (w.dynamic_pair(i, j) && (w.is_mover(i) || w.is_mover(j)))
     {
-      result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k]) ? Collided::Hit : Collided::Miss;
+      result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k], true) ? Collided::Hit : Collided::Miss;
     }
   }
 }
@@ -266,7 +303,7 @@ double WorldImpl::measure_penetration() const
       continue;
     }
     Manifold m;
-    if (collide_pair(row.a, row.b, 0.0, m))
+    if (collide_pair(row.a, row.b, 0.0, m, false))
     {
       for (int p = 0; p < m.count; ++p)
       {

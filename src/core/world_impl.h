@@ -13,6 +13,7 @@
 #include "collision2d/collide.h"
 #include "collision2d/world.h"
 #include "contact_kernel.h"
+#include "posed_polygon.h"
 #include "soft_rows.h"
 #include "worker_pool.h"
 
@@ -131,7 +132,13 @@ struct WorldImpl
   void detect(const StepContext& ctx, double margin, StepReport& report);
   /// How far any point of the body can travel in one frame (m).
   double frame_reach(const Body& b) const;
-  bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const;
+  /// With `posed`, the polygons' outlines come from pose_bodies (the poses
+  /// must not have changed since).
+  bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const;
+  /// Every polygon's outline at its pose now, into posed_vertices_ (workers share it).
+  void pose_bodies();
+  static void pose_range(void* world, std::size_t begin, std::size_t end);
+  PosedPolygon posed(std::size_t i) const;
   /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (a WorkerPool job).
   static void collide_range(void* world, std::size_t begin, std::size_t end);
   bool dynamic_pair(std::size_t i, std::size_t j) const;
@@ -205,6 +212,10 @@ struct WorldImpl
   };
   std::vector<Manifold> manifolds_;
   std::vector<Collided> collided_;
+  /// Polygon i's world vertices, then its face normals, from posed_offset_[i]
+  /// in posed_vertices_ (2 vertex_count() entries).
+  std::vector<std::size_t> posed_offset_;
+  std::vector<Vec2> posed_vertices_;
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<bool> swept_;           ///< bodies swept this substep

@@ -1,9 +1,11 @@
 // collision2d_scaling_bench: time per frame and peak memory for one scene of
 // about n bodies, one size per process so that the peak resident set (VmHWM)
 // belongs to that size alone. Scenes: gas (scenes::elastic_gas, n scattered
-// disks), pyramid and rain (stack_scenes.h: the Box2D v3 comparison's rules).
+// disks), pyramid and rain (stack_scenes.h: the Box2D v3 comparison's rules),
+// and resting: the pyramid with sleeping on (each engine's own sleeping),
+// timed once it has fallen asleep, which is what a settled world costs.
 //
-//   collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain] [--workers W]
+//   collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting] [--workers W]
 //                             [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]
 //
 // Prints one CSV row: engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,
@@ -29,6 +31,7 @@ using namespace collision2d::bench;
 
 constexpr int kWarmupFrames = 3;          // first frames build caches and scratch
 constexpr int kRainWarmupFrames = 60;     // 1 s: the rain's lowest rows land and pile first
+constexpr int kRestingWarmupFrames = 600; // 10 s: a settled pyramid has fallen asleep in either engine
 constexpr double kFrameBudget = 2e4;      // body-frames per repetition: ~constant work per size
 constexpr int kMinFrames = 3;
 constexpr int kMaxFrames = 120;
@@ -47,7 +50,7 @@ struct Arguments
 [[noreturn]] void usage(const std::string& problem)
 {
   std::fprintf(stderr,
-               "%s\nusage: collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain] [--workers W] "
+               "%s\nusage: collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting] [--workers W] "
                "[--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]\n",
                problem.c_str());
   std::exit(2);
@@ -111,7 +114,7 @@ Arguments parse_arguments(int argc, char** argv)
   {
     usage("--workers applies to collision2d only");
   }
-  if (args.scene != "gas" && args.scene != "pyramid" && args.scene != "rain")
+  if (args.scene != "gas" && args.scene != "pyramid" && args.scene != "rain" && args.scene != "resting")
   {
     usage("unknown scene '" + args.scene + "'");
   }
@@ -149,17 +152,24 @@ int main(int argc, char** argv)
   try
   {
     const long start_kib = peak_resident_kib();
+    const bool resting = args.scene == "resting";
     Scene scene = args.scene == "gas" ? scenes::elastic_gas(static_cast<int>(args.bodies))
-                                      : make_throughput_scene(args.scene, args.bodies);
+                                      : make_throughput_scene(resting ? "pyramid" : args.scene, args.bodies);
     scene.settings.workers = args.workers;
+    if (resting)
+    {
+      scene.settings.sleeping = Toggle::On;
+    }
     const long bodies = std::count_if(scene.bodies.begin(), scene.bodies.end(),
                                       [](const SceneBody& b) { return b.body.type() == BodyType::Dynamic; });
     // The throughput scenes follow the stack comparison's rule: each peer with
-    // its own defaults but our substeps and sleeping off, as the scene sets ours.
-    const PeerVariant variant = args.scene == "gas" ? PeerVariant::Defaults : PeerVariant::Substepped;
+    // its own defaults but our substeps and sleeping off, as the scene sets
+    // ours; the resting pyramid takes the peers' defaults (sleeping on).
+    const PeerVariant variant = args.scene == "gas" || resting ? PeerVariant::Defaults : PeerVariant::Substepped;
     EngineConfig config{args.engine, variant, scene.settings};
     std::unique_ptr<Engine> engine = make_engine(scene, config);
-    time_frames(*engine, args.scene == "rain" ? kRainWarmupFrames : kWarmupFrames);
+    const int warmup = resting ? kRestingWarmupFrames : args.scene == "rain" ? kRainWarmupFrames : kWarmupFrames;
+    time_frames(*engine, warmup);
     const int frames = std::clamp(static_cast<int>(kFrameBudget / bodies), kMinFrames, kMaxFrames);
     std::vector<double> wall;
     std::vector<double> cpu;

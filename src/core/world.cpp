@@ -64,6 +64,7 @@ const WorldSettings& World::settings() const { return impl_->settings_; }
 
 void World::set_settings(const WorldSettings& settings)
 {
+  impl_->changed();
   validate(settings);
   impl_->settings_ = settings;
 }
@@ -77,6 +78,7 @@ BodyId World::add_body(const Body& body, const Material& material)
 
 void World::add_body(BodyId id, const Body& body, const Material& material)
 {
+  impl_->changed();
   if (id < impl_->next_id_)
   {
     throw std::invalid_argument("add_body: id " + std::to_string(id) + " is below the next free id " +
@@ -87,7 +89,11 @@ void World::add_body(BodyId id, const Body& body, const Material& material)
   impl_->append_body(id, body, material);
 }
 
-void World::remove_body(BodyId id) { impl_->remove_body(id); }
+void World::remove_body(BodyId id)
+{
+  impl_->changed();
+  impl_->remove_body(id);
+}
 
 bool World::has_body(BodyId id) const
 {
@@ -102,6 +108,7 @@ bool World::is_sleeping(BodyId id) const { return impl_->asleep_[impl_->index_of
 
 void World::set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega)
 {
+  impl_->changed();
   const std::size_t i = impl_->index_of(id);
   if (!is_finite(position) || !std::isfinite(theta) || !is_finite(velocity) || !std::isfinite(omega))
   {
@@ -118,6 +125,7 @@ void World::set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity
 
 void World::set_body_type(BodyId id, BodyType type)
 {
+  impl_->changed();
   const std::size_t i = impl_->index_of(id);
   Body& b = impl_->bodies_[i];
   b.set_type(type);
@@ -133,6 +141,7 @@ BodyId World::next_id() const { return impl_->next_id_; }
 
 void World::set_next_id(BodyId id)
 {
+  impl_->changed();
   if (id < impl_->next_id_)
   {
     throw std::invalid_argument("set_next_id: " + std::to_string(id) + " is below the next free id " +
@@ -141,7 +150,11 @@ void World::set_next_id(BodyId id)
   impl_->next_id_ = id;
 }
 
-void World::clear() { impl_->clear(); }
+void World::clear()
+{
+  impl_->changed();
+  impl_->clear();
+}
 
 StepReport World::step(int frames) { return impl_->step(frames); }
 
@@ -153,6 +166,7 @@ std::uint64_t World::frame_count() const { return impl_->frame_count_; }
 
 void World::set_clock(double time, std::uint64_t frame_count)
 {
+  impl_->changed();
   if (!(std::isfinite(time) && time >= 0.0))
   {
     throw std::invalid_argument("set_clock: time must be finite and >= 0 (got " + std::to_string(time) + ")");
@@ -180,6 +194,7 @@ StepState World::step_state() const
 
 void World::set_step_state(const StepState& state)
 {
+  impl_->changed();
   detail::WorldImpl& w = *impl_;
   const std::string where = "set_step_state: ";
   if (!(std::isfinite(state.contact_substep) && state.contact_substep >= 0.0))

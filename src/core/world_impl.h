@@ -44,6 +44,11 @@ struct BodyMotion
   double omega = 0.0;
 };
 
+/// Test hooks (world_rest.cpp): turn the replay of rest frames off, and count
+/// the frames replayed in this process.
+void set_rest_replay_enabled(bool enabled);
+std::uint64_t replayed_rest_frames();
+
 struct WorldImpl
 {
   explicit WorldImpl(const WorldSettings& settings) : settings_(settings) {}
@@ -178,11 +183,27 @@ struct WorldImpl
   void solve_exact_islands(StepReport& report, const std::vector<double>* targets = nullptr, bool add = false);
   void solve_position_islands(double softness, StepReport& report);
 
+  // world_rest.cpp: a frame at rest repeats the last one, which is replayed.
+  /// Every dynamic body asleep and no kinematic body moving.
+  bool at_rest() const;
+  /// Adds the remembered rest frame when nothing changed since it; false otherwise.
+  bool replay_rest_frame(StepReport& report);
+  /// After a frame: remembers it when it started and ended at rest.
+  void note_frame(bool started_at_rest, const StepReport& frame);
+  /// A frame's report folded into the step's.
+  static void add_frame(StepReport& total, const StepReport& frame);
+  /// Any edit through the World API: a remembered rest frame no longer holds.
+  void changed() { ++version_; }
+
   // world_sleep.cpp
   void update_sleep();
   void update_rest_times();
 
   WorldSettings settings_;
+  std::uint64_t version_ = 0;  ///< bumped by every edit through the World API
+  bool rest_known_ = false;    ///< the last frame started and ended at rest at rest_version_
+  std::uint64_t rest_version_ = 0;
+  StepReport rest_frame_;      ///< that frame's own report
   std::vector<WorldContact> contacts_;
   double time_ = 0.0;
   std::uint64_t frame_count_ = 0;

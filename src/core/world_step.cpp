@@ -60,6 +60,12 @@ StepReport WorldImpl::step(int frames)
 
 void WorldImpl::step_frame(StepReport& report)
 {
+  if (replay_rest_frame(report))                          // world_rest.cpp
+  {
+    return;
+  }
+  const bool started_at_rest = at_rest();
+  StepReport frame;
   StepContext ctx = select_effects();                     // world_effects.cpp
   if (!ctx.effects.sleeping)
   {
@@ -69,11 +75,11 @@ void WorldImpl::step_frame(StepReport& report)
   ctx.inv_h = 1.0 / ctx.h;
   if (settings_.soft_step)
   {
-    soft_frame(ctx, report);                              // world_soft_step.cpp
+    soft_frame(ctx, frame);                               // world_soft_step.cpp
   }
   else
   {
-    fx2d_frame(ctx, report);
+    fx2d_frame(ctx, frame);
   }
   if (ctx.effects.sleeping)
   {
@@ -81,8 +87,10 @@ void WorldImpl::step_frame(StepReport& report)
   }
   time_ += settings_.dt;
   ++frame_count_;
-  ++report.frames;
-  report.active |= ctx.effects;
+  ++frame.frames;
+  frame.active = ctx.effects;
+  add_frame(report, frame);
+  note_frame(started_at_rest, frame);
 }
 
 void WorldImpl::fx2d_frame(StepContext& ctx, StepReport& report)
@@ -269,6 +277,7 @@ void WorldImpl::save_motion(int frames)
 
 void WorldImpl::restore_motion()
 {
+  rest_known_ = false;  // the rest frame remembered may be one this step made
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     Body& b = bodies_[i];

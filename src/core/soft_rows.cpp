@@ -1,10 +1,9 @@
 // The soft step's rows in colours (soft_rows.h): greedy colouring, packing
-// into batches, the passes in colour order, the scalar lane path and the
-// choice of the wide one.
+// into batches, the passes in colour order and the scalar lane path (the
+// choice of path is soft_rows_dispatch.cpp).
 #include "soft_rows.h"
 
 #include <algorithm>
-#include <atomic>
 
 #include "soft_rows_kernel.h"
 
@@ -18,8 +17,6 @@ namespace
 /// touches at most six others, so greedy colouring needs far fewer.
 constexpr std::size_t kMaxColours = 24;
 constexpr std::size_t kBitsPerWord = 64;
-
-std::atomic<bool> g_wide_enabled{true};
 
 struct ScalarOps
 {
@@ -46,18 +43,6 @@ struct ScalarOps
 bool row_manifold(const ContactPoint& p) { return p.count == 2 && p.pair_block; }
 
 }  // namespace
-
-bool wide_rows_active()
-{
-#if defined(__x86_64__) || defined(__i386__)
-  static const bool cpu_has_avx2 = __builtin_cpu_supports("avx2");
-#else
-  static const bool cpu_has_avx2 = false;
-#endif
-  return g_wide_enabled.load(std::memory_order_relaxed) && wide_rows_compiled() && cpu_has_avx2;
-}
-
-void set_wide_rows_enabled(bool enabled) { g_wide_enabled.store(enabled, std::memory_order_relaxed); }
 
 void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
 {
@@ -245,19 +230,17 @@ void each_batch(const RowColour& c, std::vector<RowBatch>& rows, std::size_t par
 void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, std::size_t part,
                                std::size_t parts)
 {
-  const bool wide = wide_rows_active();
-  each_batch(colours_[colour], rows_, part, parts, [&](RowBatch& batch, int lanes) {
-    wide ? warm_start_batch_wide(batch, velocity) : warm_start_batch_scalar(batch, lanes, velocity);
-  });
+  const RowLanes path = row_lanes();
+  each_batch(colours_[colour], rows_, part, parts,
+             [&](RowBatch& batch, int lanes) { warm_start_batch(path, batch, lanes, velocity); });
 }
 
 void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass,
                           std::size_t part, std::size_t parts)
 {
-  const bool wide = wide_rows_active();
-  each_batch(colours_[colour], rows_, part, parts, [&](RowBatch& batch, int lanes) {
-    wide ? solve_batch_wide(batch, velocity, pass) : solve_batch_scalar(batch, lanes, velocity, pass);
-  });
+  const RowLanes path = row_lanes();
+  each_batch(colours_[colour], rows_, part, parts,
+             [&](RowBatch& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); });
 }
 
 void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const

@@ -1,8 +1,8 @@
 // Internal to the core: the soft step's contact rows in colours. Each frame
 // the two-point manifolds whose normal block is solvable are packed four to a
 // batch (struct of arrays) and coloured so that no two manifolds of one colour
-// move the same body; a colour's batches can then be solved four lanes at a
-// time (AVX2, chosen at run time) with exactly the bits of the scalar path,
+// move the same body; a colour's batches can then be solved four or two lanes
+// at a time (chosen at run time) with exactly the bits of the scalar path,
 // since lanes never share a body. Single-point and nearly dependent manifolds,
 // and any that find no colour, stay on the kernel's point verbs.
 #pragma once
@@ -107,19 +107,39 @@ private:
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
 };
 
-/// Whether the four-lane path runs (AVX2 compiled in and present on this CPU,
-/// and not switched off). The scalar path gives the same bits.
-bool wide_rows_active();
-/// Tests: run the scalar path even where the wide one is available.
-void set_wide_rows_enabled(bool enabled);
+/// The lane paths of the rows, all giving the same bits: one lane at a time,
+/// two (SSE2 on x86-64, NEON on aarch64) or four (AVX2).
+enum class RowLanes
+{
+  Scalar,
+  Two,
+  Four
+};
+/// Whether a path is compiled in and this CPU runs it (Scalar always).
+bool row_lanes_available(RowLanes lanes);
+/// The path the rows take: the widest available unless set_row_lanes chose one.
+RowLanes row_lanes();
+/// Tests and benchmarks: force a path; false (and no change) if it is not available.
+bool set_row_lanes(RowLanes lanes);
+/// Back to the widest available path.
+void reset_row_lanes();
 
-/// The kernel entry points over one batch (soft_rows_kernel.h). The wide ones
-/// live in soft_rows_avx2.cpp; a build without AVX2 makes them the scalar path.
+/// One batch on the chosen path; `lanes` counts its manifolds (the rest are padding).
+void warm_start_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
+void solve_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity,
+                 const RowPass& pass);
+
+/// The kernel entry points over one batch (soft_rows_kernel.h). The four-lane
+/// ones live in soft_rows_avx2.cpp, the two-lane ones in soft_rows_lanes2.cpp;
+/// a build without their instructions makes them the scalar path, never chosen.
 void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
 void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
-bool wide_rows_compiled();
-void warm_start_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity);
-void solve_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+bool four_lanes_compiled();
+void warm_start_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity);
+void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+bool two_lanes_compiled();
+void warm_start_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
+void solve_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 
 }  // namespace detail
 }  // namespace collision2d

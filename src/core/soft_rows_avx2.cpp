@@ -1,7 +1,7 @@
 // The four-lane path of the soft step's rows (soft_rows_kernel.h) on AVX2
 // doubles. Built with -mavx2 where the compiler targets x86-64 (CMake sets
 // it for this file only) and run only where the CPU has AVX2
-// (wide_rows_active). No fused multiply-adds: every lane rounds as the scalar
+// (row_lanes_available). No fused multiply-adds: every lane rounds as the scalar
 // path does.
 #include "soft_rows.h"
 
@@ -75,14 +75,14 @@ struct WideOps
 
 }  // namespace
 
-bool wide_rows_compiled() { return true; }
+bool four_lanes_compiled() { return true; }
 
-void warm_start_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity)
+void warm_start_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity)
 {
   rows::warm_start_rows<W4>(WideOps{}, batch, velocity);
 }
 
-void solve_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   rows::solve_rows<W4>(WideOps{}, batch, velocity, pass);
 }
@@ -90,18 +90,18 @@ void solve_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity, cons
 }  // namespace detail
 }  // namespace collision2d
 
-#else  // no AVX2 in this build: the scalar path only
+#else  // no AVX2 in this build: never chosen, the scalar path stands in
 
 namespace collision2d
 {
 namespace detail
 {
-bool wide_rows_compiled() { return false; }
-void warm_start_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity)
+bool four_lanes_compiled() { return false; }
+void warm_start_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity)
 {
   warm_start_batch_scalar(batch, kRowLanes, velocity);
 }
-void solve_batch_wide(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   solve_batch_scalar(batch, kRowLanes, velocity, pass);
 }

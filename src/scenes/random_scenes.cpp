@@ -101,7 +101,11 @@ Body random_body(Draw& draw, const RandomSceneOptions& options)
 {
   const double mass = options.base_mass * std::pow(options.max_mass_ratio, draw.unit());
   const double size = draw.uniform(options.min_size, options.max_size);
-  const Vec2 velocity = std::sqrt(draw.unit()) * options.max_speed * draw.direction();
+  // The direction is drawn before the speed, in its own statement: the
+  // operands of * are unsequenced, so one expression drew in each compiler's
+  // own order (this is the order GCC on x86-64 chose, the pinned one).
+  const Vec2 heading = draw.direction();
+  const Vec2 velocity = std::sqrt(draw.unit()) * options.max_speed * heading;
   const double omega = draw.uniform(-options.max_spin, options.max_spin);
   if (!draw.chance(options.polygon_probability))
     return Body(mass, size, Vec2{}, velocity, omega);

@@ -351,6 +351,9 @@ THROUGHPUT_SCENES = ["pyramid", "rain"]
 WORKER_SPEEDUP_TARGET = 1.7
 WORKER_SPEEDUP_MIN_BODIES = 5000
 MEMORY_TARGET_KIB_PER_BODY = 1.0
+# "Sleeping islands cost nothing", read as: a settled world's frame costs at
+# most this fraction of the same world awake.
+RESTING_FRACTION_TARGET = 0.01
 
 
 def throughput_rows(scaling, scene, engine, workers="1"):
@@ -434,14 +437,30 @@ def throughput_target_rows(scaling, stacks, default):
                      "(1e4 bodies and up)", ", ".join(f"{sc} {b}: {fmt(x)} kB" for sc, b, x in mem),
                      "met" if worst[2] <= MEMORY_TARGET_KIB_PER_BODY else
                      f"missed by {fmt(worst[2] / MEMORY_TARGET_KIB_PER_BODY)}x ({worst[0]} {worst[1]})"])
+    rows.extend(resting_target_rows(scaling))
     rows.append(["identical trajectories for 1, 2 and 4 workers",
                  "checked by the unit test WorldGoldenRuns.WorkersDoNotChangeTrajectories (every bit of five "
                  "golden runs)", "tested, not measured here"])
     return rows
 
 
+def resting_target_rows(scaling):
+    awake = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, "pyramid", "collision2d")}
+    settled = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, "resting", "collision2d")}
+    peer = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, "resting", "box2d_v3")}
+    both = [(b, settled[b] / awake[b]) for b in settled if b in awake and awake[b] > 0]
+    if not both:
+        return []
+    worst = max(both, key=lambda x: x[1])
+    measured = ", ".join(f"{b} bodies: {fmt(settled[b])} ms settled, {fmt(awake[b])} ms awake ({fmt(x)})" +
+                         (f", Box2D v3 settled {fmt(peer[b])} ms" if b in peer else "") for b, x in both)
+    return [[f"a settled world (resting pyramid) costs <= {fmt(RESTING_FRACTION_TARGET)} of the same world awake",
+             measured, "met" if worst[1] <= RESTING_FRACTION_TARGET else
+             f"missed by {fmt(worst[1] / RESTING_FRACTION_TARGET)}x ({worst[0]} bodies)"]]
+
+
 def throughput_section(scaling, stacks, default):
-    runs = [r for r in scaling if r.get("scene") in THROUGHPUT_SCENES]
+    runs = [r for r in scaling if r.get("scene") in THROUGHPUT_SCENES + ["resting"]]
     if not runs:
         return "Not measured in this run.\n"
     rows = [[r["scene"], r["engine"], r["workers"], r["bodies"], r["frames"], number(r["ms_per_step"]),

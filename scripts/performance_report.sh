@@ -32,6 +32,8 @@ QUICK=()
 BUILD_FIRST=1
 SCALING_SIZES=(100 1000 10000 100000)
 THROUGHPUT_SIZES=(100 1000 10000 100000)
+# Settled pyramids (sleeping on) up to base 100: larger ones do not fall asleep in 10 s.
+RESTING_SIZES=(1000 5050)
 SCALING_ENGINES=(collision2d box2d chipmunk)
 BOX2D_V3_DIR="${COLLISION2D_BOX2D_V3_DIR:-}"
 BOX2D_V3_LIBRARY="${COLLISION2D_BOX2D_V3_LIBRARY:-}"
@@ -115,6 +117,19 @@ for scene in pyramid rain; do
       "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
         grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n not measured"
     fi
+  done
+done
+
+log "resting: settled pyramids, sleeping on${BOX2D_V3_DIR:+, and Box2D v3}"
+for n in "${RESTING_SIZES[@]}"; do
+  # The same pyramid awake, where the throughput sizes do not have it.
+  scenes=(resting)
+  [[ " ${THROUGHPUT_SIZES[*]} " == *" $n "* ]] || scenes+=(pyramid)
+  for scene in "${scenes[@]}"; do
+    for engine in collision2d ${BOX2D_V3_DIR:+box2d_v3}; do
+      "$SCALING" --scene "$scene" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" |
+        grep "^$engine," >> "$OUT/scaling.csv" || log "resting: $engine $scene at $n not measured"
+    done
   done
 done
 part_done throughput

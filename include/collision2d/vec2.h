@@ -49,6 +49,40 @@ inline Vec2 cross(double w, Vec2 v) { return {-w * v.y, w * v.x}; }
 inline Vec2 cross(Vec2 v, double w) { return {w * v.y, -w * v.x}; }
 inline double length_sq(Vec2 v) { return dot(v, v); }
 inline double length(Vec2 v) { return std::sqrt(dot(v, v)); }
+
+namespace detail
+{
+/// Beyond these magnitudes x*x overflows or loses bits to underflow; scaling
+/// by a power of two is exact, so the result only rounds in the operations.
+constexpr double kHypotBig = 0x1p500;
+constexpr double kHypotSmall = 0x1p-500;
+constexpr double kHypotScale = 0x1p600;
+}  // namespace detail
+
+/// sqrt(x^2 + y^2) without overflow or underflow to a false zero, built only
+/// from correctly rounded operations: the same bits on every IEEE target,
+/// which std::hypot (its last bit differs between libms) is not.
+inline double portable_hypot(double x, double y)
+{
+  const double m = std::fmax(std::fabs(x), std::fabs(y));
+  if (std::isinf(x) || std::isinf(y))
+  {
+    return HUGE_VAL;
+  }
+  if (m > detail::kHypotBig)
+  {
+    const double xs = x / detail::kHypotScale;
+    const double ys = y / detail::kHypotScale;
+    return std::sqrt(xs * xs + ys * ys) * detail::kHypotScale;
+  }
+  if (m < detail::kHypotSmall)
+  {
+    const double xs = x * detail::kHypotScale;
+    const double ys = y * detail::kHypotScale;
+    return std::sqrt(xs * xs + ys * ys) / detail::kHypotScale;
+  }
+  return std::sqrt(x * x + y * y);
+}
 /// Counter-clockwise perpendicular.
 inline Vec2 perp(Vec2 v) { return {-v.y, v.x}; }
 /// Rotate v by the angle whose cosine and sine are c and s.

@@ -101,8 +101,9 @@ void add_point(Manifold& m, Vec2 point, double depth, std::uint32_t feature)
 bool disk_disk(const Body& a, const Body& b, Manifold& m, double touch_tolerance)
 {
   const Vec2 d = b.position() - a.position();
-  // hypot: no underflow to a false zero for nearly coincident centres.
-  const double distance = std::hypot(d.x, d.y);
+  // No underflow to a false zero for nearly coincident centres, and the same
+  // bits on every target (std::hypot rounds differently between libms).
+  const double distance = portable_hypot(d.x, d.y);
   const double depth = a.radius() + b.radius() - distance;
   if (!within_reach(depth, touch_tolerance))
   {

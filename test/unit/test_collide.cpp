@@ -67,6 +67,30 @@ TEST(Collide, CoincidentDiskCentresThrow)
   EXPECT_THROW(collide(disk(1.0, {2.0, 3.0}), disk(0.5, {2.0, 3.0}), m), std::runtime_error);
 }
 
+TEST(PortableHypot, AgreesWithStdHypotToAnUlpAtEveryScale)
+{
+  // Tiny and huge components take the scaled paths: no false zero, no overflow.
+  const double scales[] = {1e-300, 1e-160, 1e-20, 1.0, 1e20, 1e160, 1e300};
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (double scale : scales)
+  {
+    for (int i = 0; i < 1000; ++i)
+    {
+      const double x = scale * unit(rng);
+      const double y = scale * unit(rng);
+      const double expected = std::hypot(x, y);
+      EXPECT_NEAR(portable_hypot(x, y), expected, 2.0 * std::numeric_limits<double>::epsilon() * expected)
+          << x << ", " << y;
+    }
+  }
+  EXPECT_EQ(portable_hypot(0.0, 0.0), 0.0);
+  EXPECT_GT(portable_hypot(1e-320, 0.0), 0.0);
+  EXPECT_EQ(portable_hypot(-3.0, 4.0), 5.0);
+  EXPECT_TRUE(std::isinf(portable_hypot(std::numeric_limits<double>::infinity(), std::nan(""))));
+  EXPECT_TRUE(std::isnan(portable_hypot(1.0, std::nan(""))));
+}
+
 TEST(Collide, ExactTouchingIsAContactOnlyWithATolerance)
 {
   Manifold m;

@@ -1,4 +1,5 @@
 #include "cluster_jacobian.h"
+#include "eigen_blocking.h"
 
 namespace collision2d
 {
@@ -46,6 +47,7 @@ void finish_jacobian(const std::vector<ContactPoint>& rows, ClusterRange cluster
     j.local_body[rows[r].a] = -1;
     j.local_body[rows[r].b] = -1;
   }
+  pin_eigen_blocking();
   j.delassus.noalias() = j.jacobian * j.body_inverse_mass.asDiagonal() * j.jacobian.transpose();
 }
 

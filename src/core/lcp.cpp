@@ -3,6 +3,8 @@
 // solution comes from solving the terminal basis against the original data.
 #include "collision2d/lcp.h"
 
+#include "eigen_blocking.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -65,6 +67,7 @@ LcpResult LemkeSolver::solve(const Eigen::MatrixXd& M, const Eigen::VectorXd& q)
 
 LcpResult LemkeSolver::solve(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const Eigen::VectorXd& d)
 {
+  detail::pin_eigen_blocking();
   LcpResult result;
   const Eigen::Index n = q.size();
   if (M.rows() != n || M.cols() != n || d.size() != n || !all_finite(M) || !q.allFinite() || !d.allFinite() ||

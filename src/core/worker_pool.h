@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 namespace collision2d
@@ -36,6 +37,22 @@ public:
   /// Runs `job` once on every worker at the same time, as job(context, w, w + 1)
   /// for worker w; inside it the workers may meet at sync().
   void run_team(Job job, void* context) { run(static_cast<std::size_t>(workers()), job, context); }
+  /// Calls body(begin, end) over [0, count) split across the workers, or once
+  /// over all of it on the calling thread when count < min_shared (too little
+  /// work to pay for waking the others). `body` is any callable; it is taken
+  /// by address, so capturing it costs no allocation.
+  template <class Body>
+  void parallel_for(std::size_t count, std::size_t min_shared, Body&& body)
+  {
+    if (workers() == 1 || count < min_shared)
+    {
+      body(std::size_t{0}, count);
+      return;
+    }
+    using Callable = std::remove_reference_t<Body>;
+    run(count, [](void* callable, std::size_t begin, std::size_t end) { (*static_cast<Callable*>(callable))(begin, end); },
+        const_cast<void*>(static_cast<const void*>(&body)));
+  }
   /// Inside a run_team job: returns once every worker has called it, and
   /// what each wrote before is seen by all after. Workers spin (they are
   /// expected to arrive within microseconds of each other).

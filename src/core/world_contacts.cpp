@@ -239,17 +239,19 @@ const WorldContact* WorldImpl::find_cached(BodyId a, BodyId b, std::uint32_t fea
 void WorldImpl::publish_contacts()
 {
   contacts_.resize(points_.size());
-  for (std::size_t k = 0; k < points_.size(); ++k)
-  {
-    const ContactPoint& row = points_[k];
-    WorldContact& c = contacts_[k];
-    c.a = ids_[row.a];
-    c.b = ids_[row.b];
-    c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
-    c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
-    c.sliding = row.sliding;
-    c.anchor_drift = row.anchor_drift;
-  }
+  workers_.parallel_for(points_.size(), kMinSharedPoints, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      const ContactPoint& row = points_[k];
+      WorldContact& c = contacts_[k];
+      c.a = ids_[row.a];
+      c.b = ids_[row.b];
+      c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
+      c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
+      c.sliding = row.sliding;
+      c.anchor_drift = row.anchor_drift;
+    }
+  });
 }
 
 double WorldImpl::measure_penetration() const

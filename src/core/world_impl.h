@@ -34,6 +34,12 @@ struct StepContext
 /// One soft pass's parameters (world_soft_solve.cpp).
 struct SoftPass;
 
+/// Bodies below which a per-body stage stays on the calling thread: each
+/// body's update is a few operations, less than waking the workers costs.
+constexpr std::size_t kMinSharedBodies = 2048;
+/// Contact points below which a per-point stage stays on the calling thread.
+constexpr std::size_t kMinSharedPoints = 1024;
+
 /// Each body's pose and velocity, what a failed step puts back.
 struct BodyMotion
 {
@@ -61,6 +67,8 @@ struct WorldImpl
   void substep(StepContext& ctx, StepReport& report);
   void kick(const StepContext& ctx);
   void advance(StepContext& ctx, StepReport& report);
+  /// One body's move over the substep (up to its time of impact when `swept`).
+  void advance_body(std::size_t i, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report) const;
   /// Throws std::overflow_error naming the first body whose state is not finite.
@@ -68,9 +76,27 @@ struct WorldImpl
   void save_motion();
   void restore_motion();
 
+  /// Calls f(begin, end) over the contact points split across the workers
+  /// at body-pair boundaries, so each manifold's points stay on one worker.
+  template <class F>
+  void for_point_ranges(F f)
+  {
+    workers_.parallel_for(points_.size(), kMinSharedPoints,
+                          [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
+  }
+  /// The first point at or after k that starts a new body pair (or the end).
+  std::size_t pair_boundary(std::size_t k) const;
+
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
   void prepare_soft_points(const StepContext& ctx);
+  /// prepare_soft_points' per-point work on points [begin, end) (whole pairs).
+  void prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
+  /// Each body's pose at prepare and no pose change yet.
+  void reset_body_motion(std::size_t begin, std::size_t end);
+  /// After advance_body: a stopped body held, a free one on its parabola, and
+  /// the pose change its contacts follow.
+  void follow_body(std::size_t i, const StepContext& ctx);
   void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   /// The soft passes, or in exact mode each island's LCP (the passes then
@@ -145,6 +171,8 @@ struct WorldImpl
   void load_velocities();
   void store_velocities();
   void prepare_points(const ActiveEffects& effects);
+  /// prepare_points on points [begin, end) (whole pairs).
+  void prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end);
   void warm_start();
   void solve_velocities(bool friction);
   double velocity_residual() const;
@@ -211,7 +239,9 @@ struct WorldImpl
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
   std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared
   std::vector<double> prepared_theta_;
-  std::vector<bool> stopped_;            ///< soft step: stopped at its time of impact this frame
+  /// soft step: stopped at its time of impact this frame (bytes, not bits:
+  /// the workers set their own bodies' flags at once)
+  std::vector<unsigned char> stopped_;
   std::vector<bool> touching_;           ///< soft step: has a contact point this frame
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours

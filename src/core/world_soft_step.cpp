@@ -85,36 +85,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
-  for (ContactPoint& p : points_)
-  {
-    if (!p.active)
-    {
-      continue;
-    }
-    p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
-    p.approach_speed = dot(relative_velocity(p, velocity_), p.normal);
-    aim_at_impact(p);
-    p.frame_impulse = 0.0;
-    const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
-    p.softness = both_move ? moving : fixed;
-  }
-  // A manifold's normal block is the same all frame (lever arms are fixed).
-  for (std::size_t k = 0; k + 1 < points_.size(); ++k)
-  {
-    ContactPoint& p = points_[k];
-    if (p.active && p.count == 2)
-    {
-      p.pair_k12 = pair_coupling(p, points_[k + 1]);
-      p.pair_block = block_solvable(p.k_n, p.pair_k12, points_[k + 1].k_n);
-      ++k;
-    }
-  }
-  for (BodyVelocity& body : velocity_)
-  {
-    body.moved = Vec2{0.0, 0.0};
-    body.turned_cos = 1.0;
-    body.turned_sin = 0.0;
-  }
+  for_point_ranges([&](std::size_t begin, std::size_t end) { prepare_soft_range(moving, fixed, begin, end); });
   stopped_.assign(bodies_.size(), false);
   touching_.assign(bodies_.size(), false);
   for (const ContactPoint& p : points_)
@@ -129,8 +100,47 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   held_theta_.resize(bodies_.size());
   prepared_position_.resize(bodies_.size());
   prepared_theta_.resize(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies,
+                        [this](std::size_t begin, std::size_t end) { reset_body_motion(begin, end); });
+}
+
+void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end)
+{
+  for (std::size_t k = begin; k < end; ++k)
   {
+    ContactPoint& p = points_[k];
+    if (!p.active)
+    {
+      continue;
+    }
+    p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
+    p.approach_speed = dot(relative_velocity(p, velocity_), p.normal);
+    aim_at_impact(p);
+    p.frame_impulse = 0.0;
+    const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
+    p.softness = both_move ? moving : fixed;
+  }
+  // A manifold's normal block is the same all frame (lever arms are fixed).
+  for (std::size_t k = begin; k + 1 < end; ++k)
+  {
+    ContactPoint& p = points_[k];
+    if (p.active && p.count == 2)
+    {
+      p.pair_k12 = pair_coupling(p, points_[k + 1]);
+      p.pair_block = block_solvable(p.k_n, p.pair_k12, points_[k + 1].k_n);
+      ++k;
+    }
+  }
+}
+
+void WorldImpl::reset_body_motion(std::size_t begin, std::size_t end)
+{
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    BodyVelocity& body = velocity_[i];
+    body.moved = Vec2{0.0, 0.0};
+    body.turned_cos = 1.0;
+    body.turned_sin = 0.0;
     prepared_position_[i] = bodies_[i].position();
     prepared_theta_[i] = bodies_[i].theta();
   }
@@ -161,17 +171,19 @@ void WorldImpl::integrate_velocities(const StepContext& ctx)
 {
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
   const double max_spin = kMaxTurnPerSubstep * ctx.inv_h;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
     {
-      velocity_[i].v = velocity_[i].v + gravity_kick;
-      if (touching_[i])
+      if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
       {
-        velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
+        velocity_[i].v = velocity_[i].v + gravity_kick;
+        if (touching_[i])
+        {
+          velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
+        }
       }
     }
-  }
+  });
 }
 
 void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report)
@@ -204,53 +216,66 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
 
 void WorldImpl::update_anchors()
 {
-  for (ContactPoint& p : points_)
-  {
-    if (p.active)
+  workers_.parallel_for(points_.size(), kMinSharedPoints, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+      ContactPoint& p = points_[k];
+      if (p.active)
+      {
+        p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+      }
     }
-  }
+  });
 }
 
 void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
 {
-  // advance() moves the bodies with their velocities and sweeps fast ones
-  // for time of impact (world_step.cpp, world_toi.cpp). A body stopped at its
-  // time of impact stays there for the rest of the frame, velocity kept: no
+  // As advance() (world_step.cpp): fast bodies swept for time of impact
+  // (world_toi.cpp, on one thread: it pairs bodies), then every body moved
+  // with its velocity, shared among the workers. A body stopped at its time
+  // of impact stays there for the rest of the frame, velocity kept: no
   // contact stops it before the next frame's collide finds the touching pair.
   store_velocities();
-  advance(ctx, report);
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  const bool swept = sweep(ctx.h, report);                // world_toi.cpp
+  ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      advance_body(i, ctx, swept);                        // world_step.cpp
+      follow_body(i, ctx);
+    }
+  });
+}
+
+void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
+{
+  Body& b = bodies_[i];
+  if (stopped_[i])
   {
-    Body& b = bodies_[i];
-    if (stopped_[i])
-    {
-      b.set_position(held_position_[i]);
-      b.set_theta(held_theta_[i]);
-      continue;
-    }
-    if (clamped(i))
-    {
-      stopped_[i] = true;
-      held_position_[i] = b.position();
-      held_theta_[i] = b.theta();
-    }
-    else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
-    {
-      // In free flight the substep's mean velocity is the end one less half
-      // its gravity kick: a thrown body follows its parabola exactly.
-      b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
-    }
-    BodyVelocity& state = velocity_[i];
-    state.moved = b.position() - prepared_position_[i];
-    // A body that has not turned (static, asleep, not spinning) needs no
-    // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
-    const double turned = b.theta() - prepared_theta_[i];
-    const bool still = turned == 0.0 && !std::signbit(turned);
-    state.turned_cos = still ? 1.0 : std::cos(turned);
-    state.turned_sin = still ? 0.0 : std::sin(turned);
+    b.set_position(held_position_[i]);
+    b.set_theta(held_theta_[i]);
+    return;
   }
+  if (clamped(i))
+  {
+    stopped_[i] = true;
+    held_position_[i] = b.position();
+    held_theta_[i] = b.theta();
+  }
+  else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
+  {
+    // In free flight the substep's mean velocity is the end one less half
+    // its gravity kick: a thrown body follows its parabola exactly.
+    b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
+  }
+  BodyVelocity& state = velocity_[i];
+  state.moved = b.position() - prepared_position_[i];
+  // A body that has not turned (static, asleep, not spinning) needs no
+  // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
+  const double turned = b.theta() - prepared_theta_[i];
+  const bool still = turned == 0.0 && !std::signbit(turned);
+  state.turned_cos = still ? 1.0 : std::cos(turned);
+  state.turned_sin = still ? 0.0 : std::sin(turned);
 }
 
 double WorldImpl::followed_penetration() const

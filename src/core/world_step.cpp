@@ -152,19 +152,24 @@ void WorldImpl::advance(StepContext& ctx, StepReport& report)
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    Body& b = bodies_[i];
-    if (b.type() == BodyType::Static || asleep_[i])
-    {
-      continue;
-    }
-    const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-    b.set_position(b.position() + b.velocity() * travel);
-    // Kinematic bodies follow their set spin whatever the rotation toggle says.
-    const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-    if (turns && b.omega() != 0.0)
-    {
-      b.set_theta(b.theta() + b.omega() * ctx.h);
-    }
+    advance_body(i, ctx, swept);
+  }
+}
+
+void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
+{
+  Body& b = bodies_[i];
+  if (b.type() == BodyType::Static || asleep_[i])
+  {
+    return;
+  }
+  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+  b.set_position(b.position() + b.velocity() * travel);
+  // Kinematic bodies follow their set spin whatever the rotation toggle says.
+  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+  if (turns && b.omega() != 0.0)
+  {
+    b.set_theta(b.theta() + b.omega() * ctx.h);
   }
 }
 

@@ -277,13 +277,18 @@ TEST(WorldGoldenRuns, WorkersDoNotChangeTrajectories)
 
 TEST(WorldGoldenRuns, SharedSoftPassesDoNotChangeTrajectories)
 {
-  // A pyramid large enough that the workers share every colour of the soft
-  // passes (and the narrow phase): every bit must match one worker's run.
-  const auto scene = [] { return scenes::pyramid(40); };
+  // Scenes large enough that the workers share every colour of the soft
+  // passes, the narrow phase and the per-point and per-body stages (the gas
+  // also sweeps fast disks): every bit must match one worker's run.
+  const std::function<Scene()> kScenes[] = {[] { return scenes::pyramid(40); }, [] { return scenes::pyramid(70); },
+                                            [] { return scenes::elastic_gas(3000); }};
   const auto with = [](int workers) { return [workers](WorldSettings& s) { s.workers = workers; }; };
-  const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), 20);
-  EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), 20), one);
-  EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), 20), one);
+  for (const auto& scene : kScenes)
+  {
+    const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), 20);
+    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), 20), one);
+    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), 20), one);
+  }
 }
 
 TEST(WorldGoldenRuns, WideRowsMatchTheScalarPath)

@@ -56,7 +56,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   prepare_soft_points(ctx);
   if (rows_on())
   {
-    soft_rows_.pack(points_, velocity_, ctx.effects.friction);  // soft_rows.cpp
+    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
   }
   // 3. Substeps.
   for (int k = 0; k < settings_.substeps; ++k)
@@ -70,7 +70,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
   if (rows_on())
   {
-    soft_rows_.unpack(points_, velocity_);
+    soft_rows_.unpack(points_, velocity_, workers_);
   }
   restitution_pass(report);
   update_anchors();

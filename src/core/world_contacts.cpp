@@ -55,21 +55,22 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 {
   const std::size_t n = bodies_.size();
   boxes_.resize(n);
-  reach_.assign(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    // The soft step collides once per frame, so a pair that the frame's
-    // motion can close gets its contact now: the margin grows by how far
-    // each body can travel in the frame.
-    reach_[i] = margin > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
-    boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
-  }
+  reach_.resize(n);
+  workers_.parallel_for(n, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      // The soft step collides once per frame, so a pair that the frame's
+      // motion can close gets its contact now: the margin grows by how far
+      // each body can travel in the frame.
+      reach_[i] = margin > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
+      boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
+    }
+  });
   broad_phase_.find_pairs(boxes_, pairs_);
-  points_.clear();
   // The narrow phase of the pairs with a moving body, split across the
-  // workers (each writes its own pairs' slots); then, in pair order, the
-  // points with their cached impulses, so the result is the same for any
-  // number of workers.
+  // workers (each writes its own pairs' slots); then, in pair order, what
+  // each pair adds and where; then the points, split across the workers
+  // again. The result is the same for any number of workers.
   margin_ = margin;
   manifolds_.resize(pairs_.size());
   collided_.resize(pairs_.size());
@@ -77,8 +78,30 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
   const double warm_scale = ctx.warm ? ctx.h / cache_h_ : 0.0;
+  const bool friction = ctx.effects.friction;
+  points_.resize(place_pair_rows(warm_scale > 0.0 || friction));
+  workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      fill_pair_rows(k, warm_scale, friction);
+    }
+  });
+  for (const ContactPoint& row : points_)
+  {
+    report.max_detected_penetration = std::max(report.max_detected_penetration, row.penetration);
+  }
+}
+
+std::size_t WorldImpl::place_pair_rows(bool cached)
+{
+  // In pair order: a body woken here makes later pairs with it movers, and
+  // the cache cursor walks forward.
+  pair_rows_.resize(pairs_.size() + 1);
+  pair_cache_.resize(pairs_.size());
+  std::size_t rows = 0;
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
+    pair_rows_[k] = rows;
     const std::size_t i = pairs_[k].first;
     const std::size_t j = pairs_[k].second;
     if (!dynamic_pair(i, j))
@@ -87,7 +110,9 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     }
     if (!is_mover(i) && !is_mover(j))
     {
-      carry_sleeping_pair(i, j);
+      collided_[k] = Collided::Carried;
+      pair_cache_[k] = cached_pair(ids_[i], ids_[j]);
+      rows += carried_rows(pair_cache_[k], ids_[i], ids_[j]);
       continue;
     }
     // A pair whose body woke up earlier in this loop was not collided yet.
@@ -95,14 +120,42 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     {
       collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k]) ? Collided::Hit : Collided::Miss;
     }
-    if (collided_[k] == Collided::Hit)
+    if (collided_[k] != Collided::Hit)
     {
-      add_manifold(i, j, manifolds_[k], warm_scale, ctx.effects.friction);
+      continue;
     }
+    // A moving body reached a sleeping one: its island takes part again.
+    if (asleep_[i] || asleep_[j])
+    {
+      wake(asleep_[i] ? i : j);
+    }
+    const int count = manifolds_[k].count;
+    pair_cache_[k] = cached && count > 0 ? cached_pair(ids_[i], ids_[j]) : cache_.size();
+    rows += static_cast<std::size_t>(count);
   }
-  for (const ContactPoint& row : points_)
+  pair_rows_[pairs_.size()] = rows;
+  return rows;
+}
+
+std::size_t WorldImpl::carried_rows(std::size_t first, BodyId a, BodyId b) const
+{
+  std::size_t end = first;
+  while (end < cache_.size() && cache_[end].a == a && cache_[end].b == b)
   {
-    report.max_detected_penetration = std::max(report.max_detected_penetration, row.penetration);
+    ++end;
+  }
+  return end - first;
+}
+
+void WorldImpl::fill_pair_rows(std::size_t k, double warm_scale, bool friction)
+{
+  if (collided_[k] == Collided::Hit)
+  {
+    add_manifold(k, warm_scale, friction);
+  }
+  else if (collided_[k] == Collided::Carried)
+  {
+    carry_sleeping_pair(k);
   }
 }
 
@@ -150,25 +203,25 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
   return std::max(margin_ + reach_[i] + reach_[j], touching);
 }
 
-void WorldImpl::add_manifold(std::size_t i, std::size_t j, const Manifold& m, double warm_scale, bool friction)
+void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
 {
-  // A moving body reached a sleeping one: its island takes part again.
-  if (asleep_[i] || asleep_[j])
+  const std::size_t i = pairs_[k].first;
+  const std::size_t j = pairs_[k].second;
+  const Manifold& m = manifolds_[k];
+  for (int c = 0; c < m.count; ++c)
   {
-    wake(asleep_[i] ? i : j);
-  }
-  for (int k = 0; k < m.count; ++k)
-  {
-    ContactPoint& row = points_.emplace_back();
+    ContactPoint& row = points_[pair_rows_[k] + static_cast<std::size_t>(c)];
+    row = ContactPoint{};
     row.a = i;
     row.b = j;
     row.normal = m.normal;
-    row.point = m.points[k].point;
-    row.penetration = m.points[k].penetration;
-    row.separation = m.points[k].separation;
-    row.feature = m.points[k].feature;
+    row.point = m.points[c].point;
+    row.penetration = m.points[c].penetration;
+    row.separation = m.points[c].separation;
+    row.feature = m.points[c].feature;
     row.count = m.count;
-    const WorldContact* cached = warm_scale > 0.0 || friction ? find_cached(ids_[i], ids_[j], row.feature) : nullptr;
+    const WorldContact* cached =
+        warm_scale > 0.0 || friction ? find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature) : nullptr;
     if (cached != nullptr)
     {
       row.lambda_n = warm_scale * cached->impulse.normal;
@@ -179,27 +232,27 @@ void WorldImpl::add_manifold(std::size_t i, std::size_t j, const Manifold& m, do
   }
 }
 
-void WorldImpl::carry_sleeping_pair(std::size_t i, std::size_t j)
+void WorldImpl::carry_sleeping_pair(std::size_t k)
 {
   // Nothing moves in a sleeping island, so its contacts and impulses stay
   // what they were when it fell asleep; they are kept (unsolved) so the
   // island stays one island and wakes with its impulses intact.
-  const BodyId a = ids_[i];
-  const BodyId b = ids_[j];
-  for (auto it = cache_.begin() + cached_pair(a, b); it != cache_.end() && it->a == a && it->b == b; ++it)
+  const std::size_t first = pair_cache_[k];
+  for (std::size_t r = pair_rows_[k]; r < pair_rows_[k + 1]; ++r)
   {
-    ContactPoint row;
-    row.a = i;
-    row.b = j;
-    row.normal = it->contact.normal;
-    row.point = it->contact.point;
-    row.penetration = it->contact.penetration;
-    row.feature = it->contact.feature;
+    const WorldContact& cached = cache_[first + (r - pair_rows_[k])];
+    ContactPoint& row = points_[r];
+    row = ContactPoint{};
+    row.a = pairs_[k].first;
+    row.b = pairs_[k].second;
+    row.normal = cached.contact.normal;
+    row.point = cached.contact.point;
+    row.penetration = cached.contact.penetration;
+    row.feature = cached.contact.feature;
     row.active = false;
-    row.lambda_n = it->impulse.normal;
-    row.lambda_t = it->impulse.tangent;
-    row.sliding = it->sliding;
-    points_.push_back(row);
+    row.lambda_n = cached.impulse.normal;
+    row.lambda_t = cached.impulse.tangent;
+    row.sliding = cached.sliding;
   }
 }
 
@@ -224,9 +277,9 @@ std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const
   return cache_cursor_;
 }
 
-const WorldContact* WorldImpl::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
+const WorldContact* WorldImpl::find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const
 {
-  for (auto it = cache_.begin() + cached_pair(a, b); it != cache_.end() && it->a == a && it->b == b; ++it)
+  for (auto it = cache_.begin() + first; it != cache_.end() && it->a == a && it->b == b; ++it)
   {
     if (it->contact.feature == feature)
     {

@@ -39,6 +39,9 @@ struct SoftPass;
 constexpr std::size_t kMinSharedBodies = 2048;
 /// Contact points below which a per-point stage stays on the calling thread.
 constexpr std::size_t kMinSharedPoints = 1024;
+/// Broad-phase pairs below which filling their contact rows stays on the
+/// calling thread.
+constexpr std::size_t kMinSharedPairs = 1024;
 
 /// Each body's pose and velocity, what a failed step puts back.
 struct BodyMotion
@@ -159,11 +162,20 @@ struct WorldImpl
   bool dynamic_pair(std::size_t i, std::size_t j) const;
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
-  void add_manifold(std::size_t i, std::size_t j, const Manifold& m, double warm_scale, bool friction);
-  void carry_sleeping_pair(std::size_t i, std::size_t j);
+  /// In pair order: wakes, late collisions, each pair's first row
+  /// (pair_rows_) and cache entry (pair_cache_); returns the rows in all.
+  /// `cached`: whether hit pairs look up their cached impulses.
+  std::size_t place_pair_rows(bool cached);
+  /// The cached contacts of pair (a, b) from cache_[first] on.
+  std::size_t carried_rows(std::size_t first, BodyId a, BodyId b) const;
+  /// Pair k's rows, where place_pair_rows put them (a WorkerPool range's item).
+  void fill_pair_rows(std::size_t k, double warm_scale, bool friction);
+  void add_manifold(std::size_t k, double warm_scale, bool friction);
+  void carry_sleeping_pair(std::size_t k);
   /// Index of the first cached contact of pair (a, b), or of where it would be.
   std::size_t cached_pair(BodyId a, BodyId b) const;
-  const WorldContact* find_cached(BodyId a, BodyId b, std::uint32_t feature) const;
+  /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
+  const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
   void publish_contacts();
   double measure_penetration() const;
 
@@ -225,10 +237,13 @@ struct WorldImpl
   {
     NotTried,
     Miss,
-    Hit
+    Hit,
+    Carried  ///< a sleeping pair: its cached contacts are kept
   };
   std::vector<Manifold> manifolds_;
   std::vector<Collided> collided_;
+  std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
+  std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in cache_
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<bool> swept_;           ///< bodies swept this substep

@@ -9,6 +9,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -278,16 +279,25 @@ TEST(WorldGoldenRuns, WorkersDoNotChangeTrajectories)
 TEST(WorldGoldenRuns, SharedSoftPassesDoNotChangeTrajectories)
 {
   // Scenes large enough that the workers share every colour of the soft
-  // passes, the narrow phase and the per-point and per-body stages (the gas
-  // also sweeps fast disks): every bit must match one worker's run.
-  const std::function<Scene()> kScenes[] = {[] { return scenes::pyramid(40); }, [] { return scenes::pyramid(70); },
-                                            [] { return scenes::elastic_gas(3000); }};
+  // passes, the narrow phase, the contact rows and the per-point and
+  // per-body stages (the gas also sweeps fast disks; the sleeping pyramid
+  // carries its contacts once asleep): every bit must match one worker's run.
+  const auto sleeping = [] {
+    Scene scene = scenes::pyramid(30);
+    scene.settings.sleeping = Toggle::On;
+    scene.settings.sleep_time = 0.1;
+    return scene;
+  };
+  const std::pair<std::function<Scene()>, int> kRuns[] = {{[] { return scenes::pyramid(40); }, 20},
+                                                          {[] { return scenes::pyramid(70); }, 20},
+                                                          {[] { return scenes::elastic_gas(3000); }, 20},
+                                                          {sleeping, 60}};
   const auto with = [](int workers) { return [workers](WorldSettings& s) { s.workers = workers; }; };
-  for (const auto& scene : kScenes)
+  for (const auto& [scene, frames] : kRuns)
   {
-    const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), 20);
-    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), 20), one);
-    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), 20), one);
+    const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), frames);
+    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), frames), one);
+    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), frames), one);
   }
 }
 

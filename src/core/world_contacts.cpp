@@ -86,10 +86,8 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
       fill_pair_rows(k, warm_scale, friction);
     }
   });
-  for (const ContactPoint& row : points_)
-  {
-    report.max_detected_penetration = std::max(report.max_detected_penetration, row.penetration);
-  }
+  report.max_detected_penetration = max_over(points_.size(), kMinSharedPoints, report.max_detected_penetration,
+                                             [this](std::size_t k) { return points_[k].penetration; });
 }
 
 std::size_t WorldImpl::place_pair_rows(bool cached)

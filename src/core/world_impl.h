@@ -3,6 +3,7 @@
 // one topic.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -73,7 +74,7 @@ struct WorldImpl
   /// One body's move over the substep (up to its time of impact when `swept`).
   void advance_body(std::size_t i, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
-  void finish_report(StepReport& report) const;
+  void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.
   void require_finite_state() const;
   void save_motion();
@@ -86,6 +87,33 @@ struct WorldImpl
   {
     workers_.parallel_for(points_.size(), kMinSharedPoints,
                           [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
+  }
+  /// The fold best = std::max(best, value(k)) over k in [0, count) from
+  /// `start`, in parts on the workers when count >= min_shared. std::max keeps
+  /// the earlier of equal values and skips a NaN value, so the parts' results
+  /// folded in order give the one-thread bits.
+  template <class F>
+  double max_over(std::size_t count, std::size_t min_shared, double start, F value)
+  {
+    const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
+    partial_max_.resize(parts);
+    workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t w = begin; w < end; ++w)
+      {
+        double best = start;
+        for (std::size_t k = count * w / parts; k < count * (w + 1) / parts; ++k)
+        {
+          best = std::max(best, value(k));
+        }
+        partial_max_[w] = best;
+      }
+    });
+    double best = start;
+    for (double part : partial_max_)
+    {
+      best = std::max(best, part);
+    }
+    return best;
   }
   /// The first point at or after k that starts a new body pair (or the end).
   std::size_t pair_boundary(std::size_t k) const;
@@ -127,7 +155,7 @@ struct WorldImpl
   void restitution_pass(StepReport& report);
   /// The deepest overlap of the frame's contact points at the poses now,
   /// followed from the pose changes since they were prepared (m).
-  double followed_penetration() const;
+  double followed_penetration();
 
   // world_effects.cpp
   StepContext select_effects() const;
@@ -244,6 +272,7 @@ struct WorldImpl
   std::vector<Collided> collided_;
   std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
   std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in cache_
+  std::vector<double> partial_max_;      ///< max_over's result of each part
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<bool> swept_;           ///< bodies swept this substep

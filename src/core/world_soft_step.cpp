@@ -17,6 +17,7 @@
 // out rigidly at the soft rate; the relax adds normal impulses only.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "world_impl.h"
 
@@ -278,14 +279,13 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
   state.turned_sin = still ? 0.0 : std::sin(turned);
 }
 
-double WorldImpl::followed_penetration() const
+double WorldImpl::followed_penetration()
 {
-  double deepest = 0.0;
-  for (const ContactPoint& p : points_)
-  {
-    deepest = p.active ? std::max(deepest, -current_separation(p, velocity_)) : deepest;
-  }
-  return deepest;
+  // An inactive point's -infinity leaves the deepest as it is.
+  return max_over(points_.size(), kMinSharedPoints, 0.0, [this](std::size_t k) {
+    const ContactPoint& p = points_[k];
+    return p.active ? -current_separation(p, velocity_) : -std::numeric_limits<double>::infinity();
+  });
 }
 
 void WorldImpl::restitution_pass(StepReport& report)

@@ -192,7 +192,7 @@ void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
   }
 }
 
-void WorldImpl::finish_report(StepReport& report) const
+void WorldImpl::finish_report(StepReport& report)
 {
   // The soft step follows its contacts' gaps from the poses; the Fx2D step,
   // whose correction is linearised, measures them again.
@@ -225,15 +225,20 @@ void WorldImpl::require_finite_state() const
 namespace
 {
 /// Copies `from` into `to`, growing `to` geometrically: a plain assignment
-/// allocates the exact size, so a count that creeps up would allocate each time.
+/// allocates the exact size, so a count that creeps up would allocate each
+/// time. The workers copy a long list in parts.
 template <typename T>
-void keep_copy(const std::vector<T>& from, std::vector<T>& to)
+void keep_copy(const std::vector<T>& from, std::vector<T>& to, WorkerPool& workers)
 {
   if (to.capacity() < from.size())
   {
     to.reserve(2 * from.size());
   }
-  to.assign(from.begin(), from.end());
+  to.resize(from.size());
+  workers.parallel_for(from.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
+    std::copy(from.begin() + static_cast<std::ptrdiff_t>(begin), from.begin() + static_cast<std::ptrdiff_t>(end),
+              to.begin() + static_cast<std::ptrdiff_t>(begin));
+  });
 }
 }  // namespace
 
@@ -242,21 +247,23 @@ void WorldImpl::save_motion()
   // Only what a step changes is kept aside (no outlines, no scratch), in
   // buffers that keep their capacity from step to step.
   saved_motion_.resize(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    const Body& b = bodies_[i];
-    saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
-  }
-  keep_copy(contacts_, saved_contacts_);
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      const Body& b = bodies_[i];
+      saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
+    }
+  });
+  keep_copy(contacts_, saved_contacts_, workers_);
   saved_asleep_ = asleep_;
-  keep_copy(rest_time_, saved_rest_time_);
+  keep_copy(rest_time_, saved_rest_time_, workers_);
   saved_time_ = time_;
   saved_frame_count_ = frame_count_;
   saved_cache_h_ = cache_h_;
   // A prediction reads the previous substep's points (world_warm_integration.cpp).
   if (settings_.warm_start_before_integration)
   {
-    keep_copy(points_, saved_points_);
+    keep_copy(points_, saved_points_, workers_);
   }
 }
 

@@ -67,6 +67,14 @@ Scene sleeping_pyramid()
   return scene;
 }
 
+/// Large enough that the workers share every stage they can take.
+Scene shared_pyramid()
+{
+  Scene scene = scenes::pyramid(65);
+  scene.settings.workers = 2;
+  return scene;
+}
+
 const AllocationCase kCases[] = {
     {"pyramid_soft_step", [] { return scenes::pyramid(20); }, true},
     {"pyramid_fx2d", [] { return scenes::pyramid(20); }, false},
@@ -75,6 +83,8 @@ const AllocationCase kCases[] = {
     {"gas_fx2d", [] { return scenes::elastic_gas(300); }, false},
     {"demo_soft_step", [] { return scenes::demo(); }, true},
     {"bullet_soft_step", [] { return scenes::bullet_wall(); }, true},
+    {"shared_pyramid_soft_step", shared_pyramid, true},
+    {"shared_pyramid_fx2d", shared_pyramid, false},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, WorldAllocation, ::testing::ValuesIn(kCases),

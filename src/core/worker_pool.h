@@ -62,6 +62,9 @@ private:
   void stop();
   /// A thread's loop: waits for a job newer than `seen`, takes its range.
   void serve(std::size_t index, std::size_t seen);
+  /// Spins briefly until done() holds; returns whether it did (else the caller sleeps).
+  template <class Done>
+  static bool spin_until(Done done);
   /// The range of [0, count_) that worker `index` takes.
   void range(std::size_t index, std::size_t& begin, std::size_t& end) const;
 
@@ -69,8 +72,10 @@ private:
   std::mutex mutex_;
   std::condition_variable start_;
   std::condition_variable done_;
-  std::size_t generation_ = 0;  ///< bumped for each job; threads wait for a new one
-  std::size_t pending_ = 0;     ///< threads still working on the current job
+  /// Bumped for each job (under the mutex); threads wait for a new one,
+  /// spinning a little before they sleep, as the caller does for pending_.
+  std::atomic<std::size_t> generation_{0};
+  std::atomic<std::size_t> pending_{0};  ///< threads still working on the current job
   bool quitting_ = false;
   Job job_ = nullptr;
   void* context_ = nullptr;

@@ -275,7 +275,7 @@ struct WorldImpl
   std::vector<double> partial_max_;      ///< max_over's result of each part
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
-  std::vector<bool> swept_;           ///< bodies swept this substep
+  std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact this substep
   std::vector<ContactPoint> points_;  ///< this substep's contact points

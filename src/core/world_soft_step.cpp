@@ -290,11 +290,12 @@ double WorldImpl::followed_penetration()
 
 void WorldImpl::restitution_pass(StepReport& report)
 {
-  double fastest = 0.0;
-  for (const ContactPoint& p : points_)
-  {
-    fastest = std::max(fastest, p.active ? p.target : 0.0);
-  }
+  // The scan for a bouncing contact is shared; the passes are Gauss-Seidel
+  // in point order and stay on one thread.
+  const double fastest = max_over(points_.size(), kMinSharedPoints, 0.0, [this](std::size_t k) {
+    const ContactPoint& p = points_[k];
+    return p.active ? p.target : 0.0;
+  });
   if (fastest == 0.0)
   {
     return;

@@ -13,6 +13,19 @@ namespace collision2d
 {
 using BodyPair = std::pair<std::size_t, std::size_t>;
 
+/// Runs a job over [0, count), cut into parts that may run at once on
+/// several threads (the World's workers); returns when every part is done.
+class RangeRunner
+{
+public:
+  /// A job: processes items [begin, end) with its context.
+  using Job = void (*)(void* context, std::size_t begin, std::size_t end);
+  virtual ~RangeRunner() = default;
+  /// How many parts a run is cut into at most.
+  virtual int workers() const = 0;
+  virtual void run(std::size_t count, Job job, void* context) = 0;
+};
+
 /// Uniform grid (spatial hash) sized from the boxes themselves, with the few
 /// boxes much larger than a cell (a ground slab, container walls) kept out of
 /// the grid and queried against it. Keeps its scratch buffers between calls,
@@ -25,6 +38,9 @@ public:
   /// a non-finite coordinate or with lo > hi on an axis is empty: it pairs with
   /// nothing.
   void find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
+  /// As above, the grid's cells searched in parts by `runner` when there are
+  /// enough of them; the pairs are the same for any runner.
+  void find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
 
 private:
   /// Inclusive range of grid cells a box covers.
@@ -54,7 +70,10 @@ private:
   std::size_t bucket_of(std::int32_t cx, std::int32_t cy) const;
   bool owns(std::int32_t cx, std::int32_t cy, std::size_t a, std::size_t b) const;
 
-  void pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
+  void pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
+  /// The pairs found in buckets [begin, end), appended to `pairs`.
+  void pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
+                        std::vector<BodyPair>& pairs);
   void pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
                        std::vector<BodyPair>& pairs);
   void pairs_of_large(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
@@ -84,6 +103,7 @@ private:
   std::vector<std::size_t> entry_bucket_;  // bucket of each entry, in fill order
   std::vector<std::size_t> pair_start_;
   std::vector<BodyPair> sorted_pairs_;
+  std::vector<std::vector<BodyPair>> part_pairs_;  // each part's pairs when a runner shares the grid
 };
 
 }  // namespace collision2d

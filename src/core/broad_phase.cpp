@@ -71,7 +71,19 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair
   place_grid(boxes);
   classify(boxes);
   fill_grid();
-  pairs_in_grid(boxes, pairs);
+  pairs_in_grid(boxes, pairs, nullptr);
+  pairs_of_large(boxes, pairs);
+  sort_pairs(boxes.size(), pairs);
+}
+
+void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner)
+{
+  // The pairs end sorted, so the order the parts found them in does not show.
+  pairs.clear();
+  place_grid(boxes);
+  classify(boxes);
+  fill_grid();
+  pairs_in_grid(boxes, pairs, &runner);
   pairs_of_large(boxes, pairs);
   sort_pairs(boxes.size(), pairs);
 }

@@ -27,6 +27,10 @@ constexpr std::size_t kAllPairsBucket = 16;
 /// this many cells per entry: a compact scene such as a gas fills its range.
 constexpr std::int64_t kDenseCellsPerEntry = 2;
 
+/// (cell, box) entries below which a runner's parts do not search the grid:
+/// too few comparisons to pay for waking them.
+constexpr std::size_t kMinSharedEntries = 4096;
+
 /// Multiplicative hash constants (odd, with well-mixed bits).
 constexpr std::uint64_t kHashX = 0x9E3779B97F4A7C15ull;
 constexpr std::uint64_t kHashY = 0xC2B2AE3D27D4EB4Full;
@@ -131,9 +135,48 @@ void BroadPhase::fill_grid()
   }
 }
 
-void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
+void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
-  for (std::size_t b = 0; b + 1 < bucket_start_.size(); ++b)
+  // Each bucket is searched (and its entries sorted) by one part only.
+  const std::size_t buckets = bucket_start_.size() - 1;
+  const std::size_t parts = runner == nullptr || entries_.size() < kMinSharedEntries
+                                ? 1
+                                : static_cast<std::size_t>(std::max(runner->workers(), 1));
+  if (parts == 1)
+  {
+    pairs_in_buckets(boxes, 0, buckets, pairs);
+    return;
+  }
+  part_pairs_.resize(parts);
+  struct Search
+  {
+    BroadPhase* self;
+    const std::vector<Aabb>* boxes;
+    std::size_t buckets;
+    std::size_t parts;
+  } search{this, &boxes, buckets, parts};
+  runner->run(
+      parts,
+      [](void* context, std::size_t begin, std::size_t end) {
+        const Search& s = *static_cast<const Search*>(context);
+        for (std::size_t part = begin; part < end; ++part)
+        {
+          std::vector<BodyPair>& found = s.self->part_pairs_[part];
+          found.clear();
+          s.self->pairs_in_buckets(*s.boxes, s.buckets * part / s.parts, s.buckets * (part + 1) / s.parts, found);
+        }
+      },
+      &search);
+  for (const std::vector<BodyPair>& found : part_pairs_)
+  {
+    pairs.insert(pairs.end(), found.begin(), found.end());
+  }
+}
+
+void BroadPhase::pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
+                                  std::vector<BodyPair>& pairs)
+{
+  for (std::size_t b = begin; b < end; ++b)
   {
     if (bucket_start_[b + 1] - bucket_start_[b] > 1)
     {

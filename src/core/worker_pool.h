@@ -12,28 +12,28 @@
 #include <type_traits>
 #include <vector>
 
+#include "collision2d/broad_phase.h"
+
 namespace collision2d
 {
 namespace detail
 {
-class WorkerPool
+class WorkerPool : public RangeRunner
 {
 public:
-  /// A job: processes items [begin, end) with its context.
-  using Job = void (*)(void* context, std::size_t begin, std::size_t end);
 
   WorkerPool() = default;
   /// A copy has its own threads, as many as the original.
   WorkerPool(const WorkerPool& other);
   WorkerPool& operator=(const WorkerPool& other);
-  ~WorkerPool();
+  ~WorkerPool() override;
 
   /// Workers including the calling thread (at least 1).
-  int workers() const { return static_cast<int>(threads_.size()) + 1; }
+  int workers() const override { return static_cast<int>(threads_.size()) + 1; }
   /// Starts or stops threads so `workers` take part (values below 1 count as 1).
   void resize(int workers);
   /// Runs `job` over [0, count) split across the workers; returns when all are done.
-  void run(std::size_t count, Job job, void* context);
+  void run(std::size_t count, Job job, void* context) override;
   /// Runs `job` once on every worker at the same time, as job(context, w, w + 1)
   /// for worker w; inside it the workers may meet at sync().
   void run_team(Job job, void* context) { run(static_cast<std::size_t>(workers()), job, context); }

@@ -66,7 +66,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
       boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
     }
   });
-  broad_phase_.find_pairs(boxes_, pairs_);
+  broad_phase_.find_pairs(boxes_, pairs_, workers_);
   // The narrow phase of the pairs with a moving body, split across the
   // workers (each writes its own pairs' slots); then, in pair order, what
   // each pair adds and where; then the points, split across the workers

@@ -64,7 +64,17 @@ private:
   void choose_cell_size(const std::vector<Aabb>& boxes);
   CellRange cells_of(const Aabb& box) const;
   void classify(const std::vector<Aabb>& boxes);
-  void fill_grid();
+  void find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
+  /// The grid's entries by counting sort; with a runner, in parts of the
+  /// boxes, each part's entries placed where one pass would put them.
+  void fill_grid(RangeRunner* runner);
+  void fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std::size_t bucket_count);
+  /// How many parts a runner's share of the grid takes (1: no sharing).
+  std::size_t grid_parts(const RangeRunner* runner, std::size_t entry_count) const;
+  /// Part `part` of `parts` of the grid boxes: hashes their entries, counting them per bucket.
+  void count_entries(std::size_t part, std::size_t parts, std::size_t bucket_count);
+  /// ... and writes them at their part's bucket cursors.
+  void scatter_entries(std::size_t part, std::size_t parts, std::size_t bucket_count);
   /// Dense or hashed bucket layout for this call; returns the bucket count.
   std::size_t choose_layout(std::size_t entry_count);
   std::size_t bucket_of(std::int32_t cx, std::int32_t cy) const;
@@ -104,6 +114,8 @@ private:
   std::vector<std::size_t> pair_start_;
   std::vector<BodyPair> sorted_pairs_;
   std::vector<std::vector<BodyPair>> part_pairs_;  // each part's pairs when a runner shares the grid
+  std::vector<std::size_t> first_entry_;  // when shared: each grid box's first entry
+  std::vector<std::size_t> part_count_;   // when shared: per part and bucket, a count, then a cursor
 };
 
 }  // namespace collision2d

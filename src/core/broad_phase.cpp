@@ -67,23 +67,22 @@ bool positive_finite(double v)
 
 void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
 {
-  pairs.clear();
-  place_grid(boxes);
-  classify(boxes);
-  fill_grid();
-  pairs_in_grid(boxes, pairs, nullptr);
-  pairs_of_large(boxes, pairs);
-  sort_pairs(boxes.size(), pairs);
+  find_pairs_with(boxes, pairs, nullptr);
 }
 
 void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner)
+{
+  find_pairs_with(boxes, pairs, &runner);
+}
+
+void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
   // The pairs end sorted, so the order the parts found them in does not show.
   pairs.clear();
   place_grid(boxes);
   classify(boxes);
-  fill_grid();
-  pairs_in_grid(boxes, pairs, &runner);
+  fill_grid(runner);
+  pairs_in_grid(boxes, pairs, runner);
   pairs_of_large(boxes, pairs);
   sort_pairs(boxes.size(), pairs);
 }

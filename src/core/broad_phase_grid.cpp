@@ -51,6 +51,21 @@ std::size_t power_of_two_at_least(std::size_t n)
   return p;
 }
 
+/// Calls f(part) for every part in [0, parts) on the runner's threads.
+template <class F>
+void run_parts(RangeRunner& runner, std::size_t parts, F f)
+{
+  runner.run(
+      parts,
+      [](void* context, std::size_t begin, std::size_t end) {
+        for (std::size_t part = begin; part < end; ++part)
+        {
+          (*static_cast<F*>(context))(part);
+        }
+      },
+      &f);
+}
+
 }  // namespace
 
 std::size_t BroadPhase::bucket_of(std::int32_t cx, std::int32_t cy) const
@@ -83,13 +98,21 @@ std::size_t BroadPhase::choose_layout(std::size_t entry_count)
   return bucket_count;
 }
 
-void BroadPhase::fill_grid()
+std::size_t BroadPhase::grid_parts(const RangeRunner* runner, std::size_t entry_count) const
+{
+  return runner == nullptr || entry_count < kMinSharedEntries ? 1
+                                                              : static_cast<std::size_t>(std::max(runner->workers(), 1));
+}
+
+void BroadPhase::fill_grid(RangeRunner* runner)
 {
   std::size_t entry_count = 0;
   occupied_ = {0, 0, -1, -1};
+  first_entry_.resize(grid_boxes_.size());
   for (std::size_t k = 0; k < grid_boxes_.size(); ++k)
   {
     const CellRange& r = ranges_[grid_boxes_[k]];
+    first_entry_[k] = entry_count;
     entry_count += static_cast<std::size_t>(area(r.x0, r.y0, r.x1, r.y1));
     occupied_ = k == 0 ? r
                        : CellRange{std::min(occupied_.x0, r.x0), std::min(occupied_.y0, r.y0),
@@ -97,9 +120,16 @@ void BroadPhase::fill_grid()
   }
   const std::size_t bucket_count = choose_layout(entry_count);
   bucket_start_.assign(bucket_count + 1, 0);
+  entry_bucket_.resize(entry_count);
+  entries_.resize(entry_count);
+  const std::size_t parts = grid_parts(runner, entry_count);
+  if (parts > 1)
+  {
+    fill_grid_in_parts(*runner, parts, bucket_count);
+    return;
+  }
   // Each entry's bucket is hashed once, while counting, and read back in
   // the same order while scattering.
-  entry_bucket_.resize(entry_count);
   std::size_t e = 0;
   for (std::size_t box : grid_boxes_)
   {
@@ -120,7 +150,6 @@ void BroadPhase::fill_grid()
     end += start;
     start = end;  // one past the bucket's end, decremented while scattering
   }
-  entries_.resize(entry_count);
   e = 0;
   for (std::size_t box : grid_boxes_)
   {
@@ -135,38 +164,89 @@ void BroadPhase::fill_grid()
   }
 }
 
+void BroadPhase::fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std::size_t bucket_count)
+{
+  // A bucket fills from its end in entry order, so a part's entries go below
+  // those of the parts before it: the entries land where one pass puts them.
+  part_count_.assign(parts * bucket_count, 0);
+  run_parts(runner, parts, [&](std::size_t part) { count_entries(part, parts, bucket_count); });
+  std::size_t end = 0;
+  for (std::size_t b = 0; b < bucket_count; ++b)
+  {
+    std::size_t total = 0;
+    for (std::size_t part = 0; part < parts; ++part)
+    {
+      total += part_count_[part * bucket_count + b];
+    }
+    end += total;
+    std::size_t cursor = end;
+    for (std::size_t part = 0; part < parts; ++part)
+    {
+      const std::size_t count = part_count_[part * bucket_count + b];
+      part_count_[part * bucket_count + b] = cursor;
+      cursor -= count;
+    }
+    bucket_start_[b] = end - total;
+  }
+  bucket_start_[bucket_count] = end;
+  run_parts(runner, parts, [&](std::size_t part) { scatter_entries(part, parts, bucket_count); });
+}
+
+void BroadPhase::count_entries(std::size_t part, std::size_t parts, std::size_t bucket_count)
+{
+  std::size_t* count = part_count_.data() + part * bucket_count;
+  const std::size_t n = grid_boxes_.size();
+  for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+  {
+    const CellRange& r = ranges_[grid_boxes_[k]];
+    std::size_t e = first_entry_[k];
+    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
+    {
+      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
+      {
+        const std::size_t bucket = bucket_of(cx, cy);
+        entry_bucket_[e++] = bucket;
+        ++count[bucket];
+      }
+    }
+  }
+}
+
+void BroadPhase::scatter_entries(std::size_t part, std::size_t parts, std::size_t bucket_count)
+{
+  std::size_t* cursor = part_count_.data() + part * bucket_count;
+  const std::size_t n = grid_boxes_.size();
+  for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+  {
+    const std::size_t box = grid_boxes_[k];
+    const CellRange& r = ranges_[box];
+    std::size_t e = first_entry_[k];
+    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
+    {
+      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
+      {
+        entries_[--cursor[entry_bucket_[e++]]] = Entry{cx, cy, box};
+      }
+    }
+  }
+}
+
 void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
   // Each bucket is searched (and its entries sorted) by one part only.
   const std::size_t buckets = bucket_start_.size() - 1;
-  const std::size_t parts = runner == nullptr || entries_.size() < kMinSharedEntries
-                                ? 1
-                                : static_cast<std::size_t>(std::max(runner->workers(), 1));
+  const std::size_t parts = grid_parts(runner, entries_.size());
   if (parts == 1)
   {
     pairs_in_buckets(boxes, 0, buckets, pairs);
     return;
   }
   part_pairs_.resize(parts);
-  struct Search
-  {
-    BroadPhase* self;
-    const std::vector<Aabb>* boxes;
-    std::size_t buckets;
-    std::size_t parts;
-  } search{this, &boxes, buckets, parts};
-  runner->run(
-      parts,
-      [](void* context, std::size_t begin, std::size_t end) {
-        const Search& s = *static_cast<const Search*>(context);
-        for (std::size_t part = begin; part < end; ++part)
-        {
-          std::vector<BodyPair>& found = s.self->part_pairs_[part];
-          found.clear();
-          s.self->pairs_in_buckets(*s.boxes, s.buckets * part / s.parts, s.buckets * (part + 1) / s.parts, found);
-        }
-      },
-      &search);
+  run_parts(*runner, parts, [&](std::size_t part) {
+    std::vector<BodyPair>& found = part_pairs_[part];
+    found.clear();
+    pairs_in_buckets(boxes, buckets * part / parts, buckets * (part + 1) / parts, found);
+  });
   for (const std::vector<BodyPair>& found : part_pairs_)
   {
     pairs.insert(pairs.end(), found.begin(), found.end());

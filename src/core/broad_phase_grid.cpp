@@ -100,8 +100,11 @@ std::size_t BroadPhase::choose_layout(std::size_t entry_count)
 
 std::size_t BroadPhase::grid_parts(const RangeRunner* runner, std::size_t entry_count) const
 {
-  return runner == nullptr || entry_count < kMinSharedEntries ? 1
-                                                              : static_cast<std::size_t>(std::max(runner->workers(), 1));
+  if (runner == nullptr || entry_count < kMinSharedEntries)
+  {
+    return 1;
+  }
+  return static_cast<std::size_t>(std::max(runner->workers(), 1));
 }
 
 void BroadPhase::fill_grid(RangeRunner* runner)

@@ -21,7 +21,6 @@ namespace detail
 class WorkerPool : public RangeRunner
 {
 public:
-
   WorkerPool() = default;
   /// A copy has its own threads, as many as the original.
   WorkerPool(const WorkerPool& other);
@@ -50,8 +49,10 @@ public:
       return;
     }
     using Callable = std::remove_reference_t<Body>;
-    run(count, [](void* callable, std::size_t begin, std::size_t end) { (*static_cast<Callable*>(callable))(begin, end); },
-        const_cast<void*>(static_cast<const void*>(&body)));
+    const Job trampoline = [](void* callable, std::size_t begin, std::size_t end) {
+      (*static_cast<Callable*>(callable))(begin, end);
+    };
+    run(count, trampoline, const_cast<void*>(static_cast<const void*>(&body)));
   }
   /// Inside a run_team job: returns once every worker has called it, and
   /// what each wrote before is seen by all after. Workers spin (they are

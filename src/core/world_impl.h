@@ -80,6 +80,8 @@ struct WorldImpl
   void save_motion();
   void restore_motion();
 
+  // Sharing a stage among the workers (worker_pool.h): results are the same
+  // for any number of them.
   /// Calls f(begin, end) over the contact points split across the workers
   /// at body-pair boundaries, so each manifold's points stay on one worker.
   template <class F>

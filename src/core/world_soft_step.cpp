@@ -89,12 +89,14 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   for_point_ranges([&](std::size_t begin, std::size_t end) { prepare_soft_range(moving, fixed, begin, end); });
   stopped_.assign(bodies_.size(), false);
   touching_.assign(bodies_.size(), false);
-  for (const ContactPoint& p : points_)
+  // The frame's active points are those of the pairs that hit (detect()),
+  // so the short pair list says which bodies they touch.
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
-    if (p.active)
+    if (collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k])
     {
-      touching_[p.a] = true;
-      touching_[p.b] = true;
+      touching_[pairs_[k].first] = true;
+      touching_[pairs_[k].second] = true;
     }
   }
   held_position_.resize(bodies_.size());

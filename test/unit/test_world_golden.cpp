@@ -299,6 +299,9 @@ TEST(WorldGoldenRuns, SharedSoftPassesDoNotChangeTrajectories)
     EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), frames), one);
     EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), frames), one);
   }
+  // The Fx2D step shares detection, prepare and the velocity copies too.
+  const std::uint64_t one = run_hash(scenes::pyramid(70), Pipeline::Fx2d, with(1), 10);
+  EXPECT_EQ(run_hash(scenes::pyramid(70), Pipeline::Fx2d, with(2), 10), one);
 }
 
 TEST(WorldGoldenRuns, WideRowsMatchTheScalarPath)

@@ -1,5 +1,5 @@
-// Detection for the substep (broad then narrow phase on fresh boxes), the
-// warm-start cache keyed by (body ids, feature), and the published contacts.
+// Detection for the substep (broad then narrow phase on fresh boxes) and the
+// published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
 
 #include "collision2d/collide.h"
@@ -20,11 +20,6 @@ constexpr Vec2 kCoincidentNormal{0.0, 1.0};
 bool coincident_disks(const Body& a, const Body& b)
 {
   return a.shape() == Shape::Disk && b.shape() == Shape::Disk && a.position() == b.position();
-}
-
-bool pair_less(const WorldContact& c, BodyId a, BodyId b)
-{
-  return c.a < a || (c.a == a && c.b < b);
 }
 
 }  // namespace
@@ -90,73 +85,6 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
                                              [this](std::size_t k) { return points_[k].penetration; });
 }
 
-std::size_t WorldImpl::place_pair_rows(bool cached)
-{
-  // In pair order: a body woken here makes later pairs with it movers, and
-  // the cache cursor walks forward.
-  pair_rows_.resize(pairs_.size() + 1);
-  pair_cache_.resize(pairs_.size());
-  std::size_t rows = 0;
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
-  {
-    pair_rows_[k] = rows;
-    const std::size_t i = pairs_[k].first;
-    const std::size_t j = pairs_[k].second;
-    if (!dynamic_pair(i, j))
-    {
-      continue;
-    }
-    if (!is_mover(i) && !is_mover(j))
-    {
-      collided_[k] = Collided::Carried;
-      pair_cache_[k] = cached_pair(ids_[i], ids_[j]);
-      rows += carried_rows(pair_cache_[k], ids_[i], ids_[j]);
-      continue;
-    }
-    // A pair whose body woke up earlier in this loop was not collided yet.
-    if (collided_[k] == Collided::NotTried)
-    {
-      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k]) ? Collided::Hit : Collided::Miss;
-    }
-    if (collided_[k] != Collided::Hit)
-    {
-      continue;
-    }
-    // A moving body reached a sleeping one: its island takes part again.
-    if (asleep_[i] || asleep_[j])
-    {
-      wake(asleep_[i] ? i : j);
-    }
-    const int count = manifolds_[k].count;
-    pair_cache_[k] = cached && count > 0 ? cached_pair(ids_[i], ids_[j]) : cache_.size();
-    rows += static_cast<std::size_t>(count);
-  }
-  pair_rows_[pairs_.size()] = rows;
-  return rows;
-}
-
-std::size_t WorldImpl::carried_rows(std::size_t first, BodyId a, BodyId b) const
-{
-  std::size_t end = first;
-  while (end < cache_.size() && cache_[end].a == a && cache_[end].b == b)
-  {
-    ++end;
-  }
-  return end - first;
-}
-
-void WorldImpl::fill_pair_rows(std::size_t k, double warm_scale, bool friction)
-{
-  if (collided_[k] == Collided::Hit)
-  {
-    add_manifold(k, warm_scale, friction);
-  }
-  else if (collided_[k] == Collided::Carried)
-  {
-    carry_sleeping_pair(k);
-  }
-}
-
 bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m) const
 {
   const Body& a = bodies_[i];
@@ -199,92 +127,6 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
   const bool touch = clamped(i) || clamped(j);
   const double touching = touch ? kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[j].radius()) : 0.0;
   return std::max(margin_ + reach_[i] + reach_[j], touching);
-}
-
-void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
-{
-  const std::size_t i = pairs_[k].first;
-  const std::size_t j = pairs_[k].second;
-  const Manifold& m = manifolds_[k];
-  for (int c = 0; c < m.count; ++c)
-  {
-    ContactPoint& row = points_[pair_rows_[k] + static_cast<std::size_t>(c)];
-    row = ContactPoint{};
-    row.a = i;
-    row.b = j;
-    row.normal = m.normal;
-    row.point = m.points[c].point;
-    row.penetration = m.points[c].penetration;
-    row.separation = m.points[c].separation;
-    row.feature = m.points[c].feature;
-    row.count = m.count;
-    const WorldContact* cached =
-        warm_scale > 0.0 || friction ? find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature) : nullptr;
-    if (cached != nullptr)
-    {
-      row.lambda_n = warm_scale * cached->impulse.normal;
-      row.lambda_t = warm_scale * cached->impulse.tangent;
-      row.kinetic = friction && cached->sliding;
-      row.anchor_drift = cached->anchor_drift;
-    }
-  }
-}
-
-void WorldImpl::carry_sleeping_pair(std::size_t k)
-{
-  // Nothing moves in a sleeping island, so its contacts and impulses stay
-  // what they were when it fell asleep; they are kept (unsolved) so the
-  // island stays one island and wakes with its impulses intact.
-  const std::size_t first = pair_cache_[k];
-  for (std::size_t r = pair_rows_[k]; r < pair_rows_[k + 1]; ++r)
-  {
-    const WorldContact& cached = cache_[first + (r - pair_rows_[k])];
-    ContactPoint& row = points_[r];
-    row = ContactPoint{};
-    row.a = pairs_[k].first;
-    row.b = pairs_[k].second;
-    row.normal = cached.contact.normal;
-    row.point = cached.contact.point;
-    row.penetration = cached.contact.penetration;
-    row.feature = cached.contact.feature;
-    row.active = false;
-    row.lambda_n = cached.impulse.normal;
-    row.lambda_t = cached.impulse.tangent;
-    row.sliding = cached.sliding;
-  }
-}
-
-std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const
-{
-  // The cache is in (a, b) order because contacts are published in broad-phase
-  // pair order and dense indices follow ids; detection asks in that order too,
-  // so the cursor only moves forward (a search covers any other order).
-  if (cache_cursor_ > cache_.size() || (cache_cursor_ > 0 && !pair_less(cache_[cache_cursor_ - 1], a, b)))
-  {
-    const auto found = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
-                                        [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
-                                          return pair_less(c, key.first, key.second);
-                                        });
-    cache_cursor_ = static_cast<std::size_t>(found - cache_.begin());
-    return cache_cursor_;
-  }
-  while (cache_cursor_ < cache_.size() && pair_less(cache_[cache_cursor_], a, b))
-  {
-    ++cache_cursor_;
-  }
-  return cache_cursor_;
-}
-
-const WorldContact* WorldImpl::find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const
-{
-  for (auto it = cache_.begin() + first; it != cache_.end() && it->a == a && it->b == b; ++it)
-  {
-    if (it->contact.feature == feature)
-    {
-      return &*it;
-    }
-  }
-  return nullptr;
 }
 
 void WorldImpl::publish_contacts()

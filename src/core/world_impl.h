@@ -192,10 +192,15 @@ struct WorldImpl
   bool dynamic_pair(std::size_t i, std::size_t j) const;
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
-  /// In pair order: wakes, late collisions, each pair's first row
-  /// (pair_rows_) and cache entry (pair_cache_); returns the rows in all.
-  /// `cached`: whether hit pairs look up their cached impulses.
+  /// Each pair's first row (pair_rows_) and cache entry (pair_cache_), as one
+  /// pass in pair order finds them (with wakes and late collisions); returns
+  /// the rows in all. `cached`: whether hit pairs look up their cached impulses.
   std::size_t place_pair_rows(bool cached);
+  /// place_pair_rows in parts on the workers; false (nothing placed) unless
+  /// every body is awake and the cache in pair order.
+  bool place_awake_pairs(bool cached);
+  void place_awake_part(std::size_t part, std::size_t parts, bool cached);
+  void place_pairs_in_order(bool cached);
   /// The cached contacts of pair (a, b) from cache_[first] on.
   std::size_t carried_rows(std::size_t first, BodyId a, BodyId b) const;
   /// Pair k's rows, where place_pair_rows put them (a WorkerPool range's item).
@@ -204,6 +209,8 @@ struct WorldImpl
   void carry_sleeping_pair(std::size_t k);
   /// Index of the first cached contact of pair (a, b), or of where it would be.
   std::size_t cached_pair(BodyId a, BodyId b) const;
+  /// ... from `cursor`, which it moves (cached_pair uses cache_cursor_).
+  std::size_t cached_pair(std::size_t& cursor, BodyId a, BodyId b) const;
   /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
   void publish_contacts();
@@ -275,6 +282,14 @@ struct WorldImpl
   std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
   std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in cache_
   std::vector<double> partial_max_;      ///< max_over's result of each part
+  /// What one part of place_awake_pairs found.
+  struct PairPlacement
+  {
+    bool cache_in_order = true;  ///< its share of the cache is in (a, b) order
+    bool looked_up = false;      ///< it looked a pair up in the cache ...
+    std::size_t last_lookup = 0; ///< ... and its last lookup's answer
+  };
+  std::vector<PairPlacement> placements_;
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)

@@ -71,8 +71,8 @@ struct WorldImpl
   void substep(StepContext& ctx, StepReport& report);
   void kick(const StepContext& ctx);
   void advance(StepContext& ctx, StepReport& report);
-  /// One body's move over the substep (up to its time of impact when `swept`).
-  void advance_body(std::size_t i, const StepContext& ctx, bool swept);
+  /// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
+  void advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.
@@ -127,9 +127,9 @@ struct WorldImpl
   void prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
   /// Each body's pose at prepare and no pose change yet.
   void reset_body_motion(std::size_t begin, std::size_t end);
-  /// After advance_body: a stopped body held, a free one on its parabola, and
-  /// the pose change its contacts follow.
-  void follow_body(std::size_t i, const StepContext& ctx);
+  /// After advance_bodies: a stopped body held, a free one on its parabola,
+  /// and the pose change its contacts follow.
+  void follow_bodies(std::size_t begin, std::size_t end, const StepContext& ctx);
   void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   /// The soft passes, or in exact mode each island's LCP (the passes then

@@ -242,43 +242,43 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   const bool swept = sweep(ctx.h, report);                // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      advance_body(i, ctx, swept);                        // world_step.cpp
-      follow_body(i, ctx);
-    }
+    advance_bodies(begin, end, ctx, swept);               // world_step.cpp
+    follow_bodies(begin, end, ctx);
   });
 }
 
-void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
+void WorldImpl::follow_bodies(std::size_t begin, std::size_t end, const StepContext& ctx)
 {
-  Body& b = bodies_[i];
-  if (stopped_[i])
+  for (std::size_t i = begin; i < end; ++i)
   {
-    b.set_position(held_position_[i]);
-    b.set_theta(held_theta_[i]);
-    return;
+    Body& b = bodies_[i];
+    if (stopped_[i])
+    {
+      b.set_position(held_position_[i]);
+      b.set_theta(held_theta_[i]);
+      continue;
+    }
+    if (clamped(i))
+    {
+      stopped_[i] = true;
+      held_position_[i] = b.position();
+      held_theta_[i] = b.theta();
+    }
+    else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
+    {
+      // In free flight the substep's mean velocity is the end one less half
+      // its gravity kick: a thrown body follows its parabola exactly.
+      b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
+    }
+    BodyVelocity& state = velocity_[i];
+    state.moved = b.position() - prepared_position_[i];
+    // A body that has not turned (static, asleep, not spinning) needs no
+    // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
+    const double turned = b.theta() - prepared_theta_[i];
+    const bool still = turned == 0.0 && !std::signbit(turned);
+    state.turned_cos = still ? 1.0 : std::cos(turned);
+    state.turned_sin = still ? 0.0 : std::sin(turned);
   }
-  if (clamped(i))
-  {
-    stopped_[i] = true;
-    held_position_[i] = b.position();
-    held_theta_[i] = b.theta();
-  }
-  else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
-  {
-    // In free flight the substep's mean velocity is the end one less half
-    // its gravity kick: a thrown body follows its parabola exactly.
-    b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
-  }
-  BodyVelocity& state = velocity_[i];
-  state.moved = b.position() - prepared_position_[i];
-  // A body that has not turned (static, asleep, not spinning) needs no
-  // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
-  const double turned = b.theta() - prepared_theta_[i];
-  const bool still = turned == 0.0 && !std::signbit(turned);
-  state.turned_cos = still ? 1.0 : std::cos(turned);
-  state.turned_sin = still ? 0.0 : std::sin(turned);
 }
 
 double WorldImpl::followed_penetration()

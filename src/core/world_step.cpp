@@ -150,26 +150,26 @@ void WorldImpl::advance(StepContext& ctx, StepReport& report)
 {
   const bool swept = sweep(ctx.h, report);                // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    advance_body(i, ctx, swept);
-  }
+  advance_bodies(0, bodies_.size(), ctx, swept);
 }
 
-void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
+void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept)
 {
-  Body& b = bodies_[i];
-  if (b.type() == BodyType::Static || asleep_[i])
+  for (std::size_t i = begin; i < end; ++i)
   {
-    return;
-  }
-  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-  b.set_position(b.position() + b.velocity() * travel);
-  // Kinematic bodies follow their set spin whatever the rotation toggle says.
-  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-  if (turns && b.omega() != 0.0)
-  {
-    b.set_theta(b.theta() + b.omega() * ctx.h);
+    Body& b = bodies_[i];
+    if (b.type() == BodyType::Static || asleep_[i])
+    {
+      continue;
+    }
+    const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+    b.set_position(b.position() + b.velocity() * travel);
+    // Kinematic bodies follow their set spin whatever the rotation toggle says.
+    const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+    if (turns && b.omega() != 0.0)
+    {
+      b.set_theta(b.theta() + b.omega() * ctx.h);
+    }
   }
 }
 

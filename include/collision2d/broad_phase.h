@@ -2,6 +2,7 @@
 // the bodies plus the pairs for scattered scenes.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -59,18 +60,38 @@ private:
     std::size_t box;
   };
 
+  /// The lowest corner of some boxes (none yet: any is false).
+  struct LowCorner
+  {
+    bool any = false;
+    double x = 0.0;
+    double y = 0.0;
+    void lower(double lo_x, double lo_y)
+    {
+      x = any ? std::min(x, lo_x) : lo_x;
+      y = any ? std::min(y, lo_y) : lo_y;
+      any = true;
+    }
+  };
+  /// Where a box goes: nowhere, the grid, or the large boxes.
+  enum class BoxClass : unsigned char
+  {
+    Unusable,
+    Grid,
+    Large
+  };
   /// Origin of the cell indices every call, cell size every few calls.
-  void place_grid(const std::vector<Aabb>& boxes);
+  void place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner);
   void choose_cell_size(const std::vector<Aabb>& boxes);
   CellRange cells_of(const Aabb& box) const;
-  void classify(const std::vector<Aabb>& boxes);
+  void classify(const std::vector<Aabb>& boxes, RangeRunner* runner);
+  /// Box i's class, its cells stored in ranges_ when usable.
+  BoxClass classify_box(const std::vector<Aabb>& boxes, std::size_t i);
   void find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
   /// The grid's entries by counting sort; with a runner, in parts of the
   /// boxes, each part's entries placed where one pass would put them.
   void fill_grid(RangeRunner* runner);
   void fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std::size_t bucket_count);
-  /// How many parts a runner's share of the grid takes (1: no sharing).
-  std::size_t grid_parts(const RangeRunner* runner, std::size_t entry_count) const;
   /// Part `part` of `parts` of the grid boxes: hashes their entries, counting them per bucket.
   void count_entries(std::size_t part, std::size_t parts, std::size_t bucket_count);
   /// ... and writes them at their part's bucket cursors.
@@ -116,6 +137,8 @@ private:
   std::vector<std::vector<BodyPair>> part_pairs_;  // each part's pairs when a runner shares the grid
   std::vector<std::size_t> first_entry_;  // when shared: each grid box's first entry
   std::vector<std::size_t> part_count_;   // when shared: per part and bucket, a count, then a cursor
+  std::vector<LowCorner> corners_;        // each part's lowest corner
+  std::vector<BoxClass> box_class_;       // when shared: each box's class
 };
 
 }  // namespace collision2d

@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "collision2d/broad_phase.h"
+#include "broad_phase_parts.h"
 
 namespace collision2d
 {
@@ -26,10 +27,6 @@ constexpr std::size_t kAllPairsBucket = 16;
 /// no hashing, no two cells sharing a bucket) when that range has at most
 /// this many cells per entry: a compact scene such as a gas fills its range.
 constexpr std::int64_t kDenseCellsPerEntry = 2;
-
-/// (cell, box) entries below which a runner's parts do not search the grid:
-/// too few comparisons to pay for waking them.
-constexpr std::size_t kMinSharedEntries = 4096;
 
 /// Multiplicative hash constants (odd, with well-mixed bits).
 constexpr std::uint64_t kHashX = 0x9E3779B97F4A7C15ull;
@@ -49,21 +46,6 @@ std::size_t power_of_two_at_least(std::size_t n)
     p <<= 1;
   }
   return p;
-}
-
-/// Calls f(part) for every part in [0, parts) on the runner's threads.
-template <class F>
-void run_parts(RangeRunner& runner, std::size_t parts, F f)
-{
-  runner.run(
-      parts,
-      [](void* context, std::size_t begin, std::size_t end) {
-        for (std::size_t part = begin; part < end; ++part)
-        {
-          (*static_cast<F*>(context))(part);
-        }
-      },
-      &f);
 }
 
 }  // namespace
@@ -98,15 +80,6 @@ std::size_t BroadPhase::choose_layout(std::size_t entry_count)
   return bucket_count;
 }
 
-std::size_t BroadPhase::grid_parts(const RangeRunner* runner, std::size_t entry_count) const
-{
-  if (runner == nullptr || entry_count < kMinSharedEntries)
-  {
-    return 1;
-  }
-  return static_cast<std::size_t>(std::max(runner->workers(), 1));
-}
-
 void BroadPhase::fill_grid(RangeRunner* runner)
 {
   std::size_t entry_count = 0;
@@ -125,7 +98,7 @@ void BroadPhase::fill_grid(RangeRunner* runner)
   bucket_start_.assign(bucket_count + 1, 0);
   entry_bucket_.resize(entry_count);
   entries_.resize(entry_count);
-  const std::size_t parts = grid_parts(runner, entry_count);
+  const std::size_t parts = detail::runner_parts(runner, entry_count);
   if (parts > 1)
   {
     fill_grid_in_parts(*runner, parts, bucket_count);
@@ -172,7 +145,7 @@ void BroadPhase::fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std:
   // A bucket fills from its end in entry order, so a part's entries go below
   // those of the parts before it: the entries land where one pass puts them.
   part_count_.assign(parts * bucket_count, 0);
-  run_parts(runner, parts, [&](std::size_t part) { count_entries(part, parts, bucket_count); });
+  detail::run_parts(runner, parts, [&](std::size_t part) { count_entries(part, parts, bucket_count); });
   std::size_t end = 0;
   for (std::size_t b = 0; b < bucket_count; ++b)
   {
@@ -192,7 +165,7 @@ void BroadPhase::fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std:
     bucket_start_[b] = end - total;
   }
   bucket_start_[bucket_count] = end;
-  run_parts(runner, parts, [&](std::size_t part) { scatter_entries(part, parts, bucket_count); });
+  detail::run_parts(runner, parts, [&](std::size_t part) { scatter_entries(part, parts, bucket_count); });
 }
 
 void BroadPhase::count_entries(std::size_t part, std::size_t parts, std::size_t bucket_count)
@@ -238,14 +211,14 @@ void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyP
 {
   // Each bucket is searched (and its entries sorted) by one part only.
   const std::size_t buckets = bucket_start_.size() - 1;
-  const std::size_t parts = grid_parts(runner, entries_.size());
+  const std::size_t parts = detail::runner_parts(runner, entries_.size());
   if (parts == 1)
   {
     pairs_in_buckets(boxes, 0, buckets, pairs);
     return;
   }
   part_pairs_.resize(parts);
-  run_parts(*runner, parts, [&](std::size_t part) {
+  detail::run_parts(*runner, parts, [&](std::size_t part) {
     std::vector<BodyPair>& found = part_pairs_[part];
     found.clear();
     pairs_in_buckets(boxes, buckets * part / parts, buckets * (part + 1) / parts, found);

@@ -44,6 +44,18 @@ constexpr std::size_t kMinSharedPoints = 1024;
 /// calling thread.
 constexpr std::size_t kMinSharedPairs = 1024;
 
+/// What select_effects needs to know of the bodies (world_effects.cpp).
+struct BodyCensus
+{
+  std::size_t dynamic = 0;
+  std::size_t rough = 0;           ///< bodies with friction
+  std::size_t dynamic_rough = 0;
+  std::size_t bouncy = 0;          ///< bodies with restitution
+  std::size_t dynamic_bouncy = 0;
+  std::size_t turning = 0;         ///< dynamic polygons and spinning dynamic bodies
+  void add(const BodyCensus& other);
+};
+
 /// Each body's pose and velocity, what a failed step puts back.
 struct BodyMotion
 {
@@ -160,10 +172,10 @@ struct WorldImpl
   double followed_penetration();
 
   // world_effects.cpp
-  StepContext select_effects() const;
-  bool needs_rotation(bool friction) const;
-  bool any_pair_with(double (*property)(const Material&)) const;
-  bool sleeping_wanted() const;
+  StepContext select_effects();
+  /// The bodies counted for select_effects, in parts on the workers.
+  BodyCensus take_census();
+  void count_body(std::size_t i, BodyCensus& census) const;
 
   // world_warm_integration.cpp
   void predict_velocities(const StepContext& ctx);
@@ -290,6 +302,7 @@ struct WorldImpl
     std::size_t last_lookup = 0; ///< ... and its last lookup's answer
   };
   std::vector<PairPlacement> placements_;
+  std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)

@@ -88,7 +88,7 @@ struct WorldImpl
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.
-  void require_finite_state() const;
+  void require_finite_state();
   void save_motion();
   void restore_motion();
 
@@ -303,6 +303,7 @@ struct WorldImpl
   };
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
+  std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)

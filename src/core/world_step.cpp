@@ -207,11 +207,25 @@ void WorldImpl::finish_report(StepReport& report)
   }
 }
 
-void WorldImpl::require_finite_state() const
+void WorldImpl::require_finite_state()
 {
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  // Each part finds its first bad body; the first part's that has one is the
+  // first of all.
+  const std::size_t parts = bodies_.size() < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
+  first_bad_.assign(parts, bodies_.size());
+  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t part = begin; part < end; ++part)
+    {
+      const std::size_t n = bodies_.size();
+      for (std::size_t i = n * part / parts; i < n * (part + 1) / parts && first_bad_[part] == n; ++i)
+      {
+        first_bad_[part] = non_finite_state_field(bodies_[i]) == nullptr ? n : i;
+      }
+    }
+  });
+  for (std::size_t i : first_bad_)
   {
-    if (non_finite_state_field(bodies_[i]) == nullptr)
+    if (i == bodies_.size())
     {
       continue;
     }

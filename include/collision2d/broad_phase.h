@@ -2,6 +2,7 @@
 // the bodies plus the pairs for scattered scenes.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -12,6 +13,19 @@
 namespace collision2d
 {
 using BodyPair = std::pair<std::size_t, std::size_t>;
+
+/// Runs a job over [0, count), cut into parts that may run at once on
+/// several threads (the World's workers); returns when every part is done.
+class RangeRunner
+{
+public:
+  /// A job: processes items [begin, end) with its context.
+  using Job = void (*)(void* context, std::size_t begin, std::size_t end);
+  virtual ~RangeRunner() = default;
+  /// How many parts a run is cut into at most.
+  virtual int workers() const = 0;
+  virtual void run(std::size_t count, Job job, void* context) = 0;
+};
 
 /// Uniform grid (spatial hash) sized from the boxes themselves, with the few
 /// boxes much larger than a cell (a ground slab, container walls) kept out of
@@ -25,6 +39,9 @@ public:
   /// a non-finite coordinate or with lo > hi on an axis is empty: it pairs with
   /// nothing.
   void find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
+  /// As above, the grid's cells searched in parts by `runner` when there are
+  /// enough of them; the pairs are the same for any runner.
+  void find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
 
 private:
   /// Inclusive range of grid cells a box covers.
@@ -43,18 +60,51 @@ private:
     std::size_t box;
   };
 
+  /// The lowest corner of some boxes (none yet: any is false).
+  struct LowCorner
+  {
+    bool any = false;
+    double x = 0.0;
+    double y = 0.0;
+    void lower(double lo_x, double lo_y)
+    {
+      x = any ? std::min(x, lo_x) : lo_x;
+      y = any ? std::min(y, lo_y) : lo_y;
+      any = true;
+    }
+  };
+  /// Where a box goes: nowhere, the grid, or the large boxes.
+  enum class BoxClass : unsigned char
+  {
+    Unusable,
+    Grid,
+    Large
+  };
   /// Origin of the cell indices every call, cell size every few calls.
-  void place_grid(const std::vector<Aabb>& boxes);
+  void place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner);
   void choose_cell_size(const std::vector<Aabb>& boxes);
   CellRange cells_of(const Aabb& box) const;
-  void classify(const std::vector<Aabb>& boxes);
-  void fill_grid();
+  void classify(const std::vector<Aabb>& boxes, RangeRunner* runner);
+  /// Box i's class, its cells stored in ranges_ when usable.
+  BoxClass classify_box(const std::vector<Aabb>& boxes, std::size_t i);
+  void find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
+  /// The grid's entries by counting sort; with a runner, in parts of the
+  /// boxes, each part's entries placed where one pass would put them.
+  void fill_grid(RangeRunner* runner);
+  void fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std::size_t bucket_count);
+  /// Part `part` of `parts` of the grid boxes: hashes their entries, counting them per bucket.
+  void count_entries(std::size_t part, std::size_t parts, std::size_t bucket_count);
+  /// ... and writes them at their part's bucket cursors.
+  void scatter_entries(std::size_t part, std::size_t parts, std::size_t bucket_count);
   /// Dense or hashed bucket layout for this call; returns the bucket count.
   std::size_t choose_layout(std::size_t entry_count);
   std::size_t bucket_of(std::int32_t cx, std::int32_t cy) const;
   bool owns(std::int32_t cx, std::int32_t cy, std::size_t a, std::size_t b) const;
 
-  void pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
+  void pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
+  /// The pairs found in buckets [begin, end), appended to `pairs`.
+  void pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
+                        std::vector<BodyPair>& pairs);
   void pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
                        std::vector<BodyPair>& pairs);
   void pairs_of_large(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
@@ -84,6 +134,11 @@ private:
   std::vector<std::size_t> entry_bucket_;  // bucket of each entry, in fill order
   std::vector<std::size_t> pair_start_;
   std::vector<BodyPair> sorted_pairs_;
+  std::vector<std::vector<BodyPair>> part_pairs_;  // each part's pairs when a runner shares the grid
+  std::vector<std::size_t> first_entry_;  // when shared: each grid box's first entry
+  std::vector<std::size_t> part_count_;   // when shared: per part and bucket, a count, then a cursor
+  std::vector<LowCorner> corners_;        // each part's lowest corner
+  std::vector<BoxClass> box_class_;       // when shared: each box's class
 };
 
 }  // namespace collision2d

@@ -9,6 +9,7 @@
 // kept out of the grid, swept against each other and looked up in the grid
 // cells they cover instead (broad_phase_grid.cpp).
 #include "collision2d/broad_phase.h"
+#include "broad_phase_parts.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,34 +68,62 @@ bool positive_finite(double v)
 
 void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
 {
+  find_pairs_with(boxes, pairs, nullptr);
+}
+
+void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner)
+{
+  find_pairs_with(boxes, pairs, &runner);
+}
+
+void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
+{
+  // The pairs end sorted, so the order the parts found them in does not show.
   pairs.clear();
-  place_grid(boxes);
-  classify(boxes);
-  fill_grid();
-  pairs_in_grid(boxes, pairs);
+  place_grid(boxes, runner);
+  classify(boxes, runner);
+  fill_grid(runner);
+  pairs_in_grid(boxes, pairs, runner);
   pairs_of_large(boxes, pairs);
   sort_pairs(boxes.size(), pairs);
 }
 
-void BroadPhase::place_grid(const std::vector<Aabb>& boxes)
+void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)
 {
   // Cell indices are taken from the lowest corner so that scenes far from the
-  // world origin keep their precision.
-  bool any = false;
-  double lo_x = 0.0;
-  double lo_y = 0.0;
-  for (const Aabb& box : boxes)
-  {
-    if (!is_usable(box))
+  // world origin keep their precision. Each part's lowest corner, then the
+  // parts' in order: std::min keeps the first of equal values either way.
+  const std::size_t parts = detail::runner_parts(runner, boxes.size());
+  corners_.assign(parts, LowCorner{});
+  const auto lowest = [&](std::size_t part) {
+    LowCorner& c = corners_[part];
+    for (std::size_t i = detail::part_begin(boxes.size(), part, parts);
+         i < detail::part_begin(boxes.size(), part + 1, parts); ++i)
     {
-      continue;
+      if (is_usable(boxes[i]))
+      {
+        c.lower(boxes[i].lo.x, boxes[i].lo.y);
+      }
     }
-    lo_x = any ? std::min(lo_x, box.lo.x) : box.lo.x;
-    lo_y = any ? std::min(lo_y, box.lo.y) : box.lo.y;
-    any = true;
+  };
+  if (parts == 1)
+  {
+    lowest(0);
   }
-  origin_x_ = lo_x;
-  origin_y_ = lo_y;
+  else
+  {
+    detail::run_parts(*runner, parts, lowest);
+  }
+  LowCorner low;
+  for (const LowCorner& c : corners_)
+  {
+    if (c.any)
+    {
+      low.lower(c.x, c.y);
+    }
+  }
+  origin_x_ = low.x;
+  origin_y_ = low.y;
   if (calls_since_cell_ == 0 || boxes.size() != cell_box_count_)
   {
     choose_cell_size(boxes);
@@ -147,22 +176,52 @@ BroadPhase::CellRange BroadPhase::cells_of(const Aabb& box) const
           cell_index(box.hi.x, origin_x_, inv_cell_), cell_index(box.hi.y, origin_y_, inv_cell_)};
 }
 
-void BroadPhase::classify(const std::vector<Aabb>& boxes)
+void BroadPhase::classify(const std::vector<Aabb>& boxes, RangeRunner* runner)
 {
   ranges_.resize(boxes.size());
   grid_boxes_.clear();
   large_.clear();
+  const std::size_t parts = detail::runner_parts(runner, boxes.size());
+  if (parts == 1)
+  {
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+    {
+      const BoxClass c = classify_box(boxes, i);
+      if (c != BoxClass::Unusable)
+      {
+        (c == BoxClass::Large ? large_ : grid_boxes_).push_back(i);
+      }
+    }
+    return;
+  }
+  // The cells in parts, then the lists in box order.
+  box_class_.resize(boxes.size());
+  detail::run_parts(*runner, parts, [&](std::size_t part) {
+    for (std::size_t i = detail::part_begin(boxes.size(), part, parts);
+         i < detail::part_begin(boxes.size(), part + 1, parts); ++i)
+    {
+      box_class_[i] = classify_box(boxes, i);
+    }
+  });
   for (std::size_t i = 0; i < boxes.size(); ++i)
   {
-    if (!is_usable(boxes[i]))
+    if (box_class_[i] != BoxClass::Unusable)
     {
-      continue;
+      (box_class_[i] == BoxClass::Large ? large_ : grid_boxes_).push_back(i);
     }
-    const CellRange r = cells_of(boxes[i]);
-    ranges_[i] = r;
-    const bool large = r.x1 - r.x0 >= kMaxCellsPerSide || r.y1 - r.y0 >= kMaxCellsPerSide;
-    (large ? large_ : grid_boxes_).push_back(i);
   }
+}
+
+BroadPhase::BoxClass BroadPhase::classify_box(const std::vector<Aabb>& boxes, std::size_t i)
+{
+  if (!is_usable(boxes[i]))
+  {
+    return BoxClass::Unusable;
+  }
+  const CellRange r = cells_of(boxes[i]);
+  ranges_[i] = r;
+  const bool large = r.x1 - r.x0 >= kMaxCellsPerSide || r.y1 - r.y0 >= kMaxCellsPerSide;
+  return large ? BoxClass::Large : BoxClass::Grid;
 }
 
 bool BroadPhase::owns(std::int32_t cx, std::int32_t cy, std::size_t a, std::size_t b) const

@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "collision2d/broad_phase.h"
+#include "broad_phase_parts.h"
 
 namespace collision2d
 {
@@ -79,13 +80,15 @@ std::size_t BroadPhase::choose_layout(std::size_t entry_count)
   return bucket_count;
 }
 
-void BroadPhase::fill_grid()
+void BroadPhase::fill_grid(RangeRunner* runner)
 {
   std::size_t entry_count = 0;
   occupied_ = {0, 0, -1, -1};
+  first_entry_.resize(grid_boxes_.size());
   for (std::size_t k = 0; k < grid_boxes_.size(); ++k)
   {
     const CellRange& r = ranges_[grid_boxes_[k]];
+    first_entry_[k] = entry_count;
     entry_count += static_cast<std::size_t>(area(r.x0, r.y0, r.x1, r.y1));
     occupied_ = k == 0 ? r
                        : CellRange{std::min(occupied_.x0, r.x0), std::min(occupied_.y0, r.y0),
@@ -93,9 +96,16 @@ void BroadPhase::fill_grid()
   }
   const std::size_t bucket_count = choose_layout(entry_count);
   bucket_start_.assign(bucket_count + 1, 0);
+  entry_bucket_.resize(entry_count);
+  entries_.resize(entry_count);
+  const std::size_t parts = detail::runner_parts(runner, entry_count);
+  if (parts > 1)
+  {
+    fill_grid_in_parts(*runner, parts, bucket_count);
+    return;
+  }
   // Each entry's bucket is hashed once, while counting, and read back in
   // the same order while scattering.
-  entry_bucket_.resize(entry_count);
   std::size_t e = 0;
   for (std::size_t box : grid_boxes_)
   {
@@ -116,7 +126,6 @@ void BroadPhase::fill_grid()
     end += start;
     start = end;  // one past the bucket's end, decremented while scattering
   }
-  entries_.resize(entry_count);
   e = 0;
   for (std::size_t box : grid_boxes_)
   {
@@ -131,9 +140,99 @@ void BroadPhase::fill_grid()
   }
 }
 
-void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
+void BroadPhase::fill_grid_in_parts(RangeRunner& runner, std::size_t parts, std::size_t bucket_count)
 {
-  for (std::size_t b = 0; b + 1 < bucket_start_.size(); ++b)
+  // A bucket fills from its end in entry order, so a part's entries go below
+  // those of the parts before it: the entries land where one pass puts them.
+  part_count_.assign(parts * bucket_count, 0);
+  detail::run_parts(runner, parts, [&](std::size_t part) { count_entries(part, parts, bucket_count); });
+  std::size_t end = 0;
+  for (std::size_t b = 0; b < bucket_count; ++b)
+  {
+    std::size_t total = 0;
+    for (std::size_t part = 0; part < parts; ++part)
+    {
+      total += part_count_[part * bucket_count + b];
+    }
+    end += total;
+    std::size_t cursor = end;
+    for (std::size_t part = 0; part < parts; ++part)
+    {
+      const std::size_t count = part_count_[part * bucket_count + b];
+      part_count_[part * bucket_count + b] = cursor;
+      cursor -= count;
+    }
+    bucket_start_[b] = end - total;
+  }
+  bucket_start_[bucket_count] = end;
+  detail::run_parts(runner, parts, [&](std::size_t part) { scatter_entries(part, parts, bucket_count); });
+}
+
+void BroadPhase::count_entries(std::size_t part, std::size_t parts, std::size_t bucket_count)
+{
+  std::size_t* count = part_count_.data() + part * bucket_count;
+  const std::size_t n = grid_boxes_.size();
+  for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+  {
+    const CellRange& r = ranges_[grid_boxes_[k]];
+    std::size_t e = first_entry_[k];
+    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
+    {
+      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
+      {
+        const std::size_t bucket = bucket_of(cx, cy);
+        entry_bucket_[e++] = bucket;
+        ++count[bucket];
+      }
+    }
+  }
+}
+
+void BroadPhase::scatter_entries(std::size_t part, std::size_t parts, std::size_t bucket_count)
+{
+  std::size_t* cursor = part_count_.data() + part * bucket_count;
+  const std::size_t n = grid_boxes_.size();
+  for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+  {
+    const std::size_t box = grid_boxes_[k];
+    const CellRange& r = ranges_[box];
+    std::size_t e = first_entry_[k];
+    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
+    {
+      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
+      {
+        entries_[--cursor[entry_bucket_[e++]]] = Entry{cx, cy, box};
+      }
+    }
+  }
+}
+
+void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
+{
+  // Each bucket is searched (and its entries sorted) by one part only.
+  const std::size_t buckets = bucket_start_.size() - 1;
+  const std::size_t parts = detail::runner_parts(runner, entries_.size());
+  if (parts == 1)
+  {
+    pairs_in_buckets(boxes, 0, buckets, pairs);
+    return;
+  }
+  part_pairs_.resize(parts);
+  detail::run_parts(*runner, parts, [&](std::size_t part) {
+    std::vector<BodyPair>& found = part_pairs_[part];
+    found.clear();
+    pairs_in_buckets(boxes, buckets * part / parts, buckets * (part + 1) / parts, found);
+  });
+  for (const std::vector<BodyPair>& found : part_pairs_)
+  {
+    pairs.insert(pairs.end(), found.begin(), found.end());
+  }
+}
+
+void BroadPhase::pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
+                                  std::vector<BodyPair>& pairs)
+{
+  for (std::size_t b = begin; b < end; ++b)
   {
     if (bucket_start_[b + 1] - bucket_start_[b] > 1)
     {

@@ -17,6 +17,9 @@ namespace
 /// touches at most six others, so greedy colouring needs far fewer.
 constexpr std::size_t kMaxColours = 24;
 constexpr std::size_t kBitsPerWord = 64;
+/// Row manifolds (lanes) below which filling or emptying the batches stays on
+/// the calling thread: a lane is a few dozen copies.
+constexpr std::size_t kMinSharedLanes = 512;
 
 struct ScalarOps
 {
@@ -81,7 +84,8 @@ std::size_t SoftRows::take_colour(std::size_t a, std::size_t b)
   return colour;
 }
 
-void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction)
+void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+                    WorkerPool& workers)
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
@@ -96,7 +100,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   overflow_.clear();
   coloured_ = 0;
   // First pass: colour every manifold; rows are counted, then placed.
-  row_colour_.clear();
+  row_slots_.clear();
   for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
   {
     const ContactPoint& p = points[k];
@@ -113,8 +117,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     ++coloured_;
     if (row_manifold(p))
     {
-      row_colour_.emplace_back(k, colour);
-      ++colours_[colour].lanes;
+      row_slots_.push_back(RowSlot{k, colour, colours_[colour].lanes++});
     }
     else
     {
@@ -122,21 +125,23 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     }
   }
   // Second pass: each colour's rows in whole batches, the last one padded.
+  // Every lane has its own slot, so the workers can fill them in any split.
   std::size_t batches = 0;
   for (RowColour& c : colours_)
   {
     c.begin = batches;
     batches += (c.lanes + kRowLanes - 1) / kRowLanes;
     c.end = batches;
-    c.lanes = 0;  // counts again as the rows are placed
   }
   rows_.resize(batches);
-  for (const auto& [first, colour] : row_colour_)
-  {
-    RowColour& c = colours_[colour];
-    const std::size_t slot = c.lanes++;
-    fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, first, friction);
-  }
+  workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r)
+    {
+      const RowSlot& row = row_slots_[r];
+      const std::size_t batch = colours_[row.colour].begin + row.slot / kRowLanes;
+      fill_lane(rows_[batch], static_cast<int>(row.slot % kRowLanes), points, row.first, friction);
+    }
+  });
   for (const RowColour& c : colours_)
   {
     for (std::size_t slot = c.lanes; slot < (c.end - c.begin) * kRowLanes; ++slot)
@@ -243,26 +248,35 @@ void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocit
              [&](RowBatch& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); });
 }
 
-void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const
+void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity,
+                      WorkerPool& workers) const
 {
   velocity.pop_back();
-  for (const RowBatch& r : rows_)
-  {
-    for (int j = 0; j < kRowLanes; ++j)
+  // Each lane writes only its own manifold's points.
+  workers.parallel_for(rows_.size(), kMinSharedLanes / kRowLanes, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b)
     {
-      if (r.first[j] == SIZE_MAX)
-      {
-        continue;
-      }
-      for (int k = 0; k < 2; ++k)
-      {
-        ContactPoint& c = points[r.first[j] + k];
-        const RowPoint& q = r.point[k];
-        c.lambda_n = q.normal[j];
-        c.lambda_t = q.tangent[j];
-        c.frame_impulse = q.frame[j];
-        c.sliding = q.sliding[j] != 0.0;
-      }
+      unpack_batch(rows_[b], points);
+    }
+  });
+}
+
+void SoftRows::unpack_batch(const RowBatch& r, std::vector<ContactPoint>& points)
+{
+  for (int j = 0; j < kRowLanes; ++j)
+  {
+    if (r.first[j] == SIZE_MAX)
+    {
+      continue;
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      ContactPoint& c = points[r.first[j] + k];
+      const RowPoint& q = r.point[k];
+      c.lambda_n = q.normal[j];
+      c.lambda_t = q.tangent[j];
+      c.frame_impulse = q.frame[j];
+      c.sliding = q.sliding[j] != 0.0;
     }
   }
 }

@@ -9,10 +9,10 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 #include "contact_kernel.h"
+#include "worker_pool.h"
 
 namespace collision2d
 {
@@ -74,9 +74,11 @@ struct RowColour
 class SoftRows
 {
 public:
-  /// Colours and packs this frame's active points (prepared, soft terms set).
+  /// Colours and packs this frame's active points (prepared, soft terms set);
+  /// the colouring runs in point order, the lanes are filled by the workers.
   /// `velocity` gains one spare body at its end for the padding lanes.
-  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction);
+  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+            WorkerPool& workers);
   std::size_t colour_count() const { return colours_.size(); }
   const std::vector<std::size_t>& others(std::size_t colour) const { return colours_[colour].others; }
   const std::vector<std::size_t>& overflow() const { return overflow_; }
@@ -87,8 +89,9 @@ public:
                        std::size_t parts = 1);
   void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
                   std::size_t parts = 1);
-  /// The rows' impulses and friction state back into their points; drops the spare body.
-  void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity) const;
+  /// The rows' impulses and friction state back into their points, batches
+  /// shared among the workers; drops the spare body.
+  void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, WorkerPool& workers) const;
 
 private:
   /// The first colour free of bodies a and b (SIZE_MAX: one that cannot
@@ -96,12 +99,20 @@ private:
   std::size_t take_colour(std::size_t a, std::size_t b);
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
+  static void unpack_batch(const RowBatch& batch, std::vector<ContactPoint>& points);
 
   std::vector<RowBatch> rows_;
   std::vector<RowColour> colours_;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
   std::vector<std::uint64_t> used_;      ///< per colour, a bit per body it moves
-  std::vector<std::pair<std::size_t, std::size_t>> row_colour_;  ///< scratch: (first point, colour) of each row
+  /// Where a row manifold goes: its colour and its place among the colour's rows.
+  struct RowSlot
+  {
+    std::size_t first = 0;  ///< the manifold's first point
+    std::size_t colour = 0;
+    std::size_t slot = 0;
+  };
+  std::vector<RowSlot> row_slots_;  ///< scratch, in point order
   std::size_t words_ = 0;
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body

@@ -33,7 +33,7 @@ void WorkerPool::resize(int workers)
   threads_.reserve(threads);
   for (std::size_t t = 0; t < threads; ++t)
   {
-    threads_.emplace_back(&WorkerPool::serve, this, t + 1, generation_);
+    threads_.emplace_back(&WorkerPool::serve, this, t + 1, generation_.load());
   }
 }
 
@@ -56,6 +56,10 @@ namespace
 /// Spins between yields at a sync(): long enough to catch a worker that is
 /// a few microseconds behind, short enough not to starve a busy machine.
 constexpr int kSpinsBeforeYield = 64;
+/// Yields before a thread waiting for a job (or for the workers to finish
+/// one) sleeps: the step's stages follow each other closely, and waking a
+/// sleeping thread costs more than a short wait.
+constexpr int kYieldsBeforeSleep = 32;
 
 void pause()
 {
@@ -64,6 +68,27 @@ void pause()
 #endif
 }
 }  // namespace
+
+template <class Done>
+bool WorkerPool::spin_until(Done done)
+{
+  for (int spins = 0; spins < kSpinsBeforeYield + kYieldsBeforeSleep; ++spins)
+  {
+    if (done())
+    {
+      return true;
+    }
+    if (spins < kSpinsBeforeYield)
+    {
+      pause();
+    }
+    else
+    {
+      std::this_thread::yield();
+    }
+  }
+  return false;
+}
 
 void WorkerPool::sync()
 {
@@ -111,29 +136,36 @@ void WorkerPool::run(std::size_t count, Job job, void* context)
     job_ = job;
     context_ = context;
     count_ = count;
-    pending_ = threads_.size();
-    ++generation_;
+    pending_.store(threads_.size(), std::memory_order_relaxed);
+    generation_.fetch_add(1, std::memory_order_release);
   }
   start_.notify_all();
   std::size_t begin = 0;
   std::size_t end = 0;
   range(0, begin, end);
   job(context, begin, end);
-  std::unique_lock<std::mutex> lock(mutex_);
-  done_.wait(lock, [this] { return pending_ == 0; });
+  const auto finished = [this] { return pending_.load(std::memory_order_acquire) == 0; };
+  if (!spin_until(finished))
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, finished);
+  }
 }
 
 void WorkerPool::serve(std::size_t index, std::size_t seen)
 {
   for (;;)
   {
+    // A new job is seen without the lock first; the lock is then taken only
+    // to read it (and to sleep when none comes soon).
+    spin_until([&] { return generation_.load(std::memory_order_acquire) != seen; });
     std::unique_lock<std::mutex> lock(mutex_);
-    start_.wait(lock, [&] { return quitting_ || generation_ != seen; });
+    start_.wait(lock, [&] { return quitting_ || generation_.load(std::memory_order_relaxed) != seen; });
     if (quitting_)
     {
       return;
     }
-    seen = generation_;
+    seen = generation_.load(std::memory_order_relaxed);
     std::size_t begin = 0;
     std::size_t end = 0;
     range(index, begin, end);
@@ -141,9 +173,10 @@ void WorkerPool::serve(std::size_t index, std::size_t seen)
     void* const context = context_;
     lock.unlock();
     job(context, begin, end);
-    lock.lock();
-    if (--pending_ == 0)
+    if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1)
     {
+      // Under the lock, so a caller about to sleep cannot miss it.
+      std::lock_guard<std::mutex> done_lock(mutex_);
       done_.notify_one();
     }
   }

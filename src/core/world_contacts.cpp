@@ -1,5 +1,5 @@
-// Detection for the substep (broad then narrow phase on fresh boxes), the
-// warm-start cache keyed by (body ids, feature), and the published contacts.
+// Detection for the substep (broad then narrow phase on fresh boxes) and the
+// published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
 
 #include "collision2d/collide.h"
@@ -20,11 +20,6 @@ constexpr Vec2 kCoincidentNormal{0.0, 1.0};
 bool coincident_disks(const Body& a, const Body& b)
 {
   return a.shape() == Shape::Disk && b.shape() == Shape::Disk && a.position() == b.position();
-}
-
-bool pair_less(const WorldContact& c, BodyId a, BodyId b)
-{
-  return c.a < a || (c.a == a && c.b < b);
 }
 
 }  // namespace
@@ -55,22 +50,23 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 {
   const std::size_t n = bodies_.size();
   boxes_.resize(n);
-  reach_.assign(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    // The soft step collides once per frame, so a pair that the frame's
-    // motion can close gets its contact now: the margin grows by how far
-    // each body can travel in the frame.
-    reach_[i] = margin > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
-    boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
-  }
-  broad_phase_.find_pairs(boxes_, pairs_);
+  reach_.resize(n);
+  workers_.parallel_for(n, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      // The soft step collides once per frame, so a pair that the frame's
+      // motion can close gets its contact now: the margin grows by how far
+      // each body can travel in the frame.
+      reach_[i] = margin > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
+      boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
+    }
+  });
+  broad_phase_.find_pairs(boxes_, pairs_, workers_);
   pose_bodies();
-  points_.clear();
   // The narrow phase of the pairs with a moving body, split across the
-  // workers (each writes its own pairs' slots); then, in pair order, the
-  // points with their cached impulses, so the result is the same for any
-  // number of workers.
+  // workers (each writes its own pairs' slots); then, in pair order, what
+  // each pair adds and where; then the points, split across the workers
+  // again. The result is the same for any number of workers.
   margin_ = margin;
   manifolds_.resize(pairs_.size());
   collided_.resize(pairs_.size());
@@ -78,33 +74,21 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
   const double warm_scale = ctx.warm ? ctx.h / cache_h_ : 0.0;
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
+  const bool friction = ctx.effects.friction;
+  const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
+  if (rows > points_.capacity())
   {
-    const std::size_t i = pairs_[k].first;
-    const std::size_t j = pairs_[k].second;
-    if (!dynamic_pair(i, j))
-    {
-      continue;
-    }
-    if (!is_mover(i) && !is_mover(j))
-    {
-      carry_sleeping_pair(i, j);
-      continue;
-    }
-    // A pair whose body woke up earlier in this loop was not collided yet.
-    if (collided_[k] == Collided::NotTried)
-    {
-      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k], true) ? Collided::Hit : Collided::Miss;
-    }
-    if (collided_[k] == Collided::Hit)
-    {
-      add_manifold(i, j, manifolds_[k], warm_scale, ctx.effects.friction);
-    }
+    points_.reserve(2 * rows);  // geometric: a count that creeps up allocates rarely
   }
-  for (const ContactPoint& row : points_)
-  {
-    report.max_detected_penetration = std::max(report.max_detected_penetration, row.penetration);
-  }
+  points_.resize(rows);
+  workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      fill_pair_rows(k, warm_scale, friction);
+    }
+  });
+  report.max_detected_penetration = max_over(points_.size(), kMinSharedPoints, report.max_detected_penetration,
+                                             [this](std::size_t k) { return points_[k].penetration; });
 }
 
 void WorldImpl::pose_bodies()
@@ -187,106 +171,22 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
   return std::max(margin_ + reach_[i] + reach_[j], touching);
 }
 
-void WorldImpl::add_manifold(std::size_t i, std::size_t j, const Manifold& m, double warm_scale, bool friction)
-{
-  // A moving body reached a sleeping one: its island takes part again.
-  if (asleep_[i] || asleep_[j])
-  {
-    wake(asleep_[i] ? i : j);
-  }
-  for (int k = 0; k < m.count; ++k)
-  {
-    ContactPoint& row = points_.emplace_back();
-    row.a = i;
-    row.b = j;
-    row.normal = m.normal;
-    row.point = m.points[k].point;
-    row.penetration = m.points[k].penetration;
-    row.separation = m.points[k].separation;
-    row.feature = m.points[k].feature;
-    row.count = m.count;
-    const WorldContact* cached = warm_scale > 0.0 || friction ? find_cached(ids_[i], ids_[j], row.feature) : nullptr;
-    if (cached != nullptr)
-    {
-      row.lambda_n = warm_scale * cached->impulse.normal;
-      row.lambda_t = warm_scale * cached->impulse.tangent;
-      row.kinetic = friction && cached->sliding;
-      row.anchor_drift = cached->anchor_drift;
-    }
-  }
-}
-
-void WorldImpl::carry_sleeping_pair(std::size_t i, std::size_t j)
-{
-  // Nothing moves in a sleeping island, so its contacts and impulses stay
-  // what they were when it fell asleep; they are kept (unsolved) so the
-  // island stays one island and wakes with its impulses intact.
-  const BodyId a = ids_[i];
-  const BodyId b = ids_[j];
-  for (auto it = cache_.begin() + cached_pair(a, b); it != cache_.end() && it->a == a && it->b == b; ++it)
-  {
-    ContactPoint row;
-    row.a = i;
-    row.b = j;
-    row.normal = it->contact.normal;
-    row.point = it->contact.point;
-    row.penetration = it->contact.penetration;
-    row.feature = it->contact.feature;
-    row.active = false;
-    row.lambda_n = it->impulse.normal;
-    row.lambda_t = it->impulse.tangent;
-    row.sliding = it->sliding;
-    points_.push_back(row);
-  }
-}
-
-std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const
-{
-  // The cache is in (a, b) order because contacts are published in broad-phase
-  // pair order and dense indices follow ids; detection asks in that order too,
-  // so the cursor only moves forward (a search covers any other order).
-  if (cache_cursor_ > cache_.size() || (cache_cursor_ > 0 && !pair_less(cache_[cache_cursor_ - 1], a, b)))
-  {
-    const auto found = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
-                                        [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
-                                          return pair_less(c, key.first, key.second);
-                                        });
-    cache_cursor_ = static_cast<std::size_t>(found - cache_.begin());
-    return cache_cursor_;
-  }
-  while (cache_cursor_ < cache_.size() && pair_less(cache_[cache_cursor_], a, b))
-  {
-    ++cache_cursor_;
-  }
-  return cache_cursor_;
-}
-
-const WorldContact* WorldImpl::find_cached(BodyId a, BodyId b, std::uint32_t feature) const
-{
-  for (auto it = cache_.begin() + cached_pair(a, b); it != cache_.end() && it->a == a && it->b == b; ++it)
-  {
-    if (it->contact.feature == feature)
-    {
-      return &*it;
-    }
-  }
-  return nullptr;
-}
-
 void WorldImpl::publish_contacts()
 {
   contacts_.resize(points_.size());
-  for (std::size_t k = 0; k < points_.size(); ++k)
-  {
-    const ContactPoint& row = points_[k];
-    WorldContact& c = contacts_[k];
-    c.a = ids_[row.a];
-    c.b = ids_[row.b];
-    c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
-    c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
-    c.sliding = row.sliding;
-    c.anchor_drift = row.anchor_drift;
-  }
+  workers_.parallel_for(points_.size(), kMinSharedPoints, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      const ContactPoint& row = points_[k];
+      WorldContact& c = contacts_[k];
+      c.a = ids_[row.a];
+      c.b = ids_[row.b];
+      c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
+      c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
+      c.sliding = row.sliding;
+      c.anchor_drift = row.anchor_drift;
+    }
+  });
 }
 
 double WorldImpl::measure_penetration() const

@@ -20,77 +20,77 @@ double friction_of(const Material& m) { return std::max(m.static_friction, m.kin
 
 }  // namespace
 
-bool WorldImpl::any_pair_with(double (*property)(const Material&)) const
+void BodyCensus::add(const BodyCensus& other)
 {
-  // Pairs combine by min, so a pair shows the property only when both bodies
-  // have it; a pair matters only when at least one of them is dynamic.
-  std::size_t with_property = 0;
-  bool dynamic_with_property = false;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    if (property(materials_[i]) > 0.0)
-    {
-      ++with_property;
-      dynamic_with_property = dynamic_with_property || bodies_[i].type() == BodyType::Dynamic;
-    }
-  }
-  return dynamic_with_property && with_property >= 2;
+  dynamic += other.dynamic;
+  rough += other.rough;
+  dynamic_rough += other.dynamic_rough;
+  bouncy += other.bouncy;
+  dynamic_bouncy += other.dynamic_bouncy;
+  turning += other.turning;
 }
 
-bool WorldImpl::needs_rotation(bool friction) const
+BodyCensus WorldImpl::take_census()
 {
+  // Counts only, so the parts' sums are the one-pass ones.
+  const std::size_t parts = bodies_.size() < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
+  census_parts_.assign(parts, BodyCensus{});
+  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t part = begin; part < end; ++part)
+    {
+      const std::size_t n = bodies_.size();
+      for (std::size_t i = n * part / parts; i < n * (part + 1) / parts; ++i)
+      {
+        count_body(i, census_parts_[part]);
+      }
+    }
+  });
+  BodyCensus census;
+  for (const BodyCensus& part : census_parts_)
+  {
+    census.add(part);
+  }
+  return census;
+}
+
+void WorldImpl::count_body(std::size_t i, BodyCensus& census) const
+{
+  const Body& b = bodies_[i];
+  const bool dynamic = b.type() == BodyType::Dynamic;
+  const bool rough = friction_of(materials_[i]) > 0.0;
+  const bool bouncy = restitution_of(materials_[i]) > 0.0;
+  census.dynamic += dynamic ? 1 : 0;
+  census.rough += rough ? 1 : 0;
+  census.dynamic_rough += rough && dynamic ? 1 : 0;
+  census.bouncy += bouncy ? 1 : 0;
+  census.dynamic_bouncy += bouncy && dynamic ? 1 : 0;
   // Frictionless contact impulses on a disk act along a line through its
   // centre, so disks only turn under friction or with a spin of their own;
   // a polygon's impulses act off its centroid.
-  if (friction)
-  {
-    return true;
-  }
-  for (const Body& b : bodies_)
-  {
-    if (b.type() == BodyType::Dynamic && (b.shape() == Shape::Polygon || b.omega() != 0.0))
-    {
-      return true;
-    }
-  }
-  return false;
+  census.turning += dynamic && (b.shape() == Shape::Polygon || b.omega() != 0.0) ? 1 : 0;
 }
 
-bool WorldImpl::sleeping_wanted() const
-{
-  // Without gravity a slow body is drifting, not resting on anything:
-  // freezing it would change the motion (and take energy from a gas).
-  if (settings_.gravity.x == 0.0 && settings_.gravity.y == 0.0)
-  {
-    return false;
-  }
-  std::size_t dynamic = 0;
-  for (const Body& b : bodies_)
-  {
-    dynamic += b.type() == BodyType::Dynamic ? 1 : 0;
-  }
-  return dynamic >= settings_.sleep_auto_min_bodies;
-}
-
-StepContext WorldImpl::select_effects() const
+StepContext WorldImpl::select_effects()
 {
   const WorldSettings& s = settings_;
-  bool dynamic = false;
-  for (const Body& b : bodies_)
-  {
-    dynamic = dynamic || b.type() == BodyType::Dynamic;
-  }
-  const bool contacts_possible = dynamic && bodies_.size() >= 2;
+  const BodyCensus census = take_census();
+  const bool contacts_possible = census.dynamic > 0 && bodies_.size() >= 2;
+  // Pairs combine materials by min, so a pair shows a property only when
+  // both bodies have it; a pair matters only when one of them is dynamic.
+  const bool rough_pair = census.dynamic_rough > 0 && census.rough >= 2;
+  const bool bouncy_pair = census.dynamic_bouncy > 0 && census.bouncy >= 2;
   StepContext e;
-  e.effects.friction = resolve(s.friction, any_pair_with(friction_of));
-  e.effects.rotation = resolve(s.rotation, needs_rotation(e.effects.friction));
-  e.effects.restitution = resolve(s.restitution, any_pair_with(restitution_of));
+  e.effects.friction = resolve(s.friction, rough_pair);
+  e.effects.rotation = resolve(s.rotation, e.effects.friction || census.turning > 0);
+  e.effects.restitution = resolve(s.restitution, bouncy_pair);
   e.effects.position_correction = resolve(s.position_correction, contacts_possible);
   // Without gravity (or another steady load) contacts do not persist from
   // frame to frame, and last frame's impulses would only disturb new impacts.
   const bool steady_load = s.gravity.x != 0.0 || s.gravity.y != 0.0;
   e.effects.warm_starting = resolve(s.warm_starting, contacts_possible && steady_load);
-  e.effects.sleeping = resolve(s.sleeping, sleeping_wanted());
+  // Without gravity a slow body is drifting, not resting on anything:
+  // freezing it would change the motion (and take energy from a gas).
+  e.effects.sleeping = resolve(s.sleeping, steady_load && census.dynamic >= s.sleep_auto_min_bodies);
   // Time of impact is decided per substep from the bodies' speeds (world_toi.cpp).
   e.effects.time_of_impact = false;
   // The last substep's contacts become the first substep's cache (world_step.cpp).

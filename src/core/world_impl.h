@@ -3,6 +3,7 @@
 // one topic.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -34,6 +35,27 @@ struct StepContext
 
 /// One soft pass's parameters (world_soft_solve.cpp).
 struct SoftPass;
+
+/// Bodies below which a per-body stage stays on the calling thread: each
+/// body's update is a few operations, less than waking the workers costs.
+constexpr std::size_t kMinSharedBodies = 2048;
+/// Contact points below which a per-point stage stays on the calling thread.
+constexpr std::size_t kMinSharedPoints = 1024;
+/// Broad-phase pairs below which filling their contact rows stays on the
+/// calling thread.
+constexpr std::size_t kMinSharedPairs = 1024;
+
+/// What select_effects needs to know of the bodies (world_effects.cpp).
+struct BodyCensus
+{
+  std::size_t dynamic = 0;
+  std::size_t rough = 0;           ///< bodies with friction
+  std::size_t dynamic_rough = 0;
+  std::size_t bouncy = 0;          ///< bodies with restitution
+  std::size_t dynamic_bouncy = 0;
+  std::size_t turning = 0;         ///< dynamic polygons and spinning dynamic bodies
+  void add(const BodyCensus& other);
+};
 
 /// Each body's pose and velocity, what a failed step puts back.
 struct BodyMotion
@@ -67,10 +89,12 @@ struct WorldImpl
   void substep(StepContext& ctx, StepReport& report);
   void kick(const StepContext& ctx);
   void advance(StepContext& ctx, StepReport& report);
+  /// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
+  void advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
-  void finish_report(StepReport& report) const;
+  void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.
-  void require_finite_state() const;
+  void require_finite_state();
   /// Keeps aside what a step of `frames` frames changes.
   void save_motion(int frames);
   void restore_motion();
@@ -78,9 +102,56 @@ struct WorldImpl
   /// keeps both buffers' capacity.
   void swap_contact_buffers();
 
+  // Sharing a stage among the workers (worker_pool.h): results are the same
+  // for any number of them.
+  /// Calls f(begin, end) over the contact points split across the workers
+  /// at body-pair boundaries, so each manifold's points stay on one worker.
+  template <class F>
+  void for_point_ranges(F f)
+  {
+    workers_.parallel_for(points_.size(), kMinSharedPoints,
+                          [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
+  }
+  /// The fold best = std::max(best, value(k)) over k in [0, count) from
+  /// `start`, in parts on the workers when count >= min_shared. std::max keeps
+  /// the earlier of equal values and skips a NaN value, so the parts' results
+  /// folded in order give the one-thread bits.
+  template <class F>
+  double max_over(std::size_t count, std::size_t min_shared, double start, F value)
+  {
+    const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
+    partial_max_.resize(parts);
+    workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t w = begin; w < end; ++w)
+      {
+        double best = start;
+        for (std::size_t k = count * w / parts; k < count * (w + 1) / parts; ++k)
+        {
+          best = std::max(best, value(k));
+        }
+        partial_max_[w] = best;
+      }
+    });
+    double best = start;
+    for (double part : partial_max_)
+    {
+      best = std::max(best, part);
+    }
+    return best;
+  }
+  /// The first point at or after k that starts a new body pair (or the end).
+  std::size_t pair_boundary(std::size_t k) const;
+
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
   void prepare_soft_points(const StepContext& ctx);
+  /// prepare_soft_points' per-point work on points [begin, end) (whole pairs).
+  void prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
+  /// Each body's pose at prepare and no pose change yet.
+  void reset_body_motion(std::size_t begin, std::size_t end);
+  /// After advance_bodies: a stopped body held, a free one on its parabola,
+  /// and the pose change its contacts follow.
+  void follow_bodies(std::size_t begin, std::size_t end, const StepContext& ctx);
   void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   /// The soft passes, or in exact mode each island's LCP (the passes then
@@ -108,13 +179,13 @@ struct WorldImpl
   void restitution_pass(StepReport& report);
   /// The deepest overlap of the frame's contact points at the poses now,
   /// followed from the pose changes since they were prepared (m).
-  double followed_penetration() const;
+  double followed_penetration();
 
   // world_effects.cpp
-  StepContext select_effects() const;
-  bool needs_rotation(bool friction) const;
-  bool any_pair_with(double (*property)(const Material&)) const;
-  bool sleeping_wanted() const;
+  StepContext select_effects();
+  /// The bodies counted for select_effects, in parts on the workers.
+  BodyCensus take_census();
+  void count_body(std::size_t i, BodyCensus& census) const;
 
   // world_warm_integration.cpp
   void predict_velocities(const StepContext& ctx);
@@ -149,11 +220,27 @@ struct WorldImpl
   bool dynamic_pair(std::size_t i, std::size_t j) const;
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
-  void add_manifold(std::size_t i, std::size_t j, const Manifold& m, double warm_scale, bool friction);
-  void carry_sleeping_pair(std::size_t i, std::size_t j);
+  /// Each pair's first row (pair_rows_) and cache entry (pair_cache_), as one
+  /// pass in pair order finds them (with wakes and late collisions); returns
+  /// the rows in all. `cached`: whether hit pairs look up their cached impulses.
+  std::size_t place_pair_rows(bool cached);
+  /// place_pair_rows in parts on the workers; false (nothing placed) unless
+  /// every body is awake and the cache in pair order.
+  bool place_awake_pairs(bool cached);
+  void place_awake_part(std::size_t part, std::size_t parts, bool cached);
+  void place_pairs_in_order(bool cached);
+  /// The cached contacts of pair (a, b) from cache_[first] on.
+  std::size_t carried_rows(std::size_t first, BodyId a, BodyId b) const;
+  /// Pair k's rows, where place_pair_rows put them (a WorkerPool range's item).
+  void fill_pair_rows(std::size_t k, double warm_scale, bool friction);
+  void add_manifold(std::size_t k, double warm_scale, bool friction);
+  void carry_sleeping_pair(std::size_t k);
   /// Index of the first cached contact of pair (a, b), or of where it would be.
   std::size_t cached_pair(BodyId a, BodyId b) const;
-  const WorldContact* find_cached(BodyId a, BodyId b, std::uint32_t feature) const;
+  /// ... from `cursor`, which it moves (cached_pair uses cache_cursor_).
+  std::size_t cached_pair(std::size_t& cursor, BodyId a, BodyId b) const;
+  /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
+  const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
   void publish_contacts();
   double measure_penetration() const;
 
@@ -161,6 +248,8 @@ struct WorldImpl
   void load_velocities();
   void store_velocities();
   void prepare_points(const ActiveEffects& effects);
+  /// prepare_points on points [begin, end) (whole pairs).
+  void prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end);
   void warm_start();
   void solve_velocities(bool friction);
   double velocity_residual() const;
@@ -229,7 +318,8 @@ struct WorldImpl
   {
     NotTried,
     Miss,
-    Hit
+    Hit,
+    Carried  ///< a sleeping pair: its cached contacts are kept
   };
   std::vector<Manifold> manifolds_;
   std::vector<Collided> collided_;
@@ -237,9 +327,22 @@ struct WorldImpl
   /// in posed_vertices_ (2 vertex_count() entries).
   std::vector<std::size_t> posed_offset_;
   std::vector<Vec2> posed_vertices_;
+  std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
+  std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in cache_
+  std::vector<double> partial_max_;      ///< max_over's result of each part
+  /// What one part of place_awake_pairs found.
+  struct PairPlacement
+  {
+    bool cache_in_order = true;  ///< its share of the cache is in (a, b) order
+    bool looked_up = false;      ///< it looked a pair up in the cache ...
+    std::size_t last_lookup = 0; ///< ... and its last lookup's answer
+  };
+  std::vector<PairPlacement> placements_;
+  std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
+  std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
-  std::vector<bool> swept_;           ///< bodies swept this substep
+  std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact this substep
   std::vector<ContactPoint> points_;  ///< this substep's contact points
@@ -247,7 +350,9 @@ struct WorldImpl
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
   std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared
   std::vector<double> prepared_theta_;
-  std::vector<bool> stopped_;            ///< soft step: stopped at its time of impact this frame
+  /// soft step: stopped at its time of impact this frame (bytes, not bits:
+  /// the workers set their own bodies' flags at once)
+  std::vector<unsigned char> stopped_;
   std::vector<bool> touching_;           ///< soft step: has a contact point this frame
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours

@@ -17,6 +17,7 @@
 // out rigidly at the soft rate; the relax adds normal impulses only.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "world_impl.h"
 
@@ -56,7 +57,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   prepare_soft_points(ctx);
   if (rows_on())
   {
-    soft_rows_.pack(points_, velocity_, ctx.effects.friction);  // soft_rows.cpp
+    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
   }
   // 3. Substeps.
   for (int k = 0; k < settings_.substeps; ++k)
@@ -70,7 +71,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
   if (rows_on())
   {
-    soft_rows_.unpack(points_, velocity_);
+    soft_rows_.unpack(points_, velocity_, workers_);
   }
   restitution_pass(report);
   update_anchors();
@@ -85,8 +86,32 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
-  for (ContactPoint& p : points_)
+  for_point_ranges([&](std::size_t begin, std::size_t end) { prepare_soft_range(moving, fixed, begin, end); });
+  stopped_.assign(bodies_.size(), false);
+  touching_.assign(bodies_.size(), false);
+  // The frame's active points are those of the pairs that hit (detect()),
+  // so the short pair list says which bodies they touch.
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
+    if (collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k])
+    {
+      touching_[pairs_[k].first] = true;
+      touching_[pairs_[k].second] = true;
+    }
+  }
+  held_position_.resize(bodies_.size());
+  held_theta_.resize(bodies_.size());
+  prepared_position_.resize(bodies_.size());
+  prepared_theta_.resize(bodies_.size());
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies,
+                        [this](std::size_t begin, std::size_t end) { reset_body_motion(begin, end); });
+}
+
+void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end)
+{
+  for (std::size_t k = begin; k < end; ++k)
+  {
+    ContactPoint& p = points_[k];
     if (!p.active)
     {
       continue;
@@ -99,7 +124,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
     p.softness = both_move ? moving : fixed;
   }
   // A manifold's normal block is the same all frame (lever arms are fixed).
-  for (std::size_t k = 0; k + 1 < points_.size(); ++k)
+  for (std::size_t k = begin; k + 1 < end; ++k)
   {
     ContactPoint& p = points_[k];
     if (p.active && p.count == 2)
@@ -109,28 +134,16 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
       ++k;
     }
   }
-  for (BodyVelocity& body : velocity_)
+}
+
+void WorldImpl::reset_body_motion(std::size_t begin, std::size_t end)
+{
+  for (std::size_t i = begin; i < end; ++i)
   {
+    BodyVelocity& body = velocity_[i];
     body.moved = Vec2{0.0, 0.0};
     body.turned_cos = 1.0;
     body.turned_sin = 0.0;
-  }
-  stopped_.assign(bodies_.size(), false);
-  touching_.assign(bodies_.size(), false);
-  for (const ContactPoint& p : points_)
-  {
-    if (p.active)
-    {
-      touching_[p.a] = true;
-      touching_[p.b] = true;
-    }
-  }
-  held_position_.resize(bodies_.size());
-  held_theta_.resize(bodies_.size());
-  prepared_position_.resize(bodies_.size());
-  prepared_theta_.resize(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
     prepared_position_[i] = bodies_[i].position();
     prepared_theta_[i] = bodies_[i].theta();
   }
@@ -161,17 +174,19 @@ void WorldImpl::integrate_velocities(const StepContext& ctx)
 {
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
   const double max_spin = kMaxTurnPerSubstep * ctx.inv_h;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
     {
-      velocity_[i].v = velocity_[i].v + gravity_kick;
-      if (touching_[i])
+      if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
       {
-        velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
+        velocity_[i].v = velocity_[i].v + gravity_kick;
+        if (touching_[i])
+        {
+          velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
+        }
       }
     }
-  }
+  });
 }
 
 void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report)
@@ -204,24 +219,37 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
 
 void WorldImpl::update_anchors()
 {
-  for (ContactPoint& p : points_)
-  {
-    if (p.active)
+  workers_.parallel_for(points_.size(), kMinSharedPoints, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+      ContactPoint& p = points_[k];
+      if (p.active)
+      {
+        p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+      }
     }
-  }
+  });
 }
 
 void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
 {
-  // advance() moves the bodies with their velocities and sweeps fast ones
-  // for time of impact (world_step.cpp, world_toi.cpp). A body stopped at its
-  // time of impact stays there for the rest of the frame, velocity kept: no
+  // As advance() (world_step.cpp): fast bodies swept for time of impact
+  // (world_toi.cpp, on one thread: it pairs bodies), then every body moved
+  // with its velocity, shared among the workers. A body stopped at its time
+  // of impact stays there for the rest of the frame, velocity kept: no
   // contact stops it before the next frame's collide finds the touching pair.
   store_velocities();
-  advance(ctx, report);
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  const bool swept = sweep(ctx.h, report);                // world_toi.cpp
+  ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    advance_bodies(begin, end, ctx, swept);               // world_step.cpp
+    follow_bodies(begin, end, ctx);
+  });
+}
+
+void WorldImpl::follow_bodies(std::size_t begin, std::size_t end, const StepContext& ctx)
+{
+  for (std::size_t i = begin; i < end; ++i)
   {
     Body& b = bodies_[i];
     if (stopped_[i])
@@ -253,23 +281,23 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   }
 }
 
-double WorldImpl::followed_penetration() const
+double WorldImpl::followed_penetration()
 {
-  double deepest = 0.0;
-  for (const ContactPoint& p : points_)
-  {
-    deepest = p.active ? std::max(deepest, -current_separation(p, velocity_)) : deepest;
-  }
-  return deepest;
+  // An inactive point's -infinity leaves the deepest as it is.
+  return max_over(points_.size(), kMinSharedPoints, 0.0, [this](std::size_t k) {
+    const ContactPoint& p = points_[k];
+    return p.active ? -current_separation(p, velocity_) : -std::numeric_limits<double>::infinity();
+  });
 }
 
 void WorldImpl::restitution_pass(StepReport& report)
 {
-  double fastest = 0.0;
-  for (const ContactPoint& p : points_)
-  {
-    fastest = std::max(fastest, p.active ? p.target : 0.0);
-  }
+  // The scan for a bouncing contact is shared; the passes are Gauss-Seidel
+  // in point order and stay on one thread.
+  const double fastest = max_over(points_.size(), kMinSharedPoints, 0.0, [this](std::size_t k) {
+    const ContactPoint& p = points_[k];
+    return p.active ? p.target : 0.0;
+  });
   if (fastest == 0.0)
   {
     return;

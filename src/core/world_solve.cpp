@@ -13,31 +13,43 @@ namespace detail
 void WorldImpl::load_velocities()
 {
   velocity_.resize(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    const Body& b = bodies_[i];
-    velocity_[i] = body_velocity(b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
-  }
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      const Body& b = bodies_[i];
+      velocity_[i] = body_velocity(b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
+    }
+  });
 }
 
 void WorldImpl::store_velocities()
 {
   // Impulses never change a static or kinematic body (its points carry zero
   // inverse mass), so only dynamic bodies are written back.
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    if (bodies_[i].type() == BodyType::Dynamic)
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
     {
-      bodies_[i].set_velocity(velocity_[i].v);
-      bodies_[i].set_omega(velocity_[i].omega);
+      if (bodies_[i].type() == BodyType::Dynamic)
+      {
+        bodies_[i].set_velocity(velocity_[i].v);
+        bodies_[i].set_omega(velocity_[i].omega);
+      }
     }
-  }
+  });
 }
 
 void WorldImpl::prepare_points(const ActiveEffects& effects)
 {
-  for (ContactPoint& p : points_)
+  // Each point reads only its bodies and writes only itself; a manifold's
+  // pair terms read its two points, kept on one worker.
+  for_point_ranges([&](std::size_t begin, std::size_t end) { prepare_point_range(effects, begin, end); });
+}
+
+void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end)
+{
+  for (std::size_t k = begin; k < end; ++k)
   {
+    ContactPoint& p = points_[k];
     if (!p.active)
     {
       continue;
@@ -62,7 +74,7 @@ void WorldImpl::prepare_points(const ActiveEffects& effects)
     const double e = effects.restitution ? std::min(ma.restitution, mb.restitution) : 0.0;
     prepare_point(p, velocity_, e, settings_.restitution_threshold);
   }
-  for (std::size_t k = 0; k + 1 < points_.size(); ++k)
+  for (std::size_t k = begin; k + 1 < end; ++k)
   {
     if (points_[k].active && points_[k].count == 2)
     {
@@ -70,6 +82,15 @@ void WorldImpl::prepare_points(const ActiveEffects& effects)
       ++k;
     }
   }
+}
+
+std::size_t WorldImpl::pair_boundary(std::size_t k) const
+{
+  while (k > 0 && k < points_.size() && points_[k].a == points_[k - 1].a && points_[k].b == points_[k - 1].b)
+  {
+    ++k;
+  }
+  return k;
 }
 
 void WorldImpl::warm_start()

@@ -156,7 +156,12 @@ void WorldImpl::advance(StepContext& ctx, StepReport& report)
 {
   const bool swept = sweep(ctx.h, report);                // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  advance_bodies(0, bodies_.size(), ctx, swept);
+}
+
+void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept)
+{
+  for (std::size_t i = begin; i < end; ++i)
   {
     Body& b = bodies_[i];
     if (b.type() == BodyType::Static || asleep_[i])
@@ -193,7 +198,7 @@ void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
   }
 }
 
-void WorldImpl::finish_report(StepReport& report) const
+void WorldImpl::finish_report(StepReport& report)
 {
   // The soft step follows its contacts' gaps from the poses; the Fx2D step,
   // whose correction is linearised, measures them again.
@@ -208,11 +213,25 @@ void WorldImpl::finish_report(StepReport& report) const
   }
 }
 
-void WorldImpl::require_finite_state() const
+void WorldImpl::require_finite_state()
 {
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  // Each part finds its first bad body; the first part's that has one is the
+  // first of all.
+  const std::size_t parts = bodies_.size() < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
+  first_bad_.assign(parts, bodies_.size());
+  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t part = begin; part < end; ++part)
+    {
+      const std::size_t n = bodies_.size();
+      for (std::size_t i = n * part / parts; i < n * (part + 1) / parts && first_bad_[part] == n; ++i)
+      {
+        first_bad_[part] = non_finite_state_field(bodies_[i]) == nullptr ? n : i;
+      }
+    }
+  });
+  for (std::size_t i : first_bad_)
   {
-    if (non_finite_state_field(bodies_[i]) == nullptr)
+    if (i == bodies_.size())
     {
       continue;
     }
@@ -226,15 +245,20 @@ void WorldImpl::require_finite_state() const
 namespace
 {
 /// Copies `from` into `to`, growing `to` geometrically: a plain assignment
-/// allocates the exact size, so a count that creeps up would allocate each time.
+/// allocates the exact size, so a count that creeps up would allocate each
+/// time. The workers copy a long list in parts.
 template <typename T>
-void keep_copy(const std::vector<T>& from, std::vector<T>& to)
+void keep_copy(const std::vector<T>& from, std::vector<T>& to, WorkerPool& workers)
 {
   if (to.capacity() < from.size())
   {
     to.reserve(2 * from.size());
   }
-  to.assign(from.begin(), from.end());
+  to.resize(from.size());
+  workers.parallel_for(from.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
+    std::copy(from.begin() + static_cast<std::ptrdiff_t>(begin), from.begin() + static_cast<std::ptrdiff_t>(end),
+              to.begin() + static_cast<std::ptrdiff_t>(begin));
+  });
 }
 }  // namespace
 
@@ -249,11 +273,13 @@ void WorldImpl::save_motion(int frames)
   // Only what a step changes is kept aside (no outlines, no scratch), in
   // buffers that keep their capacity from step to step.
   saved_motion_.resize(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    const Body& b = bodies_[i];
-    saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
-  }
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      const Body& b = bodies_[i];
+      saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
+    }
+  });
   // A step that swaps the contact buffers once leaves the contacts it started
   // from untouched in cache_ (detection only reads it): no copy is needed.
   const int swaps = frames * (settings_.soft_step ? 1 : settings_.substeps);
@@ -261,17 +287,17 @@ void WorldImpl::save_motion(int frames)
   contact_swaps_ = 0;
   if (!contacts_in_cache_)
   {
-    keep_copy(contacts_, saved_contacts_);
+    keep_copy(contacts_, saved_contacts_, workers_);
   }
   saved_asleep_ = asleep_;
-  keep_copy(rest_time_, saved_rest_time_);
+  keep_copy(rest_time_, saved_rest_time_, workers_);
   saved_time_ = time_;
   saved_frame_count_ = frame_count_;
   saved_cache_h_ = cache_h_;
   // A prediction reads the previous substep's points (world_warm_integration.cpp).
   if (settings_.warm_start_before_integration)
   {
-    keep_copy(points_, saved_points_);
+    keep_copy(points_, saved_points_, workers_);
   }
 }
 

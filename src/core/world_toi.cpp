@@ -77,21 +77,18 @@ bool WorldImpl::is_fast(std::size_t i, Vec2 displacement) const
 bool WorldImpl::mark_swept_bodies(double h)
 {
   const Toggle mode = settings_.time_of_impact;
-  swept_.assign(bodies_.size(), false);
-  bool any = false;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    const Body& b = bodies_[i];
-    if (b.type() != BodyType::Dynamic || asleep_[i])
+  swept_.resize(bodies_.size());
+  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
     {
-      continue;
+      const Body& b = bodies_[i];
+      const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
+      const bool moving = d.x != 0.0 || d.y != 0.0;
+      const bool awake = b.type() == BodyType::Dynamic && !asleep_[i];
+      swept_[i] = awake && (mode == Toggle::On ? moving : is_fast(i, d));
     }
-    const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
-    const bool moving = d.x != 0.0 || d.y != 0.0;
-    swept_[i] = mode == Toggle::On ? moving : is_fast(i, d);
-    any = any || swept_[i];
-  }
-  return any;
+  });
+  return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
 }
 
 bool WorldImpl::sweep(double h, StepReport& report)

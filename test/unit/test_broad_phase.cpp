@@ -61,6 +61,37 @@ void expect_sorted_unique_ordered(const std::vector<BodyPair>& pairs)
   }
 }
 
+/// Runs a job's items one at a time, last first, on the calling thread: a
+/// runner whose parts finish in another order than the items'.
+class ReversedRunner : public RangeRunner
+{
+public:
+  int workers() const override { return 3; }
+  void run(std::size_t count, Job job, void* context) override
+  {
+    for (std::size_t k = count; k > 0; --k)
+    {
+      job(context, k - 1, k);
+    }
+  }
+};
+
+TEST(BroadPhase, ARunnerFindsTheSamePairs)
+{
+  // Enough boxes that the runner's parts search the grid.
+  const std::vector<Aabb> boxes = boxes_of(test::random_scene(11, 6000, {150.0, 150.0}));
+  BroadPhase alone;
+  BroadPhase shared;
+  ReversedRunner runner;
+  std::vector<BodyPair> want;
+  std::vector<BodyPair> pairs;
+  alone.find_pairs(boxes, want);
+  shared.find_pairs(boxes, pairs, runner);
+  EXPECT_GT(want.size(), 1000u) << "scene too sparse to test anything";
+  EXPECT_EQ(pairs, want);
+  EXPECT_EQ(want, brute_force(boxes));
+}
+
 TEST(BroadPhase, MatchesBruteForceOnRandomScenes)
 {
   BroadPhase broad_phase;

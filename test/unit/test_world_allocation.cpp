@@ -67,6 +67,23 @@ Scene sleeping_pyramid()
   return scene;
 }
 
+/// Large enough that two workers share every stage they can take.
+Scene shared_pyramid()
+{
+  Scene scene = scenes::pyramid(65);
+  scene.settings.workers = 2;
+  return scene;
+}
+
+/// The Fx2D step detects every substep: a smaller pyramid (its contact
+/// points are still shared, its bodies not) keeps the test short.
+Scene shared_small_pyramid()
+{
+  Scene scene = scenes::pyramid(46);
+  scene.settings.workers = 2;
+  return scene;
+}
+
 const AllocationCase kCases[] = {
     {"pyramid_soft_step", [] { return scenes::pyramid(20); }, true},
     {"pyramid_fx2d", [] { return scenes::pyramid(20); }, false},
@@ -75,6 +92,8 @@ const AllocationCase kCases[] = {
     {"gas_fx2d", [] { return scenes::elastic_gas(300); }, false},
     {"demo_soft_step", [] { return scenes::demo(); }, true},
     {"bullet_soft_step", [] { return scenes::bullet_wall(); }, true},
+    {"shared_pyramid_soft_step", shared_pyramid, true},
+    {"shared_pyramid_fx2d", shared_small_pyramid, false},
 };
 
 INSTANTIATE_TEST_SUITE_P(Scenes, WorldAllocation, ::testing::ValuesIn(kCases),

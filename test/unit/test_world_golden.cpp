@@ -278,13 +278,30 @@ TEST(WorldGoldenRuns, WorkersDoNotChangeTrajectories)
 
 TEST(WorldGoldenRuns, SharedSoftPassesDoNotChangeTrajectories)
 {
-  // A pyramid large enough that the workers share every colour of the soft
-  // passes (and the narrow phase): every bit must match one worker's run.
-  const auto scene = [] { return scenes::pyramid(40); };
+  // Scenes large enough that the workers share every colour of the soft
+  // passes, the narrow phase, the contact rows and the per-point and
+  // per-body stages (the gas also sweeps fast disks; the sleeping pyramid
+  // carries its contacts once asleep): every bit must match one worker's run.
+  const auto sleeping = [] {
+    Scene scene = scenes::pyramid(30);
+    scene.settings.sleeping = Toggle::On;
+    scene.settings.sleep_time = 0.1;
+    return scene;
+  };
+  const std::pair<std::function<Scene()>, int> kRuns[] = {{[] { return scenes::pyramid(40); }, 20},
+                                                          {[] { return scenes::pyramid(70); }, 20},
+                                                          {[] { return scenes::elastic_gas(3000); }, 20},
+                                                          {sleeping, 60}};
   const auto with = [](int workers) { return [workers](WorldSettings& s) { s.workers = workers; }; };
-  const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), 20);
-  EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), 20), one);
-  EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), 20), one);
+  for (const auto& [scene, frames] : kRuns)
+  {
+    const std::uint64_t one = run_hash(scene(), Pipeline::Soft, with(1), frames);
+    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(2), frames), one);
+    EXPECT_EQ(run_hash(scene(), Pipeline::Soft, with(4), frames), one);
+  }
+  // The Fx2D step shares detection, prepare and the velocity copies too.
+  const std::uint64_t one = run_hash(scenes::pyramid(70), Pipeline::Fx2d, with(1), 10);
+  EXPECT_EQ(run_hash(scenes::pyramid(70), Pipeline::Fx2d, with(2), 10), one);
 }
 
 TEST(WorldGoldenRuns, WideRowsMatchTheScalarPath)

@@ -1,0 +1,48 @@
+// Internal to the core: how the broad phase shares a pass among the parts of
+// a RangeRunner (broad_phase.h). Each part writes only its own items' slots
+// or its own list, so the pairs are the same for any runner.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+
+#include "collision2d/broad_phase.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// Boxes or grid entries below which a pass stays in one part: too little
+/// work to pay for waking the runner's threads.
+constexpr std::size_t kMinSharedBroadItems = 4096;
+
+/// How many parts a pass over `count` items takes (1: not shared).
+inline std::size_t runner_parts(const RangeRunner* runner, std::size_t count)
+{
+  if (runner == nullptr || count < kMinSharedBroadItems)
+  {
+    return 1;
+  }
+  return static_cast<std::size_t>(std::max(runner->workers(), 1));
+}
+
+/// Part `part` of `parts` of [0, n): its first item.
+inline std::size_t part_begin(std::size_t n, std::size_t part, std::size_t parts) { return n * part / parts; }
+
+/// Calls f(part) for every part in [0, parts) on the runner's threads.
+template <class F>
+void run_parts(RangeRunner& runner, std::size_t parts, F f)
+{
+  runner.run(
+      parts,
+      [](void* context, std::size_t begin, std::size_t end) {
+        for (std::size_t part = begin; part < end; ++part)
+        {
+          (*static_cast<F*>(context))(part);
+        }
+      },
+      &f);
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,257 @@
+// The contact rows of a detection (world_contacts.cpp finds the pairs and
+// their manifolds): where each pair's rows go, found in pair order, then the
+// rows filled by the workers, each with its impulses matched from the
+// previous frame's contacts (the cache, keyed by body ids and feature).
+#include <algorithm>
+
+#include "world_impl.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+bool pair_less(const WorldContact& c, BodyId a, BodyId b)
+{
+  return c.a < a || (c.a == a && c.b < b);
+}
+
+}  // namespace
+
+std::size_t WorldImpl::place_pair_rows(bool cached)
+{
+  pair_rows_.resize(pairs_.size() + 1);
+  pair_cache_.resize(pairs_.size());
+  const bool shared = workers_.workers() > 1 && pairs_.size() >= kMinSharedPairs;
+  if (!shared || !place_awake_pairs(cached))
+  {
+    place_pairs_in_order(cached);
+  }
+  return pair_rows_[pairs_.size()];
+}
+
+bool WorldImpl::place_awake_pairs(bool cached)
+{
+  // With every body awake no pair wakes one or is carried, and a cache in
+  // pair order gives each lookup the same answer from any cursor: the pairs
+  // are placed in parts, each with its own cursor. Otherwise nothing is kept.
+  if (std::find(asleep_.begin(), asleep_.end(), true) != asleep_.end())
+  {
+    return false;
+  }
+  const std::size_t parts = static_cast<std::size_t>(workers_.workers());
+  placements_.resize(parts);
+  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t part = begin; part < end; ++part)
+    {
+      place_awake_part(part, parts, cached);
+    }
+  });
+  for (const PairPlacement& placed : placements_)
+  {
+    if (!placed.cache_in_order)
+    {
+      return false;
+    }
+  }
+  std::size_t rows = 0;
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+  {
+    const std::size_t count = pair_rows_[k];
+    pair_rows_[k] = rows;
+    rows += count;
+  }
+  pair_rows_[pairs_.size()] = rows;
+  // The cursor ends where one pass leaves it: at the last lookup.
+  for (auto placed = placements_.rbegin(); placed != placements_.rend(); ++placed)
+  {
+    if (placed->looked_up)
+    {
+      cache_cursor_ = placed->last_lookup;
+      break;
+    }
+  }
+  return true;
+}
+
+void WorldImpl::place_awake_part(std::size_t part, std::size_t parts, bool cached)
+{
+  PairPlacement& placed = placements_[part];
+  placed = PairPlacement{};
+  const std::size_t c = cache_.size();
+  for (std::size_t m = std::max<std::size_t>(1, c * part / parts); m < c * (part + 1) / parts; ++m)
+  {
+    placed.cache_in_order = placed.cache_in_order && !pair_less(cache_[m], cache_[m - 1].a, cache_[m - 1].b);
+  }
+  std::size_t cursor = c + 1;  // the first lookup searches
+  const std::size_t n = pairs_.size();
+  for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+  {
+    // Awake, every pair with a dynamic body was collided (collide_range).
+    const int count = collided_[k] == Collided::Hit ? manifolds_[k].count : 0;
+    pair_rows_[k] = static_cast<std::size_t>(count);
+    pair_cache_[k] = c;
+    if (cached && count > 0)
+    {
+      pair_cache_[k] = cached_pair(cursor, ids_[pairs_[k].first], ids_[pairs_[k].second]);
+      placed.looked_up = true;
+      placed.last_lookup = pair_cache_[k];
+    }
+  }
+}
+
+void WorldImpl::place_pairs_in_order(bool cached)
+{
+  // In pair order: a body woken here makes later pairs with it movers, and
+  // the cache cursor walks forward.
+  std::size_t rows = 0;
+  for (std::size_t k = 0; k < pairs_.size(); ++k)
+  {
+    pair_rows_[k] = rows;
+    const std::size_t i = pairs_[k].first;
+    const std::size_t j = pairs_[k].second;
+    if (!dynamic_pair(i, j))
+    {
+      continue;
+    }
+    if (!is_mover(i) && !is_mover(j))
+    {
+      collided_[k] = Collided::Carried;
+      pair_cache_[k] = cached_pair(ids_[i], ids_[j]);
+      rows += carried_rows(pair_cache_[k], ids_[i], ids_[j]);
+      continue;
+    }
+    // A pair whose body woke up earlier in this loop was not collided yet.
+    if (collided_[k] == Collided::NotTried)
+    {
+      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k], true) ? Collided::Hit : Collided::Miss;
+    }
+    if (collided_[k] != Collided::Hit)
+    {
+      continue;
+    }
+    // A moving body reached a sleeping one: its island takes part again.
+    if (asleep_[i] || asleep_[j])
+    {
+      wake(asleep_[i] ? i : j);
+    }
+    const int count = manifolds_[k].count;
+    pair_cache_[k] = cached && count > 0 ? cached_pair(ids_[i], ids_[j]) : cache_.size();
+    rows += static_cast<std::size_t>(count);
+  }
+  pair_rows_[pairs_.size()] = rows;
+}
+
+std::size_t WorldImpl::carried_rows(std::size_t first, BodyId a, BodyId b) const
+{
+  std::size_t end = first;
+  while (end < cache_.size() && cache_[end].a == a && cache_[end].b == b)
+  {
+    ++end;
+  }
+  return end - first;
+}
+
+void WorldImpl::fill_pair_rows(std::size_t k, double warm_scale, bool friction)
+{
+  if (collided_[k] == Collided::Hit)
+  {
+    add_manifold(k, warm_scale, friction);
+  }
+  else if (collided_[k] == Collided::Carried)
+  {
+    carry_sleeping_pair(k);
+  }
+}
+
+void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
+{
+  const std::size_t i = pairs_[k].first;
+  const std::size_t j = pairs_[k].second;
+  const Manifold& m = manifolds_[k];
+  for (int c = 0; c < m.count; ++c)
+  {
+    ContactPoint& row = points_[pair_rows_[k] + static_cast<std::size_t>(c)];
+    row = ContactPoint{};
+    row.a = i;
+    row.b = j;
+    row.normal = m.normal;
+    row.point = m.points[c].point;
+    row.penetration = m.points[c].penetration;
+    row.separation = m.points[c].separation;
+    row.feature = m.points[c].feature;
+    row.count = m.count;
+    const WorldContact* cached =
+        warm_scale > 0.0 || friction ? find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature) : nullptr;
+    if (cached != nullptr)
+    {
+      row.lambda_n = warm_scale * cached->impulse.normal;
+      row.lambda_t = warm_scale * cached->impulse.tangent;
+      row.kinetic = friction && cached->sliding;
+      row.anchor_drift = cached->anchor_drift;
+    }
+  }
+}
+
+void WorldImpl::carry_sleeping_pair(std::size_t k)
+{
+  // Nothing moves in a sleeping island, so its contacts and impulses stay
+  // what they were when it fell asleep; they are kept (unsolved) so the
+  // island stays one island and wakes with its impulses intact.
+  const std::size_t first = pair_cache_[k];
+  for (std::size_t r = pair_rows_[k]; r < pair_rows_[k + 1]; ++r)
+  {
+    const WorldContact& cached = cache_[first + (r - pair_rows_[k])];
+    ContactPoint& row = points_[r];
+    row = ContactPoint{};
+    row.a = pairs_[k].first;
+    row.b = pairs_[k].second;
+    row.normal = cached.contact.normal;
+    row.point = cached.contact.point;
+    row.penetration = cached.contact.penetration;
+    row.feature = cached.contact.feature;
+    row.active = false;
+    row.lambda_n = cached.impulse.normal;
+    row.lambda_t = cached.impulse.tangent;
+    row.sliding = cached.sliding;
+  }
+}
+
+std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const { return cached_pair(cache_cursor_, a, b); }
+
+std::size_t WorldImpl::cached_pair(std::size_t& cursor, BodyId a, BodyId b) const
+{
+  // The cache is in (a, b) order because contacts are published in broad-phase
+  // pair order and dense indices follow ids; detection asks in that order too,
+  // so the cursor only moves forward (a search covers any other order).
+  if (cursor > cache_.size() || (cursor > 0 && !pair_less(cache_[cursor - 1], a, b)))
+  {
+    const auto found = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
+                                        [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
+                                          return pair_less(c, key.first, key.second);
+                                        });
+    cursor = static_cast<std::size_t>(found - cache_.begin());
+    return cursor;
+  }
+  while (cursor < cache_.size() && pair_less(cache_[cursor], a, b))
+  {
+    ++cursor;
+  }
+  return cursor;
+}
+
+const WorldContact* WorldImpl::find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const
+{
+  for (auto it = cache_.begin() + first; it != cache_.end() && it->a == a && it->b == b; ++it)
+  {
+    if (it->contact.feature == feature)
+    {
+      return &*it;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -32,8 +32,8 @@ using namespace collision2d::bench;
 constexpr int kWarmupFrames = 3;          // first frames build caches and scratch
 constexpr int kRainWarmupFrames = 60;     // 1 s: the rain's lowest rows land and pile first
 constexpr int kRestingWarmupFrames = 600; // 10 s: a settled pyramid has fallen asleep in either engine
-constexpr double kFrameBudget = 2e4;      // body-frames per repetition: ~constant work per size
-constexpr int kMinFrames = 3;
+constexpr double kFrameBudget = 1e5;      // body-frames per repetition: ~constant work per size
+constexpr int kMinFrames = 5;
 constexpr int kMaxFrames = 120;
 constexpr int kDefaultRepetitions = 5;
 

@@ -30,74 +30,19 @@
 #include <utility>
 #include <vector>
 
+#include "collide_features.h"
 #include "posed_polygon.h"
 
 namespace collision2d
 {
+using detail::add_point;
+using detail::FeatureKind;
+using detail::pack_feature;
 using detail::PosedPolygon;
+using detail::within_reach;
 
 namespace
 {
-constexpr std::uint32_t kIndexMask = 0xFFFu;
-constexpr int kReferenceShift = 12;
-constexpr int kSlotShift = 24;
-constexpr int kSecondIsReferenceShift = 25;
-constexpr int kKindShift = 26;
-
-enum class FeatureKind : std::uint32_t
-{
-  DiskDisk = 0,
-  PolygonFaceDisk = 1,
-  PolygonVertexDisk = 2,
-  PolygonPolygon = 3
-};
-
-/// The second polygon's face becomes the reference only when it is better by
-/// more than this fraction of the first one's separation plus this fraction of
-/// the pair's size (m/m). A box resting on a box has two equally good faces;
-/// a slight tilt must not swap them, or the contact's features change and
-/// warm starting (which matches by feature) starts the contact cold.
-constexpr double kReferenceRelative = 1e-3;
-constexpr double kReferenceHysteresis = 2e-3;
-
-std::uint32_t pack_feature(FeatureKind kind, bool second_is_reference, std::size_t reference,
-                           std::size_t incident, int slot)
-{
-  return (static_cast<std::uint32_t>(kind) << kKindShift) |
-         (static_cast<std::uint32_t>(second_is_reference) << kSecondIsReferenceShift) |
-         (static_cast<std::uint32_t>(slot) << kSlotShift) |
-         ((static_cast<std::uint32_t>(reference) & kIndexMask) << kReferenceShift) |
-         (static_cast<std::uint32_t>(incident) & kIndexMask);
-}
-
-/// Body::world_vertex and Body::world_face_normal with the same arithmetic,
-/// but visible to the compiler here (pose_polygon calls them per vertex).
-Vec2 world_vertex_of(const Body& b, std::size_t i)
-{
-  return b.position() + rotate(b.local_vertices()[i], b.cos_theta(), b.sin_theta());
-}
-
-Vec2 world_normal_of(const Body& b, std::size_t i)
-{
-  return rotate(b.local_face_normals()[i], b.cos_theta(), b.sin_theta());
-}
-
-/// Strict overlap without a tolerance (exact touching is not a contact);
-/// with one, gaps up to the tolerance count.
-bool within_reach(double depth, double touch_tolerance)
-{
-  return touch_tolerance > 0.0 ? depth >= -touch_tolerance : depth > -touch_tolerance;
-}
-
-void add_point(Manifold& m, Vec2 point, double depth, std::uint32_t feature)
-{
-  ManifoldPoint& p = m.points[m.count++];
-  p.point = point;
-  p.penetration = std::max(0.0, depth);
-  p.separation = -depth;
-  p.feature = feature;
-}
-
 bool disk_disk(const Body& a, const Body& b, Manifold& m, double touch_tolerance)
 {
   const Vec2 d = b.position() - a.position();
@@ -202,167 +147,6 @@ bool polygon_disk(const Body& polygon, const Body& disk, Manifold& m, double tou
   return true;
 }
 
-struct FaceQuery
-{
-  double separation = -std::numeric_limits<double>::infinity();
-  std::size_t face = 0;
-};
-
-/// Largest over the reference's faces of the smallest signed distance of the
-/// other polygon's vertices to that face plane (SAT on the reference normals).
-FaceQuery max_face_separation(const PosedPolygon& reference, const Body& other)
-{
-  FaceQuery best;
-  const auto& other_vertices = other.local_vertices();
-  for (std::size_t i = 0; i < reference.body->vertex_count(); ++i)
-  {
-    const Vec2 n = reference.normals[i];
-    // Work in the other body's frame: one rotation per face, not per vertex.
-    const Vec2 n_other = rotate_inv(n, other.cos_theta(), other.sin_theta());
-    const double offset = dot(n, other.position() - reference.vertices[i]);
-    double deepest = std::numeric_limits<double>::infinity();
-    for (const Vec2& v : other_vertices)
-    {
-      deepest = std::min(deepest, dot(n_other, v));
-    }
-    if (deepest + offset > best.separation)
-    {
-      best = {deepest + offset, i};
-    }
-  }
-  return best;
-}
-
-/// Edge of `polygon` whose normal is most anti-parallel to world normal n.
-std::size_t incident_edge(const Body& polygon, Vec2 n)
-{
-  const Vec2 n_local = rotate_inv(n, polygon.cos_theta(), polygon.sin_theta());
-  const auto& normals = polygon.local_face_normals();
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < normals.size(); ++k)
-  {
-    if (dot(normals[k], n_local) < dot(normals[best], n_local))
-    {
-      best = k;
-    }
-  }
-  return best;
-}
-
-struct ClipPoint
-{
-  Vec2 point;
-  int slot = 0;
-};
-
-/// Keeps the part of the segment (or single point) `in` with
-/// dot(dir, x) <= limit; a clipped end is replaced by the crossing point and
-/// keeps its slot. Returns the number of points left.
-int clip_segment(const ClipPoint in[2], int in_count, Vec2 dir, double limit, ClipPoint out[2])
-{
-  double d[2] = {0.0, 0.0};
-  int count = 0;
-  for (int i = 0; i < in_count; ++i)
-  {
-    d[i] = dot(dir, in[i].point) - limit;
-    if (d[i] <= 0.0)
-    {
-      out[count++] = in[i];
-    }
-  }
-  if (in_count == 2 && d[0] * d[1] < 0.0)
-  {
-    const Vec2 crossing = in[0].point + (d[0] / (d[0] - d[1])) * (in[1].point - in[0].point);
-    out[count++] = {crossing, d[0] > 0.0 ? in[0].slot : in[1].slot};
-  }
-  return count;
-}
-
-/// Incident edge of `incident` clipped to the side planes of reference face
-/// `face`; points within reach go into m (normal = reference face normal).
-void clip_incident_edge(const PosedPolygon& reference, std::size_t face, const PosedPolygon& incident,
-                        bool second_is_reference, double touch_tolerance, Manifold& m)
-{
-  const Vec2 n = reference.normals[face];
-  const Vec2 tangent = perp(n);  // along the counter-clockwise reference face
-  const Vec2 r1 = reference.vertices[face];
-  const Vec2 r2 = reference.vertices[(face + 1) % reference.body->vertex_count()];
-  const std::size_t edge = incident_edge(*incident.body, n);
-  const ClipPoint segment[2] = {{incident.vertices[edge], 0},
-                                {incident.vertices[(edge + 1) % incident.body->vertex_count()], 1}};
-  ClipPoint after_first[2];
-  ClipPoint clipped[2];
-  const int first_count = clip_segment(segment, 2, -tangent, -dot(tangent, r1), after_first);
-  const int count = clip_segment(after_first, first_count, tangent, dot(tangent, r2), clipped);
-  // Slot order keeps the two records of a manifold in a stable order.
-  if (count == 2 && clipped[0].slot > clipped[1].slot)
-  {
-    std::swap(clipped[0], clipped[1]);
-  }
-  m.normal = n;
-  for (int i = 0; i < count; ++i)
-  {
-    const ClipPoint& p = clipped[i];
-    const double depth = -dot(n, p.point - r1);
-    if (within_reach(depth, touch_tolerance))
-    {
-      add_point(m, p.point + n * (0.5 * depth), depth,
-                pack_feature(FeatureKind::PolygonPolygon, second_is_reference, face, edge, p.slot));
-    }
-  }
-}
-
-/// Last resort when clipping keeps no point although SAT found an overlap
-/// (the incident edge ends at or beyond a side plane of the reference face): the incident polygon's
-/// deepest vertex against the reference face, at the SAT depth.
-void deepest_vertex_point(const PosedPolygon& reference, std::size_t face, const PosedPolygon& incident,
-                          bool second_is_reference, double separation, Manifold& m)
-{
-  const Vec2 n = reference.normals[face];
-  const Vec2 r1 = reference.vertices[face];
-  std::size_t deepest = 0;
-  for (std::size_t j = 1; j < incident.body->vertex_count(); ++j)
-  {
-    if (dot(n, incident.vertices[j] - r1) < dot(n, incident.vertices[deepest] - r1))
-    {
-      deepest = j;
-    }
-  }
-  m.normal = n;
-  add_point(m, incident.vertices[deepest] - n * (0.5 * separation), -separation,
-            pack_feature(FeatureKind::PolygonPolygon, second_is_reference, face, deepest, 0));
-}
-
-bool polygon_polygon(const PosedPolygon& a, const PosedPolygon& b, Manifold& m, double touch_tolerance)
-{
-  const FaceQuery query_a = max_face_separation(a, *b.body);
-  if (!within_reach(-query_a.separation, touch_tolerance))
-  {
-    return false;
-  }
-  const FaceQuery query_b = max_face_separation(b, *a.body);
-  if (!within_reach(-query_b.separation, touch_tolerance))
-  {
-    return false;
-  }
-  const double bias =
-      kReferenceRelative * std::abs(query_a.separation) + kReferenceHysteresis * (a.body->radius() + b.body->radius());
-  const bool b_is_reference = query_b.separation > query_a.separation + bias;
-  const PosedPolygon& reference = b_is_reference ? b : a;
-  const PosedPolygon& incident = b_is_reference ? a : b;
-  const FaceQuery& query = b_is_reference ? query_b : query_a;
-  clip_incident_edge(reference, query.face, incident, b_is_reference, touch_tolerance, m);
-  if (m.count == 0)
-  {
-    deepest_vertex_point(reference, query.face, incident, b_is_reference, query.separation, m);
-  }
-  if (b_is_reference)
-  {
-    m.normal = -m.normal;  // reference normal points from b to a
-  }
-  return true;
-}
-
 /// Room for a polygon's posed outline: on the stack up to kStackVertices
 /// vertices (the narrow phase allocates nothing for common shapes).
 class PoseBuffer
@@ -421,15 +205,6 @@ bool collide(const Body& a, const Body& b, Manifold& m, double touch_tolerance)
 
 namespace detail
 {
-void pose_polygon(const Body& polygon, Vec2* vertices, Vec2* normals)
-{
-  for (std::size_t i = 0; i < polygon.vertex_count(); ++i)
-  {
-    vertices[i] = world_vertex_of(polygon, i);
-    normals[i] = world_normal_of(polygon, i);
-  }
-}
-
 bool collide_posed(const PosedPolygon& a, const PosedPolygon& b, Manifold& m, double touch_tolerance)
 {
   m.count = 0;

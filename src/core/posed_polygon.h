@@ -23,6 +23,9 @@ struct PosedPolygon
 /// each) with the arithmetic collide() uses, so results are the same bits.
 void pose_polygon(const Body& polygon, Vec2* vertices, Vec2* normals);
 
+/// collide() for two posed polygons (collide_polygons.cpp).
+bool polygon_polygon(const PosedPolygon& a, const PosedPolygon& b, Manifold& m, double touch_tolerance);
+
 /// collide() for two bodies whose polygons are given posed at their current
 /// poses (a disk's PosedPolygon has null outlines).
 bool collide_posed(const PosedPolygon& a, const PosedPolygon& b, Manifold& m, double touch_tolerance);

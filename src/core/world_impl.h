@@ -279,6 +279,11 @@ struct WorldImpl
   bool replay_rest_frame(StepReport& report);
   /// After a frame: remembers it when it started and ended at rest.
   void note_frame(bool started_at_rest, const StepReport& frame);
+  /// A whole step of replayed frames: nothing to keep aside, check or
+  /// measure again (the closing figures are those of the rest state).
+  bool replay_rest_step(int frames, StepReport& report);
+  /// After a step: its closing figures, when it ends at the remembered rest.
+  void note_finish(const StepReport& report);
   /// A frame's report folded into the step's.
   static void add_frame(StepReport& total, const StepReport& frame);
   /// Any edit through the World API: a remembered rest frame no longer holds.
@@ -293,6 +298,9 @@ struct WorldImpl
   bool rest_known_ = false;    ///< the last frame started and ended at rest at rest_version_
   std::uint64_t rest_version_ = 0;
   StepReport rest_frame_;      ///< that frame's own report
+  bool rest_finish_known_ = false;  ///< rest_finish_ holds for the rest state at rest_finish_version_
+  std::uint64_t rest_finish_version_ = 0;
+  StepReport rest_finish_;     ///< finish_report's figures at rest
   std::vector<WorldContact> contacts_;
   double time_ = 0.0;
   std::uint64_t frame_count_ = 0;

@@ -39,8 +39,12 @@ StepReport WorldImpl::step(int frames)
     throw std::invalid_argument(msg.str());
   }
   workers_.resize(settings_.workers);
-  save_motion(frames);
   StepReport report;
+  if (replay_rest_step(frames, report))                   // world_rest.cpp
+  {
+    return report;
+  }
+  save_motion(frames);
   try
   {
     for (int f = 0; f < frames; ++f)
@@ -55,6 +59,7 @@ StepReport WorldImpl::step(int frames)
     throw;
   }
   finish_report(report);
+  note_finish(report);
   return report;
 }
 

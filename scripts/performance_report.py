@@ -314,16 +314,21 @@ def gas_rows(scaling):
     return [r for r in scaling if r.get("scene", "gas") in ("gas", "", None)]
 
 
+def points_line(workdir, name, points, title, style=""):
+    """Writes (x, y) points to workdir/name.dat; returns their gnuplot plot clause."""
+    with open(os.path.join(workdir, name + ".dat"), "w") as f:
+        for x, y in points:
+            f.write(f"{x} {y}\n")
+    return f"'{workdir}/{name}.dat' with linespoints pt 7 lw 2 {style} title '{title}'"
+
+
 def plot_time_against_bodies(series, png, title, xlabel, workdir):
     """One log-log line per (name, rows, label, style) of time per frame against bodies."""
     lines = []
     for name, rows, label, style in series:
         if not rows:
             continue
-        with open(os.path.join(workdir, name + ".dat"), "w") as f:
-            for r in rows:
-                f.write(f"{r['bodies']} {r['ms_per_step']}\n")
-        lines.append(f"'{workdir}/{name}.dat' with linespoints pt 7 lw 2 {style} title '{label}'")
+        lines.append(points_line(workdir, name, [(r["bodies"], r["ms_per_step"]) for r in rows], label, style))
     if not lines:
         return False
     gnuplot(f"""set terminal pngcairo size 800,560 noenhanced
@@ -386,10 +391,7 @@ def plot_workers(scaling, png, workdir):
         pts = worker_speedups(scaling, scene)
         if not pts:
             continue
-        with open(os.path.join(workdir, f"speedup_{scene}.dat"), "w") as f:
-            for b, x in pts:
-                f.write(f"{b} {x}\n")
-        lines.append(f"'{workdir}/speedup_{scene}.dat' with linespoints pt 7 lw 2 title '{scene}'")
+        lines.append(points_line(workdir, f"speedup_{scene}", pts, scene))
     if not lines:
         return False
     gnuplot(f"""set terminal pngcairo size 800,480 noenhanced

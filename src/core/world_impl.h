@@ -298,8 +298,7 @@ struct WorldImpl
   bool rest_known_ = false;    ///< the last frame started and ended at rest at rest_version_
   std::uint64_t rest_version_ = 0;
   StepReport rest_frame_;      ///< that frame's own report
-  bool rest_finish_known_ = false;  ///< rest_finish_ holds for the rest state at rest_finish_version_
-  std::uint64_t rest_finish_version_ = 0;
+  bool rest_finish_known_ = false;  ///< the last step ended at the rest state; no frame stepped since
   StepReport rest_finish_;     ///< finish_report's figures at rest
   std::vector<WorldContact> contacts_;
   double time_ = 0.0;

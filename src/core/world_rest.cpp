@@ -53,7 +53,9 @@ bool WorldImpl::replay_rest_frame(StepReport& report)
 
 bool WorldImpl::replay_rest_step(int frames, StepReport& report)
 {
-  if (!rest_finish_known_ || rest_finish_version_ != version_)
+  // replay_rest_frame checks the rest still holds; its answer is the same for
+  // every frame of the step, so a refusal comes before anything is replayed.
+  if (!rest_finish_known_)
   {
     return false;
   }
@@ -61,7 +63,7 @@ bool WorldImpl::replay_rest_step(int frames, StepReport& report)
   {
     if (!replay_rest_frame(report))
     {
-      return false;  // only when replays were turned off: nothing was stepped yet
+      return false;
     }
   }
   report.max_penetration = rest_finish_.max_penetration;
@@ -73,12 +75,12 @@ bool WorldImpl::replay_rest_step(int frames, StepReport& report)
 void WorldImpl::note_finish(const StepReport& report)
 {
   rest_finish_known_ = rest_known_ && rest_version_ == version_;
-  rest_finish_version_ = version_;
   rest_finish_ = report;
 }
 
 void WorldImpl::note_frame(bool started_at_rest, const StepReport& frame)
 {
+  rest_finish_known_ = false;  // the step this frame is in has not closed yet
   rest_known_ = started_at_rest && at_rest();
   rest_version_ = version_;
   rest_frame_ = frame;

@@ -2,10 +2,12 @@
 // about n bodies, one size per process so that the peak resident set (VmHWM)
 // belongs to that size alone. Scenes: gas (scenes::elastic_gas, n scattered
 // disks), pyramid and rain (stack_scenes.h: the Box2D v3 comparison's rules),
-// and resting: the pyramid with sleeping on (each engine's own sleeping),
-// timed once it has fallen asleep, which is what a settled world costs.
+// resting: the pyramid with sleeping on (each engine's own sleeping),
+// timed once it has fallen asleep, which is what a settled world costs; and
+// stirred: the resting pyramid plus one kinematic disk sliding past far from
+// it, what a world costs when almost all of it sleeps.
 //
-//   collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting] [--workers W]
+//   collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting|stirred] [--workers W]
 //                             [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]
 //
 // Prints one CSV row: engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,
@@ -36,6 +38,10 @@ constexpr double kFrameBudget = 1e5;      // body-frames per repetition: ~consta
 constexpr int kMinFrames = 5;
 constexpr int kMaxFrames = 120;
 constexpr int kDefaultRepetitions = 5;
+constexpr double kStirrerRadius = 0.5;    // m
+constexpr double kStirrerHeight = 2.0;    // m above the ground's top
+constexpr double kStirrerInset = 2.0;     // m from the ground's left end
+constexpr double kStirrerSpeed = 1.0;     // m/s to the right: 20 s of frames stay clear of the pyramid
 
 struct Arguments
 {
@@ -50,7 +56,7 @@ struct Arguments
 [[noreturn]] void usage(const std::string& problem)
 {
   std::fprintf(stderr,
-               "%s\nusage: collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting] [--workers W] "
+               "%s\nusage: collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting|stirred] [--workers W] "
                "[--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]\n",
                problem.c_str());
   std::exit(2);
@@ -114,7 +120,8 @@ Arguments parse_arguments(int argc, char** argv)
   {
     usage("--workers applies to collision2d only");
   }
-  if (args.scene != "gas" && args.scene != "pyramid" && args.scene != "rain" && args.scene != "resting")
+  if (args.scene != "gas" && args.scene != "pyramid" && args.scene != "rain" && args.scene != "resting" &&
+      args.scene != "stirred")
   {
     usage("unknown scene '" + args.scene + "'");
   }
@@ -139,6 +146,23 @@ long peak_resident_kib()
   return -1;
 }
 
+/// A kinematic disk near the ground's left end, sliding right at kStirrerSpeed:
+/// it keeps the world from being wholly at rest without touching anything.
+void add_stirrer(Scene& scene)
+{
+  double left = 0.0;
+  for (const SceneBody& b : scene.bodies)
+  {
+    if (b.body.type() == BodyType::Static)
+    {
+      left = std::min(left, b.body.aabb().lo.x);
+    }
+  }
+  Body disk(1.0, kStirrerRadius, Vec2{left + kStirrerInset, kStirrerHeight}, Vec2{kStirrerSpeed, 0.0});
+  disk.set_type(BodyType::Kinematic);
+  scene.bodies.push_back(SceneBody{disk, Material{}, "stirrer"});
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -152,13 +176,17 @@ int main(int argc, char** argv)
   try
   {
     const long start_kib = peak_resident_kib();
-    const bool resting = args.scene == "resting";
+    const bool resting = args.scene == "resting" || args.scene == "stirred";
     Scene scene = args.scene == "gas" ? scenes::elastic_gas(static_cast<int>(args.bodies))
                                       : make_throughput_scene(resting ? "pyramid" : args.scene, args.bodies);
     scene.settings.workers = args.workers;
     if (resting)
     {
       scene.settings.sleeping = Toggle::On;
+    }
+    if (args.scene == "stirred")
+    {
+      add_stirrer(scene);
     }
     const long bodies = std::count_if(scene.bodies.begin(), scene.bodies.end(),
                                       [](const SceneBody& b) { return b.body.type() == BodyType::Dynamic; });

@@ -158,7 +158,7 @@ void World::clear()
 
 StepReport World::step(int frames) { return impl_->step(frames); }
 
-const std::vector<WorldContact>& World::contacts() const { return impl_->contacts_; }
+const std::vector<WorldContact>& World::contacts() const { return impl_->all_contacts(); }
 
 double World::time() const { return impl_->time_; }
 
@@ -179,7 +179,7 @@ StepState World::step_state() const
 {
   const detail::WorldImpl& w = *impl_;
   StepState state;
-  state.contacts = w.contacts_;
+  state.contacts = w.all_contacts();
   state.contact_substep = w.cache_h_;
   for (std::size_t i = 0; i < w.ids_.size(); ++i)
   {
@@ -244,6 +244,7 @@ void World::set_step_state(const StepState& state)
   w.asleep_ = std::move(asleep);
   w.rest_time_ = state.rest_time;
   w.points_.clear();
+  w.sort_out_sleeping();
 }
 
 namespace detail
@@ -256,6 +257,7 @@ void WorldImpl::append_body(BodyId id, const Body& body, const Material& materia
   ids_.push_back(id);
   next_id_ = id + 1;
   asleep_.push_back(false);
+  island_label_.push_back(0);
   rest_time_.push_back(0.0);
   append_inner_radius(bodies_.back());
 }
@@ -263,33 +265,43 @@ void WorldImpl::append_body(BodyId id, const Body& body, const Material& materia
 void WorldImpl::remove_body(BodyId id)
 {
   const std::size_t i = index_of(id);
-  // Bodies resting on the removed one must fall, so its sleeping partners wake.
-  for (const WorldContact& c : contacts_)
+  // Bodies resting on the removed one must fall, so its partners wake (a
+  // sleeping partner with its island).
+  std::vector<std::size_t> partners;
+  for (const std::vector<WorldContact>* list : {&contacts_, &sleeping_contacts_})
   {
-    if (c.a == id || c.b == id)
+    for (const WorldContact& c : *list)
     {
-      const BodyId other = c.a == id ? c.b : c.a;
-      if (std::binary_search(ids_.begin(), ids_.end(), other))
+      if (c.a == id || c.b == id)
       {
-        wake(index_of(other));
+        partners.push_back(c.a == id ? c.contact.b : c.contact.a);
       }
     }
+  }
+  for (std::size_t partner : partners)
+  {
+    wake(partner);
   }
   const auto offset = static_cast<std::ptrdiff_t>(i);
   bodies_.erase(bodies_.begin() + offset);
   materials_.erase(materials_.begin() + offset);
   ids_.erase(ids_.begin() + offset);
   asleep_.erase(asleep_.begin() + offset);
+  island_label_.erase(island_label_.begin() + offset);
   rest_time_.erase(rest_time_.begin() + offset);
   // The removed body's contacts go; the others follow the shifted dense indices.
-  contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(),
-                                 [id](const WorldContact& c) { return c.a == id || c.b == id; }),
-                  contacts_.end());
-  for (WorldContact& c : contacts_)
+  for (std::vector<WorldContact>* list : {&contacts_, &sleeping_contacts_})
   {
-    c.contact.a -= c.contact.a > i ? 1 : 0;
-    c.contact.b -= c.contact.b > i ? 1 : 0;
+    list->erase(std::remove_if(list->begin(), list->end(),
+                               [id](const WorldContact& c) { return c.a == id || c.b == id; }),
+                list->end());
+    for (WorldContact& c : *list)
+    {
+      c.contact.a -= c.contact.a > i ? 1 : 0;
+      c.contact.b -= c.contact.b > i ? 1 : 0;
+    }
   }
+  measure_sleeping_penetration();
   refresh_inner_radii();
 }
 
@@ -307,7 +319,10 @@ std::size_t WorldImpl::index_of(BodyId id) const
 
 void WorldImpl::wake(std::size_t index)
 {
-  asleep_[index] = false;
+  if (asleep_[index])
+  {
+    wake_island(island_label_[index], contacts_);         // world_sleeping_contacts.cpp
+  }
   rest_time_[index] = 0.0;
 }
 
@@ -317,8 +332,11 @@ void WorldImpl::clear()
   materials_.clear();
   ids_.clear();
   asleep_.clear();
+  island_label_.clear();
   rest_time_.clear();
   contacts_.clear();
+  sleeping_contacts_.clear();
+  sleeping_penetration_ = 0.0;
   cache_.clear();
   points_.clear();
   refresh_inner_radii();

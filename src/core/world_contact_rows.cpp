@@ -24,28 +24,24 @@ std::size_t WorldImpl::place_pair_rows(bool cached)
   pair_rows_.resize(pairs_.size() + 1);
   pair_cache_.resize(pairs_.size());
   const bool shared = workers_.workers() > 1 && pairs_.size() >= kMinSharedPairs;
-  if (!shared || !place_awake_pairs(cached))
+  if (!shared || !place_pairs_in_parts(cached))
   {
     place_pairs_in_order(cached);
   }
   return pair_rows_[pairs_.size()];
 }
 
-bool WorldImpl::place_awake_pairs(bool cached)
+bool WorldImpl::place_pairs_in_parts(bool cached)
 {
-  // With every body awake no pair wakes one or is carried, and a cache in
-  // pair order gives each lookup the same answer from any cursor: the pairs
-  // are placed in parts, each with its own cursor. Otherwise nothing is kept.
-  if (std::find(asleep_.begin(), asleep_.end(), true) != asleep_.end())
-  {
-    return false;
-  }
+  // A cache in pair order gives each lookup the same answer from any cursor:
+  // the pairs are placed in parts, each with its own cursor. Otherwise
+  // nothing is kept.
   const std::size_t parts = static_cast<std::size_t>(workers_.workers());
   placements_.resize(parts);
   workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
     for (std::size_t part = begin; part < end; ++part)
     {
-      place_awake_part(part, parts, cached);
+      place_pairs_part(part, parts, cached);
     }
   });
   for (const PairPlacement& placed : placements_)
@@ -75,7 +71,7 @@ bool WorldImpl::place_awake_pairs(bool cached)
   return true;
 }
 
-void WorldImpl::place_awake_part(std::size_t part, std::size_t parts, bool cached)
+void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cached)
 {
   PairPlacement& placed = placements_[part];
   placed = PairPlacement{};
@@ -88,7 +84,6 @@ void WorldImpl::place_awake_part(std::size_t part, std::size_t parts, bool cache
   const std::size_t n = pairs_.size();
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
   {
-    // Awake, every pair with a dynamic body was collided (collide_range).
     const int count = collided_[k] == Collided::Hit ? manifolds_[k].count : 0;
     pair_rows_[k] = static_cast<std::size_t>(count);
     pair_cache_[k] = c;
@@ -103,66 +98,21 @@ void WorldImpl::place_awake_part(std::size_t part, std::size_t parts, bool cache
 
 void WorldImpl::place_pairs_in_order(bool cached)
 {
-  // In pair order: a body woken here makes later pairs with it movers, and
-  // the cache cursor walks forward.
+  // Pairs without a mover were not collided (collide_range): a sleeping
+  // island's contacts are kept aside (world_sleeping_contacts.cpp).
   std::size_t rows = 0;
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
     pair_rows_[k] = rows;
-    const std::size_t i = pairs_[k].first;
-    const std::size_t j = pairs_[k].second;
-    if (!dynamic_pair(i, j))
-    {
-      continue;
-    }
-    if (!is_mover(i) && !is_mover(j))
-    {
-      collided_[k] = Collided::Carried;
-      pair_cache_[k] = cached_pair(ids_[i], ids_[j]);
-      rows += carried_rows(pair_cache_[k], ids_[i], ids_[j]);
-      continue;
-    }
-    // A pair whose body woke up earlier in this loop was not collided yet.
-    if (collided_[k] == Collided::NotTried)
-    {
-      collided_[k] = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k], true) ? Collided::Hit : Collided::Miss;
-    }
     if (collided_[k] != Collided::Hit)
     {
       continue;
     }
-    // A moving body reached a sleeping one: its island takes part again.
-    if (asleep_[i] || asleep_[j])
-    {
-      wake(asleep_[i] ? i : j);
-    }
     const int count = manifolds_[k].count;
-    pair_cache_[k] = cached && count > 0 ? cached_pair(ids_[i], ids_[j]) : cache_.size();
+    pair_cache_[k] = cached && count > 0 ? cached_pair(ids_[pairs_[k].first], ids_[pairs_[k].second]) : cache_.size();
     rows += static_cast<std::size_t>(count);
   }
   pair_rows_[pairs_.size()] = rows;
-}
-
-std::size_t WorldImpl::carried_rows(std::size_t first, BodyId a, BodyId b) const
-{
-  std::size_t end = first;
-  while (end < cache_.size() && cache_[end].a == a && cache_[end].b == b)
-  {
-    ++end;
-  }
-  return end - first;
-}
-
-void WorldImpl::fill_pair_rows(std::size_t k, double warm_scale, bool friction)
-{
-  if (collided_[k] == Collided::Hit)
-  {
-    add_manifold(k, warm_scale, friction);
-  }
-  else if (collided_[k] == Collided::Carried)
-  {
-    carry_sleeping_pair(k);
-  }
 }
 
 void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
@@ -191,30 +141,6 @@ void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
       row.kinetic = friction && cached->sliding;
       row.anchor_drift = cached->anchor_drift;
     }
-  }
-}
-
-void WorldImpl::carry_sleeping_pair(std::size_t k)
-{
-  // Nothing moves in a sleeping island, so its contacts and impulses stay
-  // what they were when it fell asleep; they are kept (unsolved) so the
-  // island stays one island and wakes with its impulses intact.
-  const std::size_t first = pair_cache_[k];
-  for (std::size_t r = pair_rows_[k]; r < pair_rows_[k + 1]; ++r)
-  {
-    const WorldContact& cached = cache_[first + (r - pair_rows_[k])];
-    ContactPoint& row = points_[r];
-    row = ContactPoint{};
-    row.a = pairs_[k].first;
-    row.b = pairs_[k].second;
-    row.normal = cached.contact.normal;
-    row.point = cached.contact.point;
-    row.penetration = cached.contact.penetration;
-    row.feature = cached.contact.feature;
-    row.active = false;
-    row.lambda_n = cached.impulse.normal;
-    row.lambda_t = cached.impulse.tangent;
-    row.sliding = cached.sliding;
   }
 }
 

@@ -48,29 +48,15 @@ double WorldImpl::frame_reach(const Body& b) const
 
 void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report)
 {
-  const std::size_t n = bodies_.size();
-  boxes_.resize(n);
-  reach_.resize(n);
-  workers_.parallel_for(n, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      // The soft step collides once per frame, so a pair that the frame's
-      // motion can close gets its contact now: the margin grows by how far
-      // each body can travel in the frame.
-      reach_[i] = margin > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
-      boxes_[i] = margin > 0.0 ? bodies_[i].aabb().inflated(margin + reach_[i]) : bodies_[i].aabb();
-    }
-  });
-  broad_phase_.find_pairs(boxes_, pairs_, workers_);
   pose_bodies();
-  // The narrow phase of the pairs with a moving body, split across the
-  // workers (each writes its own pairs' slots); then, in pair order, what
-  // each pair adds and where; then the points, split across the workers
-  // again. The result is the same for any number of workers.
   margin_ = margin;
-  manifolds_.resize(pairs_.size());
-  collided_.resize(pairs_.size());
-  workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
+  // A mover that reaches a sleeping island wakes all of it, and the woken
+  // bodies are movers for a second look: the island's contacts are solved in
+  // the frame it wakes.
+  do
+  {
+    find_mover_pairs();
+  } while (wake_reached_islands());                       // world_sleeping_contacts.cpp
   // Impulses were made over the cached substep length; a changed dt or
   // substep count rescales them to this one.
   const double warm_scale = ctx.warm ? ctx.h / cache_h_ : 0.0;
@@ -84,11 +70,44 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
-      fill_pair_rows(k, warm_scale, friction);
+      if (collided_[k] == Collided::Hit)
+      {
+        add_manifold(k, warm_scale, friction);
+      }
     }
   });
   report.max_detected_penetration = max_over(points_.size(), kMinSharedPoints, report.max_detected_penetration,
                                              [this](std::size_t k) { return points_[k].penetration; });
+  // Contacts kept aside still count (world_sleeping_contacts.cpp).
+  if (!sleeping_contacts_.empty())
+  {
+    report.max_detected_penetration = std::max(report.max_detected_penetration, sleeping_penetration_);
+  }
+}
+
+void WorldImpl::find_mover_pairs()
+{
+  const std::size_t n = bodies_.size();
+  boxes_.resize(n);
+  reach_.resize(n);
+  workers_.parallel_for(n, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      // The soft step collides once per frame, so a pair that the frame's
+      // motion can close gets its contact now: the margin grows by how far
+      // each body can travel in the frame.
+      reach_[i] = margin_ > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
+      boxes_[i] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
+    }
+  });
+  broad_phase_.find_pairs(boxes_, pairs_, workers_);
+  // The narrow phase of the pairs with a moving body, split across the
+  // workers (each writes its own pairs' slots); then, in pair order, what
+  // each pair adds and where; then the points, split across the workers
+  // again. The result is the same for any number of workers.
+  manifolds_.resize(pairs_.size());
+  collided_.resize(pairs_.size());
+  workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
 }
 
 void WorldImpl::pose_bodies()

@@ -94,7 +94,7 @@ StepContext WorldImpl::select_effects()
   // Time of impact is decided per substep from the bodies' speeds (world_toi.cpp).
   e.effects.time_of_impact = false;
   // The last substep's contacts become the first substep's cache (world_step.cpp).
-  e.warm_available = e.effects.warm_starting && !contacts_.empty() && cache_h_ > 0.0;
+  e.warm_available = e.effects.warm_starting && !(contacts_.empty() && sleeping_contacts_.empty()) && cache_h_ > 0.0;
   return e;
 }
 

@@ -66,6 +66,17 @@ struct BodyMotion
   double omega = 0.0;
 };
 
+/// The root of island i in a union-find forest, halving the path on the way.
+inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
 /// Test hooks (world_rest.cpp): turn the replay of rest frames off, and count
 /// the frames replayed in this process.
 void set_rest_replay_enabled(bool enabled);
@@ -206,6 +217,8 @@ struct WorldImpl
   bool is_mover(std::size_t i) const;
   /// Contacts at the current poses; pairs within `margin` (m) are kept too.
   void detect(const StepContext& ctx, double margin, StepReport& report);
+  /// Broad and narrow phase of the pairs with a mover, within margin_.
+  void find_mover_pairs();
   /// How far any point of the body can travel in one frame (m).
   double frame_reach(const Body& b) const;
   /// With `posed`, the polygons' outlines come from pose_bodies (the poses
@@ -225,16 +238,12 @@ struct WorldImpl
   /// the rows in all. `cached`: whether hit pairs look up their cached impulses.
   std::size_t place_pair_rows(bool cached);
   /// place_pair_rows in parts on the workers; false (nothing placed) unless
-  /// every body is awake and the cache in pair order.
-  bool place_awake_pairs(bool cached);
-  void place_awake_part(std::size_t part, std::size_t parts, bool cached);
+  /// the cache is in pair order.
+  bool place_pairs_in_parts(bool cached);
+  void place_pairs_part(std::size_t part, std::size_t parts, bool cached);
   void place_pairs_in_order(bool cached);
-  /// The cached contacts of pair (a, b) from cache_[first] on.
-  std::size_t carried_rows(std::size_t first, BodyId a, BodyId b) const;
   /// Pair k's rows, where place_pair_rows put them (a WorkerPool range's item).
-  void fill_pair_rows(std::size_t k, double warm_scale, bool friction);
   void add_manifold(std::size_t k, double warm_scale, bool friction);
-  void carry_sleeping_pair(std::size_t k);
   /// Index of the first cached contact of pair (a, b), or of where it would be.
   std::size_t cached_pair(BodyId a, BodyId b) const;
   /// ... from `cursor`, which it moves (cached_pair uses cache_cursor_).
@@ -289,9 +298,32 @@ struct WorldImpl
   /// Any edit through the World API: a remembered rest frame no longer holds.
   void changed() { ++version_; }
 
-  // world_sleep.cpp
+  // world_sleep.cpp: islands fall asleep; world_sleeping_contacts.cpp: their
+  // contacts kept aside, out of the step, until they wake.
   void update_sleep();
   void update_rest_times();
+  /// Labels the bodies that fell asleep this frame by island and puts their
+  /// contacts aside.
+  void label_new_sleepers();
+  /// Moves the contacts of bodies asleep now from contacts_ to sleeping_contacts_.
+  void put_contacts_aside();
+  /// Wakes every body of island `label`; its contacts go back into `into`
+  /// (kept in (a, b) order), where detection or warm starting finds them.
+  void wake_island(std::uint32_t label, std::vector<WorldContact>& into);
+  /// Sleeping switched off: every body awake, every contact back in contacts_.
+  void wake_everyone();
+  /// Detection: wakes the islands that a mover's contact reaches; true if any woke.
+  bool wake_reached_islands();
+  /// Before the step first changes the contacts kept aside: keeps them (and
+  /// the starting contacts, if the change reaches them) for a rollback.
+  void keep_sleeping_for_rollback();
+  /// After an edit of contacts_ and asleep_ as a whole (set_step_state):
+  /// sleeping contacts aside again, islands labelled from them.
+  void sort_out_sleeping();
+  /// sleeping_contacts_' deepest penetration, after they changed.
+  void measure_sleeping_penetration();
+  /// Every contact in (a, b) order: contacts_ merged with sleeping_contacts_.
+  const std::vector<WorldContact>& all_contacts() const;
 
   WorldSettings settings_;
   std::uint64_t version_ = 0;  ///< bumped by every edit through the World API
@@ -300,7 +332,18 @@ struct WorldImpl
   StepReport rest_frame_;      ///< that frame's own report
   bool rest_finish_known_ = false;  ///< the last step ended at the rest state; no frame stepped since
   StepReport rest_finish_;     ///< finish_report's figures at rest
-  std::vector<WorldContact> contacts_;
+  std::vector<WorldContact> contacts_;  ///< contacts of pairs with a mover, in (a, b) order
+  /// Contacts of sleeping islands (with each other, static and still
+  /// kinematic bodies), in (a, b) order: nothing in a step reads them until
+  /// their island wakes.
+  std::vector<WorldContact> sleeping_contacts_;
+  double sleeping_penetration_ = 0.0;         ///< deepest of them (m)
+  std::vector<std::uint32_t> island_label_;   ///< a sleeping body's island (0: none)
+  std::uint32_t next_island_label_ = 0;
+  std::vector<std::uint32_t> root_label_;     ///< label_new_sleepers' scratch, by union-find root
+  std::vector<WorldContact> moved_contacts_;  ///< scratch: contacts put aside or woken
+  std::vector<WorldContact> merge_scratch_;
+  mutable std::vector<WorldContact> all_contacts_;  ///< all_contacts()'s answer
   double time_ = 0.0;
   std::uint64_t frame_count_ = 0;
 
@@ -325,8 +368,7 @@ struct WorldImpl
   {
     NotTried,
     Miss,
-    Hit,
-    Carried  ///< a sleeping pair: its cached contacts are kept
+    Hit
   };
   std::vector<Manifold> manifolds_;
   std::vector<Collided> collided_;
@@ -382,6 +424,12 @@ struct WorldImpl
   bool contacts_in_cache_ = false;  ///< the step's contacts before it are in cache_ after its one swap
   int contact_swaps_ = 0;           ///< swaps of the contact buffers since save_motion
   std::vector<bool> saved_asleep_;
+  bool saving_motion_ = false;  ///< inside a step that keeps what it changes for a rollback
+  bool sleeping_kept_ = false;  ///< the step changed what sleeps; the state before is kept below
+  std::vector<WorldContact> saved_sleeping_contacts_;
+  double saved_sleeping_penetration_ = 0.0;
+  std::vector<std::uint32_t> saved_island_label_;
+  std::uint32_t saved_next_island_label_ = 0;
   std::vector<double> saved_rest_time_;
   std::vector<ContactPoint> saved_points_;  ///< only when a prediction reads them next step
   double saved_cache_h_ = 0.0;

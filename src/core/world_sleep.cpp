@@ -2,29 +2,15 @@
 // contacts (static bodies do not link islands: a floor would merge every
 // stack on it). It falls asleep when every member has rested (speed below
 // the thresholds) for sleep_time and no moving kinematic body touches it;
-// asleep bodies are not integrated or solved. A moving body touching one
-// wakes it during detection, and the rest of its island wakes here at the end
-// of the frame, because the woken member has not rested long enough.
+// asleep bodies are not integrated or solved, and their contacts are kept
+// aside (world_sleeping_contacts.cpp). A moving body reaching one wakes its
+// whole island during detection.
 #include "world_impl.h"
 
 namespace collision2d
 {
 namespace detail
 {
-namespace
-{
-std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];  // path halving keeps the trees flat
-    i = parent[i];
-  }
-  return i;
-}
-
-}  // namespace
-
 void WorldImpl::update_sleep()
 {
   const std::size_t n = bodies_.size();
@@ -40,7 +26,7 @@ void WorldImpl::update_sleep()
     const bool dynamic_b = bodies_[row.b].type() == BodyType::Dynamic;
     if (dynamic_a && dynamic_b)
     {
-      island_[find_root(island_, row.a)] = find_root(island_, row.b);
+      island_[island_root(island_, row.a)] = island_root(island_, row.b);
     }
     else if (bodies_[dynamic_a ? row.b : row.a].type() == BodyType::Kinematic && is_mover(dynamic_a ? row.b : row.a))
     {
@@ -48,11 +34,12 @@ void WorldImpl::update_sleep()
     }
   }
   island_awake_.assign(n, false);
+  bool fell_asleep = false;
   for (std::size_t i = 0; i < n; ++i)
   {
     if (bodies_[i].type() == BodyType::Dynamic && rest_time_[i] < settings_.sleep_time)
     {
-      island_awake_[find_root(island_, i)] = true;
+      island_awake_[island_root(island_, i)] = true;
     }
   }
   for (std::size_t i = 0; i < n; ++i)
@@ -61,13 +48,23 @@ void WorldImpl::update_sleep()
     {
       continue;
     }
-    const bool sleep = !island_awake_[find_root(island_, i)];
-    if (sleep && !asleep_[i])
+    const bool sleep = !island_awake_[island_root(island_, i)];
+    if (!sleep && asleep_[i])
+    {
+      wake_island(island_label_[i], contacts_);           // set asleep without having rested
+    }
+    else if (sleep && !asleep_[i])
     {
       bodies_[i].set_velocity(Vec2{0.0, 0.0});
       bodies_[i].set_omega(0.0);
+      asleep_[i] = true;
+      fell_asleep = true;
     }
-    asleep_[i] = sleep;
+  }
+  if (fell_asleep)
+  {
+    label_new_sleepers();                                 // world_sleeping_contacts.cpp
+    put_contacts_aside();
   }
 }
 

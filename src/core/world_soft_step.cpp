@@ -76,7 +76,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   restitution_pass(report);
   update_anchors();
   store_velocities();
-  report.contact_count = points_.size();
+  report.contact_count = points_.size() + sleeping_contacts_.size();
   publish_contacts();
   cache_h_ = ctx.h;
 }

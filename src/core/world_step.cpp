@@ -58,6 +58,7 @@ StepReport WorldImpl::step(int frames)
     restore_motion();
     throw;
   }
+  saving_motion_ = false;
   finish_report(report);
   note_finish(report);
   return report;
@@ -74,7 +75,7 @@ void WorldImpl::step_frame(StepReport& report)
   StepContext ctx = select_effects();                     // world_effects.cpp
   if (!ctx.effects.sleeping)
   {
-    asleep_.assign(bodies_.size(), false);
+    wake_everyone();                                      // world_sleeping_contacts.cpp
   }
   ctx.h = settings_.dt / settings_.substeps;
   ctx.inv_h = 1.0 / ctx.h;
@@ -138,7 +139,7 @@ void WorldImpl::substep(StepContext& ctx, StepReport& report)
   solve_velocity_stage(ctx, report);
   store_velocities();
   ++report.substeps;
-  report.contact_count = points_.size();
+  report.contact_count = points_.size() + sleeping_contacts_.size();
 }
 
 void WorldImpl::kick(const StepContext& ctx)
@@ -295,6 +296,8 @@ void WorldImpl::save_motion(int frames)
     keep_copy(contacts_, saved_contacts_, workers_);
   }
   saved_asleep_ = asleep_;
+  saving_motion_ = true;
+  sleeping_kept_ = false;
   keep_copy(rest_time_, saved_rest_time_, workers_);
   saved_time_ = time_;
   saved_frame_count_ = frame_count_;
@@ -327,6 +330,14 @@ void WorldImpl::restore_motion()
     contacts_.swap(cache_);
   }
   asleep_.swap(saved_asleep_);
+  saving_motion_ = false;
+  if (sleeping_kept_)
+  {
+    sleeping_contacts_.swap(saved_sleeping_contacts_);
+    sleeping_penetration_ = saved_sleeping_penetration_;
+    island_label_.swap(saved_island_label_);
+    next_island_label_ = saved_next_island_label_;
+  }
   rest_time_.swap(saved_rest_time_);
   time_ = saved_time_;
   frame_count_ = saved_frame_count_;

@@ -1,0 +1,228 @@
+// Sleeping islands leave the step (world_sleeping_contacts.cpp): their
+// contacts are kept aside, still reported, and come back when a mover reaches
+// the island, which then wakes whole in that frame. A refused step and a
+// snapshot round trip must carry the kept contacts exactly.
+#include <algorithm>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "collision2d/scene.h"
+#include "collision2d/scenes/standard_scenes.h"
+#include "collision2d/world.h"
+
+namespace collision2d
+{
+namespace
+{
+constexpr int kSettleFrames = 600;  // 10 s: a small pyramid falls asleep well before
+constexpr double kDropHeight = 1.5;  // m above the top box's centre
+constexpr double kDropSpeed = 4.0;   // m/s down
+constexpr double kDiskRadius = 0.25; // m
+constexpr double kDiskMass = 2.0;    // kg
+constexpr Vec2 kFarAway{50.0, 5.0};  // m: far from the pile
+
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+bool same_contacts(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
+{
+  if (x.size() != y.size())
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < x.size(); ++k)
+  {
+    const WorldContact& p = x[k];
+    const WorldContact& q = y[k];
+    if (p.a != q.a || p.b != q.b || p.contact.feature != q.contact.feature || p.sliding != q.sliding ||
+        !same_bits(p.contact.point.x, q.contact.point.x) || !same_bits(p.contact.point.y, q.contact.point.y) ||
+        !same_bits(p.contact.penetration, q.contact.penetration) ||
+        !same_bits(p.impulse.normal, q.impulse.normal) || !same_bits(p.impulse.tangent, q.impulse.tangent) ||
+        !same_bits(p.anchor_drift, q.anchor_drift))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool same_bodies(const World& x, const World& y)
+{
+  for (BodyId id : x.body_ids())
+  {
+    const Body& p = x.body(id);
+    const Body& q = y.body(id);
+    if (!same_bits(p.position().x, q.position().x) || !same_bits(p.position().y, q.position().y) ||
+        !same_bits(p.theta(), q.theta()) || !same_bits(p.velocity().x, q.velocity().x) ||
+        !same_bits(p.velocity().y, q.velocity().y) || !same_bits(p.omega(), q.omega()) ||
+        x.is_sleeping(id) != y.is_sleeping(id))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<BodyId> dynamic_ids(const World& world)
+{
+  std::vector<BodyId> ids;
+  for (BodyId id : world.body_ids())
+  {
+    if (world.body(id).type() == BodyType::Dynamic)
+    {
+      ids.push_back(id);
+    }
+  }
+  return ids;
+}
+
+/// A base-4 pyramid put to sleep, in the given pipeline.
+World sleeping_pyramid(bool soft)
+{
+  Scene scene = scenes::pyramid(4);
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.soft_step = soft;
+  World world = make_world(scene);
+  world.step(kSettleFrames);
+  return world;
+}
+
+/// A disk thrown down at the top box from above.
+BodyId drop_disk(World& world)
+{
+  const std::vector<BodyId> boxes = dynamic_ids(world);
+  BodyId top = boxes.front();
+  for (BodyId id : boxes)
+  {
+    top = world.body(id).position().y > world.body(top).position().y ? id : top;
+  }
+  const Vec2 above = world.body(top).position() + Vec2{0.0, kDropHeight};
+  return world.add_body(Body(kDiskMass, kDiskRadius, above, {0.0, -kDropSpeed}), Material{});
+}
+
+TEST(WorldSleeping, KeptContactsAreReportedUnchanged)
+{
+  for (const bool soft : {true, false})
+  {
+    World world = sleeping_pyramid(soft);
+    for (BodyId id : dynamic_ids(world))
+    {
+      ASSERT_TRUE(world.is_sleeping(id)) << "soft " << soft;
+    }
+    const std::vector<WorldContact> kept = world.contacts();
+    ASSERT_FALSE(kept.empty());
+    // Every box rests on something: the pile's weight is still carried by
+    // the kept contacts (positive normal impulses on the ground row).
+    double ground_impulse = 0.0;
+    for (const WorldContact& c : kept)
+    {
+      ground_impulse += world.body(c.a).type() == BodyType::Static ? c.impulse.normal : 0.0;
+    }
+    EXPECT_GT(ground_impulse, 0.0) << "soft " << soft;
+    const StepReport report = world.step(30);
+    EXPECT_TRUE(same_contacts(world.contacts(), kept)) << "soft " << soft;
+    EXPECT_EQ(report.contact_count, kept.size()) << "soft " << soft;
+  }
+}
+
+TEST(WorldSleeping, AReachedIslandWakesWholeInThatFrame)
+{
+  for (const bool soft : {true, false})
+  {
+    World world = sleeping_pyramid(soft);
+    const std::vector<BodyId> boxes = dynamic_ids(world);
+    drop_disk(world);
+    int frames = 0;
+    while (world.is_sleeping(boxes.front()) && frames < 60)
+    {
+      world.step();
+      ++frames;
+      // No box wakes alone: the island is asleep or awake as a whole.
+      std::size_t awake = 0;
+      for (BodyId id : boxes)
+      {
+        awake += world.is_sleeping(id) ? 0 : 1;
+      }
+      EXPECT_TRUE(awake == 0 || awake == boxes.size()) << "soft " << soft << ", frame " << frames;
+    }
+    ASSERT_LT(frames, 60) << "soft " << soft << ": the disk never woke the pile";
+    // The woken pile was solved with its contacts: over the next second it
+    // stays within the penetration it settled at, plus the disk's blow.
+    double deepest = 0.0;
+    for (int f = 0; f < 60; ++f)
+    {
+      deepest = std::max(deepest, world.step().max_penetration);
+    }
+    EXPECT_LT(deepest, 0.05) << "soft " << soft;  // 5 cm: a fifth of a box edge
+  }
+}
+
+TEST(WorldSleeping, RefusedStepPutsTheKeptContactsBack)
+{
+  for (const bool soft : {true, false})
+  {
+    for (const int frames : {1, 2})
+    {
+      World world = sleeping_pyramid(soft);
+      drop_disk(world);
+      // Step the disk to just above the pile, then make the next step
+      // overflow: the wake it causes must be undone with everything else.
+      while (world.is_sleeping(dynamic_ids(world).front()))
+      {
+        const World before_wake = world;
+        world.step();
+        if (!world.is_sleeping(dynamic_ids(world).front()))
+        {
+          world = before_wake;
+          break;
+        }
+      }
+      // A body far away is thrown so fast that the frame overflows.
+      const BodyId thrown = world.add_body(Body(1.0, kDiskRadius, kFarAway, {}), Material{});
+      world.set_body_state(thrown, kFarAway, 0.0, {0.0, -std::numeric_limits<double>::max()}, 0.0);
+      WorldSettings settings = world.settings();
+      settings.gravity = {0.0, -1e308};
+      world.set_settings(settings);
+      const World before = world;
+      EXPECT_THROW(world.step(frames), std::overflow_error) << "soft " << soft << ", frames " << frames;
+      EXPECT_TRUE(same_contacts(world.contacts(), before.contacts())) << "soft " << soft << ", frames " << frames;
+      EXPECT_TRUE(same_bodies(world, before)) << "soft " << soft << ", frames " << frames;
+      // ... and the world steps on as the copy does.
+      settings.gravity = {0.0, -10.0};
+      World copy = before;
+      for (World* w : {&world, &copy})
+      {
+        w->set_settings(settings);
+        w->remove_body(thrown);
+        w->step(30);
+      }
+      EXPECT_TRUE(same_contacts(world.contacts(), copy.contacts())) << "soft " << soft << ", frames " << frames;
+      EXPECT_TRUE(same_bodies(world, copy)) << "soft " << soft << ", frames " << frames;
+    }
+  }
+}
+
+TEST(WorldSleeping, SnapshotOfASleepingIslandResumesExactly)
+{
+  for (const bool soft : {true, false})
+  {
+    World world = sleeping_pyramid(soft);
+    drop_disk(world);
+    // The snapshot sorts the contacts kept aside out again.
+    World resumed = world;
+    resumed.set_step_state(world.step_state());
+    for (int f = 0; f < 90; ++f)
+    {
+      world.step();
+      resumed.step();
+    }
+    EXPECT_TRUE(same_contacts(world.contacts(), resumed.contacts())) << "soft " << soft;
+    EXPECT_TRUE(same_bodies(world, resumed)) << "soft " << soft;
+  }
+}
+
+}  // namespace
+}  // namespace collision2d

@@ -265,6 +265,10 @@ void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs)
     end += start;
     start = end;  // one past the group's end, decremented while scattering
   }
+  if (sorted_pairs_.capacity() < pairs.size())
+  {
+    sorted_pairs_.reserve(2 * pairs.size());  // both buffers grow geometrically: a creeping count allocates rarely
+  }
   sorted_pairs_.resize(pairs.size());
   for (const BodyPair& p : pairs)
   {

@@ -87,20 +87,41 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 
 void WorldImpl::find_mover_pairs()
 {
-  const std::size_t n = bodies_.size();
-  boxes_.resize(n);
-  reach_.resize(n);
-  workers_.parallel_for(n, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
+  refresh_resting_grid();
+  const std::size_t m = movers_.size();
+  mover_boxes_.resize(m);
+  workers_.parallel_for(m, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
       // The soft step collides once per frame, so a pair that the frame's
       // motion can close gets its contact now: the margin grows by how far
       // each body can travel in the frame.
-      reach_[i] = margin_ > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
-      boxes_[i] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
+      const std::size_t i = movers_[k];
+      reach_[i] = margin_ > 0.0 ? frame_reach(bodies_[i]) : 0.0;
+      mover_boxes_[k] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
     }
   });
-  broad_phase_.find_pairs(boxes_, pairs_, workers_);
+  // Movers with each other, then with the resting grid; merged in (i, j)
+  // order, the pairs are those of one broad phase over every box, less the
+  // pairs in which nothing moves.
+  broad_phase_.find_pairs(mover_boxes_, mover_pairs_, workers_);
+  for (BodyPair& pair : mover_pairs_)
+  {
+    pair = {movers_[pair.first], movers_[pair.second]};  // movers_ ascends: the order holds
+  }
+  resting_pairs_.clear();
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    resting_grid_.query(mover_boxes_[k], movers_[k], resting_pairs_);
+  }
+  std::sort(resting_pairs_.begin(), resting_pairs_.end());
+  const std::size_t count = mover_pairs_.size() + resting_pairs_.size();
+  if (count > pairs_.capacity())
+  {
+    pairs_.reserve(2 * count);  // geometric: a count that creeps up allocates rarely
+  }
+  pairs_.resize(count);
+  std::merge(mover_pairs_.begin(), mover_pairs_.end(), resting_pairs_.begin(), resting_pairs_.end(), pairs_.begin());
   // The narrow phase of the pairs with a moving body, split across the
   // workers (each writes its own pairs' slots); then, in pair order, what
   // each pair adds and where; then the points, split across the workers
@@ -108,6 +129,35 @@ void WorldImpl::find_mover_pairs()
   manifolds_.resize(pairs_.size());
   collided_.resize(pairs_.size());
   workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
+}
+
+void WorldImpl::refresh_resting_grid()
+{
+  const std::size_t n = bodies_.size();
+  if (resting_built_ && resting_version_ == version_ && resting_stamp_ == sleep_stamp_ && resting_margin_ == margin_ &&
+      reach_.size() == n)
+  {
+    return;
+  }
+  resting_built_ = true;
+  resting_version_ = version_;
+  resting_stamp_ = sleep_stamp_;
+  resting_margin_ = margin_;
+  movers_.clear();
+  resting_.clear();
+  boxes_.resize(n);
+  reach_.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (is_mover(i))
+    {
+      movers_.push_back(i);
+      continue;
+    }
+    resting_.push_back(i);
+    boxes_[i] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_) : bodies_[i].aabb();
+  }
+  resting_grid_.build(boxes_, resting_);
 }
 
 void WorldImpl::pose_bodies()

@@ -15,6 +15,7 @@
 #include "collision2d/world.h"
 #include "contact_kernel.h"
 #include "posed_polygon.h"
+#include "resting_grid.h"
 #include "soft_rows.h"
 #include "worker_pool.h"
 
@@ -219,6 +220,8 @@ struct WorldImpl
   void detect(const StepContext& ctx, double margin, StepReport& report);
   /// Broad and narrow phase of the pairs with a mover, within margin_.
   void find_mover_pairs();
+  /// movers_ and the resting bodies' grid, again if what rests or its boxes changed.
+  void refresh_resting_grid();
   /// How far any point of the body can travel in one frame (m).
   double frame_reach(const Body& b) const;
   /// With `posed`, the polygons' outlines come from pose_bodies (the poses
@@ -391,6 +394,18 @@ struct WorldImpl
   std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
+  // The broad phase looks from the movers (world_contacts.cpp).
+  std::vector<std::size_t> movers_;     ///< bodies that move, ascending
+  std::vector<std::size_t> resting_;    ///< the others
+  RestingGrid resting_grid_;            ///< resting_' boxes
+  bool resting_built_ = false;          ///< ... built at these:
+  std::uint64_t resting_version_ = 0;
+  std::uint64_t resting_stamp_ = 0;
+  double resting_margin_ = 0.0;
+  std::uint64_t sleep_stamp_ = 0;       ///< bumped whenever a body falls asleep or wakes
+  std::vector<Aabb> mover_boxes_;
+  std::vector<BodyPair> mover_pairs_;
+  std::vector<BodyPair> resting_pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact this substep

@@ -63,6 +63,7 @@ void WorldImpl::update_sleep()
   }
   if (fell_asleep)
   {
+    ++sleep_stamp_;
     label_new_sleepers();                                 // world_sleeping_contacts.cpp
     put_contacts_aside();
   }

@@ -82,6 +82,7 @@ void WorldImpl::put_contacts_aside()
 void WorldImpl::wake_island(std::uint32_t label, std::vector<WorldContact>& into)
 {
   keep_sleeping_for_rollback();
+  ++sleep_stamp_;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     if (island_label_[i] == label)
@@ -118,6 +119,7 @@ void WorldImpl::wake_everyone()
     return;
   }
   keep_sleeping_for_rollback();
+  ++sleep_stamp_;
   merge_into(contacts_, sleeping_contacts_, merge_scratch_);
   sleeping_contacts_.clear();
   sleeping_penetration_ = 0.0;

@@ -330,6 +330,7 @@ void WorldImpl::restore_motion()
     contacts_.swap(cache_);
   }
   asleep_.swap(saved_asleep_);
+  ++sleep_stamp_;
   saving_motion_ = false;
   if (sleeping_kept_)
   {

@@ -105,6 +105,11 @@ void RestingGrid::build(const std::vector<Aabb>& boxes, const std::vector<std::s
   }
   large_begin_ = members_.size();
   members_.insert(members_.end(), large_.begin(), large_.end());
+  large_bodies_.clear();
+  for (const Member& m : large_)
+  {
+    large_bodies_.push_back(m.body);
+  }
   std::sort(entries_.begin(), entries_.end(), [](const Entry& p, const Entry& q) {
     return p.key < q.key || (p.key == q.key && p.member < q.member);
   });
@@ -124,9 +129,9 @@ void RestingGrid::query(const Aabb& box, std::size_t mover, std::vector<BodyPair
   {
     return;
   }
-  for (std::size_t k = large_begin_; k < members_.size(); ++k)
+  if (entries_.empty())
   {
-    visit(members_[k], box, mover, pairs);
+    return;
   }
   // The query's cells, clipped to the occupied ones (a lower bound clipped
   // to 0 leaves the low-corner test unchanged: every member's is >= 0).

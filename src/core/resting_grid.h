@@ -22,6 +22,11 @@ public:
   void build(const std::vector<Aabb>& boxes, const std::vector<std::size_t>& members);
   /// Appends (min, max) of (mover, member) for every member whose box
   /// overlaps `box` (closed intervals), each once, in no particular order.
+  /// Large members are not queried: the caller pairs them with the movers
+  /// (BroadPhase handles a few large boxes well). Ascending body indices.
+  const std::vector<std::size_t>& large() const { return large_bodies_; }
+  /// No member in the grid (every resting box, if any, is large).
+  bool empty() const { return entries_.empty(); }
   void query(const Aabb& box, std::size_t mover, std::vector<BodyPair>& pairs) const;
 
 private:
@@ -53,6 +58,7 @@ private:
   std::vector<Entry> entries_;      ///< (cell, member) sorted by cell
   std::vector<double> extents_;     ///< build's scratch
   std::vector<Member> large_;
+  std::vector<std::size_t> large_bodies_;
 };
 
 }  // namespace detail

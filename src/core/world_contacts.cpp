@@ -88,31 +88,45 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 void WorldImpl::find_mover_pairs()
 {
   refresh_resting_grid();
-  const std::size_t m = movers_.size();
+  // The movers and the few large resting boxes (a ground) go to one broad
+  // phase, in ascending body order; the other resting boxes are queried in
+  // the resting grid. Merged in (i, j) order, the pairs are those of one
+  // broad phase over every box, less the pairs in which nothing moves.
+  const std::vector<std::size_t>& large = resting_grid_.large();
+  looked_.resize(movers_.size() + large.size());
+  std::merge(movers_.begin(), movers_.end(), large.begin(), large.end(), looked_.begin());
+  const std::size_t m = looked_.size();
   mover_boxes_.resize(m);
   workers_.parallel_for(m, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
       // The soft step collides once per frame, so a pair that the frame's
       // motion can close gets its contact now: the margin grows by how far
-      // each body can travel in the frame.
-      const std::size_t i = movers_[k];
-      reach_[i] = margin_ > 0.0 ? frame_reach(bodies_[i]) : 0.0;
+      // each body can travel in the frame (reach_ is 0 for a resting body).
+      const std::size_t i = looked_[k];
+      reach_[i] = margin_ > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
       mover_boxes_[k] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
     }
   });
-  // Movers with each other, then with the resting grid; merged in (i, j)
-  // order, the pairs are those of one broad phase over every box, less the
-  // pairs in which nothing moves.
   broad_phase_.find_pairs(mover_boxes_, mover_pairs_, workers_);
-  for (BodyPair& pair : mover_pairs_)
+  auto kept = mover_pairs_.begin();
+  for (const BodyPair& pair : mover_pairs_)
   {
-    pair = {movers_[pair.first], movers_[pair.second]};  // movers_ ascends: the order holds
+    const std::size_t i = looked_[pair.first];
+    const std::size_t j = looked_[pair.second];
+    if (is_mover(i) || is_mover(j))
+    {
+      *kept++ = {i, j};  // looked_ ascends: the order holds
+    }
   }
+  mover_pairs_.erase(kept, mover_pairs_.end());
   resting_pairs_.clear();
-  for (std::size_t k = 0; k < m; ++k)
+  for (std::size_t k = 0; k < m && !resting_grid_.empty(); ++k)
   {
-    resting_grid_.query(mover_boxes_[k], movers_[k], resting_pairs_);
+    if (is_mover(looked_[k]))
+    {
+      resting_grid_.query(mover_boxes_[k], looked_[k], resting_pairs_);
+    }
   }
   std::sort(resting_pairs_.begin(), resting_pairs_.end());
   const std::size_t count = mover_pairs_.size() + resting_pairs_.size();

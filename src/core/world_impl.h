@@ -403,7 +403,8 @@ struct WorldImpl
   std::uint64_t resting_stamp_ = 0;
   double resting_margin_ = 0.0;
   std::uint64_t sleep_stamp_ = 0;       ///< bumped whenever a body falls asleep or wakes
-  std::vector<Aabb> mover_boxes_;
+  std::vector<std::size_t> looked_;     ///< movers_ and the large resting bodies, ascending
+  std::vector<Aabb> mover_boxes_;       ///< their boxes
   std::vector<BodyPair> mover_pairs_;
   std::vector<BodyPair> resting_pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)

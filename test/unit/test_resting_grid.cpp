@@ -1,6 +1,7 @@
 // The resting grid (src/core/resting_grid.h): queried from every moving box,
-// it must find exactly the (mover, resting) pairs whose boxes overlap, each
-// once, for any mix of sizes, touching boxes, huge and non-finite ones.
+// with its large members paired by the caller, it must find exactly the
+// (mover, resting) pairs whose boxes overlap, each once, for any mix of
+// sizes, touching boxes, huge and non-finite ones.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -59,6 +60,15 @@ std::vector<BodyPair> from_grid(const std::vector<Aabb>& boxes, const std::vecto
     if (moving[i])
     {
       grid.query(boxes[i], i, pairs);
+      // The large members are the caller's to pair.
+      for (std::size_t j : grid.large())
+      {
+        if (boxes[i].overlaps(boxes[j]) && std::isfinite(boxes[i].lo.x + boxes[i].hi.x + boxes[i].lo.y + boxes[i].hi.y) &&
+            boxes[i].lo.x <= boxes[i].hi.x && boxes[i].lo.y <= boxes[i].hi.y)
+        {
+          pairs.emplace_back(std::min(i, j), std::max(i, j));
+        }
+      }
     }
   }
   std::sort(pairs.begin(), pairs.end());

@@ -19,6 +19,8 @@ constexpr double kCellsPerSize = 1.0;
 constexpr std::int64_t kMaxCellsPerSide = 4;
 /// Boxes reaching beyond this many cells from the origin are kept out too.
 constexpr double kCellLimit = 536870912.0;  // 2^29
+/// With this few resting boxes (a ground and walls) every one counts as large.
+constexpr std::size_t kFewMembers = 32;
 /// A query covering more cells than this tests every member instead.
 constexpr std::int64_t kMaxQueryCells = 1024;
 
@@ -76,6 +78,7 @@ void RestingGrid::build(const std::vector<Aabb>& boxes, const std::vector<std::s
   y1_ = -1;
   // Grid members first, large ones after.
   large_.clear();
+  const bool few = extents_.size() <= kFewMembers;
   for (std::size_t i : members)
   {
     const Aabb& b = boxes[i];
@@ -87,7 +90,7 @@ void RestingGrid::build(const std::vector<Aabb>& boxes, const std::vector<std::s
     const std::int64_t x1 = cell_x(b.hi.x);
     const std::int64_t y1 = cell_y(b.hi.y);
     const bool far = (b.hi.x - origin_x_) * inv_cell_ >= kCellLimit || (b.hi.y - origin_y_) * inv_cell_ >= kCellLimit;
-    if (far || x1 - m.x0 >= kMaxCellsPerSide || y1 - m.y0 >= kMaxCellsPerSide)
+    if (few || far || x1 - m.x0 >= kMaxCellsPerSide || y1 - m.y0 >= kMaxCellsPerSide)
     {
       large_.push_back(m);
       continue;

@@ -22,8 +22,9 @@ public:
   void build(const std::vector<Aabb>& boxes, const std::vector<std::size_t>& members);
   /// Appends (min, max) of (mover, member) for every member whose box
   /// overlaps `box` (closed intervals), each once, in no particular order.
-  /// Large members are not queried: the caller pairs them with the movers
-  /// (BroadPhase handles a few large boxes well). Ascending body indices.
+  /// Large members (and every member when there are only a few) are not
+  /// queried: the caller pairs them with the movers (BroadPhase handles a
+  /// few large boxes well). Ascending body indices.
   const std::vector<std::size_t>& large() const { return large_bodies_; }
   /// No member in the grid (every resting box, if any, is large).
   bool empty() const { return entries_.empty(); }

@@ -1,6 +1,7 @@
 // Detection for the substep (broad then narrow phase on fresh boxes) and the
 // published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
+#include <atomic>
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
@@ -16,6 +17,9 @@ namespace
 /// normal is undefined and collide() would throw mid-step: any unit vector
 /// separates them, "up" is as good as another.
 constexpr Vec2 kCoincidentNormal{0.0, 1.0};
+
+/// Test hook: every frame rebuilds the resting grid and visits every body.
+std::atomic<bool> g_full_body_passes{false};
 
 bool coincident_disks(const Body& a, const Body& b)
 {
@@ -87,7 +91,10 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 
 void WorldImpl::find_mover_pairs()
 {
-  refresh_resting_grid();
+  if (refresh_resting_grid())
+  {
+    body_pass_full_ = true;  // woken bodies join the movers
+  }
   // The movers and the few large resting boxes (a ground) go to one broad
   // phase, in ascending body order; the other resting boxes are queried in
   // the resting grid. Merged in (i, j) order, the pairs are those of one
@@ -145,13 +152,19 @@ void WorldImpl::find_mover_pairs()
   workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
 }
 
-void WorldImpl::refresh_resting_grid()
+void set_full_body_passes(bool full) { g_full_body_passes.store(full, std::memory_order_relaxed); }
+
+bool WorldImpl::refresh_resting_grid()
 {
   const std::size_t n = bodies_.size();
+  if (g_full_body_passes.load(std::memory_order_relaxed))
+  {
+    resting_built_ = false;
+  }
   if (resting_built_ && resting_version_ == version_ && resting_stamp_ == sleep_stamp_ && resting_margin_ == margin_ &&
       reach_.size() == n)
   {
-    return;
+    return false;
   }
   resting_built_ = true;
   resting_version_ = version_;
@@ -172,6 +185,7 @@ void WorldImpl::refresh_resting_grid()
     boxes_[i] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_) : bodies_[i].aabb();
   }
   resting_grid_.build(boxes_, resting_);
+  return true;
 }
 
 void WorldImpl::pose_bodies()

@@ -78,6 +78,10 @@ inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
   return i;
 }
 
+/// Test hook (world_contacts.cpp): rebuild the resting grid and visit every
+/// body in every frame, as if what rests had just changed.
+void set_full_body_passes(bool full);
+
 /// Test hooks (world_rest.cpp): turn the replay of rest frames off, and count
 /// the frames replayed in this process.
 void set_rest_replay_enabled(bool enabled);
@@ -103,6 +107,7 @@ struct WorldImpl
   void advance(StepContext& ctx, StepReport& report);
   /// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
   void advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept);
+  void advance_body(std::size_t i, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.
@@ -151,6 +156,21 @@ struct WorldImpl
     }
     return best;
   }
+  /// Calls f(i) on the workers for every body the frame's per-body stages
+  /// visit: all of them in a frame that changed which bodies rest, else only
+  /// the movers (a resting body's state and scratch stay as that frame left them).
+  template <class F>
+  void for_each_body(F f)
+  {
+    const bool all = body_pass_full_;
+    workers_.parallel_for(all ? bodies_.size() : movers_.size(), kMinSharedBodies,
+                          [&](std::size_t begin, std::size_t end) {
+                            for (std::size_t k = begin; k < end; ++k)
+                            {
+                              f(all ? k : movers_[k]);
+                            }
+                          });
+  }
   /// The first point at or after k that starts a new body pair (or the end).
   std::size_t pair_boundary(std::size_t k) const;
 
@@ -159,11 +179,11 @@ struct WorldImpl
   void prepare_soft_points(const StepContext& ctx);
   /// prepare_soft_points' per-point work on points [begin, end) (whole pairs).
   void prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
-  /// Each body's pose at prepare and no pose change yet.
-  void reset_body_motion(std::size_t begin, std::size_t end);
-  /// After advance_bodies: a stopped body held, a free one on its parabola,
+  /// Body i's pose at prepare, no pose change yet, not stopped or touching.
+  void reset_body_motion(std::size_t i);
+  /// After advance_body: a stopped body held, a free one on its parabola,
   /// and the pose change its contacts follow.
-  void follow_bodies(std::size_t begin, std::size_t end, const StepContext& ctx);
+  void follow_body(std::size_t i, const StepContext& ctx);
   void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   /// The soft passes, or in exact mode each island's LCP (the passes then
@@ -220,8 +240,9 @@ struct WorldImpl
   void detect(const StepContext& ctx, double margin, StepReport& report);
   /// Broad and narrow phase of the pairs with a mover, within margin_.
   void find_mover_pairs();
-  /// movers_ and the resting bodies' grid, again if what rests or its boxes changed.
-  void refresh_resting_grid();
+  /// movers_ and the resting bodies' grid, again if what rests or its boxes
+  /// changed; true if they were (the frame's per-body stages then visit every body).
+  bool refresh_resting_grid();
   /// How far any point of the body can travel in one frame (m).
   double frame_reach(const Body& b) const;
   /// With `posed`, the polygons' outlines come from pose_bodies (the poses
@@ -403,6 +424,7 @@ struct WorldImpl
   std::uint64_t resting_stamp_ = 0;
   double resting_margin_ = 0.0;
   std::uint64_t sleep_stamp_ = 0;       ///< bumped whenever a body falls asleep or wakes
+  bool body_pass_full_ = true;          ///< this frame's per-body stages visit every body (for_each_body)
   std::vector<std::size_t> looked_;     ///< movers_ and the large resting bodies, ascending
   std::vector<Aabb> mover_boxes_;       ///< their boxes
   std::vector<BodyPair> mover_pairs_;
@@ -418,7 +440,7 @@ struct WorldImpl
   /// soft step: stopped at its time of impact this frame (bytes, not bits:
   /// the workers set their own bodies' flags at once)
   std::vector<unsigned char> stopped_;
-  std::vector<bool> touching_;           ///< soft step: has a contact point this frame
+  std::vector<unsigned char> touching_;  ///< soft step: has a contact point this frame (bytes: the workers reset it)
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at

@@ -87,8 +87,13 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
   for_point_ranges([&](std::size_t begin, std::size_t end) { prepare_soft_range(moving, fixed, begin, end); });
-  stopped_.assign(bodies_.size(), false);
-  touching_.assign(bodies_.size(), false);
+  stopped_.resize(bodies_.size());
+  touching_.resize(bodies_.size());
+  held_position_.resize(bodies_.size());
+  held_theta_.resize(bodies_.size());
+  prepared_position_.resize(bodies_.size());
+  prepared_theta_.resize(bodies_.size());
+  for_each_body([this](std::size_t i) { reset_body_motion(i); });
   // The frame's active points are those of the pairs that hit (detect()),
   // so the short pair list says which bodies they touch.
   for (std::size_t k = 0; k < pairs_.size(); ++k)
@@ -99,12 +104,6 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
       touching_[pairs_[k].second] = true;
     }
   }
-  held_position_.resize(bodies_.size());
-  held_theta_.resize(bodies_.size());
-  prepared_position_.resize(bodies_.size());
-  prepared_theta_.resize(bodies_.size());
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies,
-                        [this](std::size_t begin, std::size_t end) { reset_body_motion(begin, end); });
 }
 
 void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end)
@@ -136,17 +135,16 @@ void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
   }
 }
 
-void WorldImpl::reset_body_motion(std::size_t begin, std::size_t end)
+void WorldImpl::reset_body_motion(std::size_t i)
 {
-  for (std::size_t i = begin; i < end; ++i)
-  {
-    BodyVelocity& body = velocity_[i];
-    body.moved = Vec2{0.0, 0.0};
-    body.turned_cos = 1.0;
-    body.turned_sin = 0.0;
-    prepared_position_[i] = bodies_[i].position();
-    prepared_theta_[i] = bodies_[i].theta();
-  }
+  BodyVelocity& body = velocity_[i];
+  body.moved = Vec2{0.0, 0.0};
+  body.turned_cos = 1.0;
+  body.turned_sin = 0.0;
+  prepared_position_[i] = bodies_[i].position();
+  prepared_theta_[i] = bodies_[i].theta();
+  stopped_[i] = false;
+  touching_[i] = false;
 }
 
 void WorldImpl::aim_at_impact(ContactPoint& p) const
@@ -174,16 +172,13 @@ void WorldImpl::integrate_velocities(const StepContext& ctx)
 {
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
   const double max_spin = kMaxTurnPerSubstep * ctx.inv_h;
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
+  for_each_body([&](std::size_t i) {
+    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
     {
-      if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+      velocity_[i].v = velocity_[i].v + gravity_kick;
+      if (touching_[i])
       {
-        velocity_[i].v = velocity_[i].v + gravity_kick;
-        if (touching_[i])
-        {
-          velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
-        }
+        velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
       }
     }
   });
@@ -241,44 +236,41 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   store_velocities();
   const bool swept = sweep(ctx.h, report);                // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    advance_bodies(begin, end, ctx, swept);               // world_step.cpp
-    follow_bodies(begin, end, ctx);
+  for_each_body([&](std::size_t i) {
+    advance_body(i, ctx, swept);                          // world_step.cpp
+    follow_body(i, ctx);
   });
 }
 
-void WorldImpl::follow_bodies(std::size_t begin, std::size_t end, const StepContext& ctx)
+void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
 {
-  for (std::size_t i = begin; i < end; ++i)
+  Body& b = bodies_[i];
+  if (stopped_[i])
   {
-    Body& b = bodies_[i];
-    if (stopped_[i])
-    {
-      b.set_position(held_position_[i]);
-      b.set_theta(held_theta_[i]);
-      continue;
-    }
-    if (clamped(i))
-    {
-      stopped_[i] = true;
-      held_position_[i] = b.position();
-      held_theta_[i] = b.theta();
-    }
-    else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
-    {
-      // In free flight the substep's mean velocity is the end one less half
-      // its gravity kick: a thrown body follows its parabola exactly.
-      b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
-    }
-    BodyVelocity& state = velocity_[i];
-    state.moved = b.position() - prepared_position_[i];
-    // A body that has not turned (static, asleep, not spinning) needs no
-    // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
-    const double turned = b.theta() - prepared_theta_[i];
-    const bool still = turned == 0.0 && !std::signbit(turned);
-    state.turned_cos = still ? 1.0 : std::cos(turned);
-    state.turned_sin = still ? 0.0 : std::sin(turned);
+    b.set_position(held_position_[i]);
+    b.set_theta(held_theta_[i]);
+    return;
   }
+  if (clamped(i))
+  {
+    stopped_[i] = true;
+    held_position_[i] = b.position();
+    held_theta_[i] = b.theta();
+  }
+  else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
+  {
+    // In free flight the substep's mean velocity is the end one less half
+    // its gravity kick: a thrown body follows its parabola exactly.
+    b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
+  }
+  BodyVelocity& state = velocity_[i];
+  state.moved = b.position() - prepared_position_[i];
+  // A body that has not turned (static, asleep, not spinning) needs no
+  // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
+  const double turned = b.theta() - prepared_theta_[i];
+  const bool still = turned == 0.0 && !std::signbit(turned);
+  state.turned_cos = still ? 1.0 : std::cos(turned);
+  state.turned_sin = still ? 0.0 : std::sin(turned);
 }
 
 double WorldImpl::followed_penetration()

@@ -13,12 +13,9 @@ namespace detail
 void WorldImpl::load_velocities()
 {
   velocity_.resize(bodies_.size());
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      const Body& b = bodies_[i];
-      velocity_[i] = body_velocity(b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
-    }
+  for_each_body([this](std::size_t i) {
+    const Body& b = bodies_[i];
+    velocity_[i] = body_velocity(b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
   });
 }
 
@@ -26,14 +23,11 @@ void WorldImpl::store_velocities()
 {
   // Impulses never change a static or kinematic body (its points carry zero
   // inverse mass), so only dynamic bodies are written back.
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
+  for_each_body([this](std::size_t i) {
+    if (bodies_[i].type() == BodyType::Dynamic)
     {
-      if (bodies_[i].type() == BodyType::Dynamic)
-      {
-        bodies_[i].set_velocity(velocity_[i].v);
-        bodies_[i].set_omega(velocity_[i].omega);
-      }
+      bodies_[i].set_velocity(velocity_[i].v);
+      bodies_[i].set_omega(velocity_[i].omega);
     }
   });
 }

@@ -77,6 +77,7 @@ void WorldImpl::step_frame(StepReport& report)
   {
     wake_everyone();                                      // world_sleeping_contacts.cpp
   }
+  body_pass_full_ = refresh_resting_grid();               // world_contacts.cpp
   ctx.h = settings_.dt / settings_.substeps;
   ctx.inv_h = 1.0 / ctx.h;
   if (settings_.soft_step)
@@ -169,19 +170,24 @@ void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepCon
 {
   for (std::size_t i = begin; i < end; ++i)
   {
-    Body& b = bodies_[i];
-    if (b.type() == BodyType::Static || asleep_[i])
-    {
-      continue;
-    }
-    const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-    b.set_position(b.position() + b.velocity() * travel);
-    // Kinematic bodies follow their set spin whatever the rotation toggle says.
-    const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-    if (turns && b.omega() != 0.0)
-    {
-      b.set_theta(b.theta() + b.omega() * ctx.h);
-    }
+    advance_body(i, ctx, swept);
+  }
+}
+
+void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
+{
+  Body& b = bodies_[i];
+  if (b.type() == BodyType::Static || asleep_[i])
+  {
+    return;
+  }
+  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+  b.set_position(b.position() + b.velocity() * travel);
+  // Kinematic bodies follow their set spin whatever the rotation toggle says.
+  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+  if (turns && b.omega() != 0.0)
+  {
+    b.set_theta(b.theta() + b.omega() * ctx.h);
   }
 }
 

@@ -77,18 +77,20 @@ bool WorldImpl::is_fast(std::size_t i, Vec2 displacement) const
 bool WorldImpl::mark_swept_bodies(double h)
 {
   const Toggle mode = settings_.time_of_impact;
+  // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      const Body& b = bodies_[i];
-      const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
-      const bool moving = d.x != 0.0 || d.y != 0.0;
-      const bool awake = b.type() == BodyType::Dynamic && !asleep_[i];
-      swept_[i] = awake && (mode == Toggle::On ? moving : is_fast(i, d));
-    }
+  for_each_body([&](std::size_t i) {
+    const Body& b = bodies_[i];
+    const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
+    const bool moving = d.x != 0.0 || d.y != 0.0;
+    const bool awake = b.type() == BodyType::Dynamic && !asleep_[i];
+    swept_[i] = awake && (mode == Toggle::On ? moving : is_fast(i, d));
   });
-  return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
+  if (body_pass_full_)
+  {
+    return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
+  }
+  return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != 0; });
 }
 
 bool WorldImpl::sweep(double h, StepReport& report)

@@ -191,6 +191,12 @@ bool WorldImpl::refresh_resting_grid()
 void WorldImpl::pose_bodies()
 {
   const std::size_t n = bodies_.size();
+  if (!body_pass_full_ && posed_offset_.size() == n)
+  {
+    // A resting body's outline is where the frame that made it rest put it.
+    for_each_body([this](std::size_t i) { pose_range(this, i, i + 1); });
+    return;
+  }
   posed_offset_.resize(n);
   std::size_t total = 0;
   for (std::size_t i = 0; i < n; ++i)

@@ -162,14 +162,12 @@ struct WorldImpl
   template <class F>
   void for_each_body(F f)
   {
-    const bool all = body_pass_full_;
-    workers_.parallel_for(all ? bodies_.size() : movers_.size(), kMinSharedBodies,
-                          [&](std::size_t begin, std::size_t end) {
-                            for (std::size_t k = begin; k < end; ++k)
-                            {
-                              f(all ? k : movers_[k]);
-                            }
-                          });
+    workers_.parallel_for(visited_count(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        f(visited(k));
+      }
+    });
   }
   /// The first point at or after k that starts a new body pair (or the end).
   std::size_t pair_boundary(std::size_t k) const;
@@ -243,6 +241,15 @@ struct WorldImpl
   /// movers_ and the resting bodies' grid, again if what rests or its boxes
   /// changed; true if they were (the frame's per-body stages then visit every body).
   bool refresh_resting_grid();
+  /// movers_ lists the bodies that move now (no sleep, wake or edit since it was made).
+  bool movers_current() const
+  {
+    return resting_built_ && resting_version_ == version_ && resting_stamp_ == sleep_stamp_;
+  }
+  /// The bodies a per-body stage visits this frame (for_each_body's list):
+  /// body k of them is visited(k).
+  std::size_t visited_count() const { return body_pass_full_ ? bodies_.size() : movers_.size(); }
+  std::size_t visited(std::size_t k) const { return body_pass_full_ ? k : movers_[k]; }
   /// How far any point of the body can travel in one frame (m).
   double frame_reach(const Body& b) const;
   /// With `posed`, the polygons' outlines come from pose_bodies (the poses
@@ -455,6 +462,9 @@ struct WorldImpl
   std::vector<double> kicked_omega_;
   std::vector<std::size_t> island_;   ///< union-find parents for sleeping
   std::vector<bool> island_awake_;
+  std::size_t asleep_count_ = 0;        ///< bodies asleep, counted at this sleep stamp and version:
+  std::uint64_t asleep_counted_stamp_ = ~std::uint64_t{0};
+  std::uint64_t asleep_counted_version_ = 0;
 
   // What a failed step puts back (kept across steps: no allocation per step).
   std::vector<BodyMotion> saved_motion_;

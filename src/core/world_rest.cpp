@@ -28,6 +28,10 @@ std::uint64_t replayed_rest_frames() { return g_replayed_frames.load(std::memory
 
 bool WorldImpl::at_rest() const
 {
+  if (movers_current())
+  {
+    return movers_.empty();
+  }
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     if (bodies_[i].type() == BodyType::Dynamic ? !asleep_[i] : is_mover(i))

@@ -13,12 +13,17 @@ namespace detail
 {
 void WorldImpl::update_sleep()
 {
+  // Only the bodies this frame visits can change: the others sleep, or do
+  // not move (for_each_body).
   const std::size_t n = bodies_.size();
+  const std::size_t visits = visited_count();
   update_rest_times();
   island_.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
+  island_awake_.resize(n);
+  for (std::size_t k = 0; k < visits; ++k)
   {
-    island_[i] = i;
+    island_[visited(k)] = visited(k);
+    island_awake_[visited(k)] = false;
   }
   for (const ContactPoint& row : points_)
   {
@@ -33,17 +38,18 @@ void WorldImpl::update_sleep()
       rest_time_[dynamic_a ? row.a : row.b] = 0.0;  // being pushed is not resting
     }
   }
-  island_awake_.assign(n, false);
   bool fell_asleep = false;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t k = 0; k < visits; ++k)
   {
+    const std::size_t i = visited(k);
     if (bodies_[i].type() == BodyType::Dynamic && rest_time_[i] < settings_.sleep_time)
     {
       island_awake_[island_root(island_, i)] = true;
     }
   }
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t k = 0; k < visits; ++k)
   {
+    const std::size_t i = visited(k);
     if (bodies_[i].type() != BodyType::Dynamic)
     {
       continue;
@@ -73,8 +79,9 @@ void WorldImpl::update_rest_times()
 {
   const double v2 = settings_.sleep_linear_speed * settings_.sleep_linear_speed;
   const double w2 = settings_.sleep_angular_speed * settings_.sleep_angular_speed;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  for (std::size_t k = 0; k < visited_count(); ++k)
   {
+    const std::size_t i = visited(k);
     const Body& b = bodies_[i];
     if (b.type() != BodyType::Dynamic || asleep_[i])
     {

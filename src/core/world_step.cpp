@@ -215,28 +215,42 @@ void WorldImpl::finish_report(StepReport& report)
   // The soft step follows its contacts' gaps from the poses; the Fx2D step,
   // whose correction is linearised, measures them again.
   report.max_penetration = settings_.soft_step ? followed_penetration() : measure_penetration();
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  // A sleeping body's kinetic energy is exactly 0: summing the movers' in
+  // order gives the bits of summing every body's.
+  const bool movers_only = movers_current() && !body_pass_full_;
+  const std::size_t count = movers_only ? movers_.size() : bodies_.size();
+  for (std::size_t k = 0; k < count; ++k)
   {
+    const std::size_t i = movers_only ? movers_[k] : k;
     if (bodies_[i].type() == BodyType::Dynamic)
     {
       report.kinetic_energy += bodies_[i].kinetic_energy();
     }
-    report.sleeping_bodies += asleep_[i] ? 1 : 0;
   }
+  if (asleep_counted_stamp_ != sleep_stamp_ || asleep_counted_version_ != version_)
+  {
+    asleep_counted_stamp_ = sleep_stamp_;
+    asleep_counted_version_ = version_;
+    asleep_count_ = static_cast<std::size_t>(std::count(asleep_.begin(), asleep_.end(), true));
+  }
+  report.sleeping_bodies += asleep_count_;
 }
 
 void WorldImpl::require_finite_state()
 {
   // Each part finds its first bad body; the first part's that has one is the
   // first of all.
-  const std::size_t parts = bodies_.size() < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
-  first_bad_.assign(parts, bodies_.size());
+  // Only the bodies the frame visited can have changed (for_each_body).
+  const std::size_t n = bodies_.size();
+  const std::size_t visits = visited_count();
+  const std::size_t parts = visits < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
+  first_bad_.assign(parts, n);
   workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
     for (std::size_t part = begin; part < end; ++part)
     {
-      const std::size_t n = bodies_.size();
-      for (std::size_t i = n * part / parts; i < n * (part + 1) / parts && first_bad_[part] == n; ++i)
+      for (std::size_t k = visits * part / parts; k < visits * (part + 1) / parts && first_bad_[part] == n; ++k)
       {
+        const std::size_t i = visited(k);
         first_bad_[part] = non_finite_state_field(bodies_[i]) == nullptr ? n : i;
       }
     }

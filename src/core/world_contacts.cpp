@@ -121,7 +121,7 @@ void WorldImpl::find_mover_pairs()
   {
     const std::size_t i = looked_[pair.first];
     const std::size_t j = looked_[pair.second];
-    if (is_mover(i) || is_mover(j))
+    if (!is_resting_[i] || !is_resting_[j])
     {
       *kept++ = {i, j};  // looked_ ascends: the order holds
     }
@@ -135,14 +135,14 @@ void WorldImpl::find_mover_pairs()
       resting_grid_.query(mover_boxes_[k], looked_[k], resting_pairs_);
     }
   }
-  std::sort(resting_pairs_.begin(), resting_pairs_.end());
-  const std::size_t count = mover_pairs_.size() + resting_pairs_.size();
-  if (count > pairs_.capacity())
+  if (resting_pairs_.empty())
   {
-    pairs_.reserve(2 * count);  // geometric: a count that creeps up allocates rarely
+    pairs_.swap(mover_pairs_);  // no copy: each buffer keeps its capacity
   }
-  pairs_.resize(count);
-  std::merge(mover_pairs_.begin(), mover_pairs_.end(), resting_pairs_.begin(), resting_pairs_.end(), pairs_.begin());
+  else
+  {
+    merge_pairs();
+  }
   // The narrow phase of the pairs with a moving body, split across the
   // workers (each writes its own pairs' slots); then, in pair order, what
   // each pair adds and where; then the points, split across the workers
@@ -153,6 +153,18 @@ void WorldImpl::find_mover_pairs()
 }
 
 void set_full_body_passes(bool full) { g_full_body_passes.store(full, std::memory_order_relaxed); }
+
+void WorldImpl::merge_pairs()
+{
+  std::sort(resting_pairs_.begin(), resting_pairs_.end());
+  const std::size_t count = mover_pairs_.size() + resting_pairs_.size();
+  if (count > pairs_.capacity())
+  {
+    pairs_.reserve(2 * count);  // geometric: a count that creeps up allocates rarely
+  }
+  pairs_.resize(count);
+  std::merge(mover_pairs_.begin(), mover_pairs_.end(), resting_pairs_.begin(), resting_pairs_.end(), pairs_.begin());
+}
 
 bool WorldImpl::refresh_resting_grid()
 {
@@ -174,6 +186,7 @@ bool WorldImpl::refresh_resting_grid()
   resting_.clear();
   boxes_.resize(n);
   reach_.assign(n, 0.0);
+  is_resting_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i)
   {
     if (is_mover(i))
@@ -182,6 +195,7 @@ bool WorldImpl::refresh_resting_grid()
       continue;
     }
     resting_.push_back(i);
+    is_resting_[i] = 1;
     boxes_[i] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_) : bodies_[i].aabb();
   }
   resting_grid_.build(boxes_, resting_);

@@ -107,7 +107,22 @@ struct WorldImpl
   void advance(StepContext& ctx, StepReport& report);
   /// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
   void advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept);
-  void advance_body(std::size_t i, const StepContext& ctx, bool swept);
+  void advance_body(std::size_t i, const StepContext& ctx, bool swept)
+  {
+    Body& b = bodies_[i];
+    if (b.type() == BodyType::Static || asleep_[i])
+    {
+      return;
+    }
+    const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+    b.set_position(b.position() + b.velocity() * travel);
+    // Kinematic bodies follow their set spin whatever the rotation toggle says.
+    const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+    if (turns && b.omega() != 0.0)
+    {
+      b.set_theta(b.theta() + b.omega() * ctx.h);
+    }
+  }
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.
@@ -162,13 +177,25 @@ struct WorldImpl
   template <class F>
   void for_each_body(F f)
   {
-    workers_.parallel_for(visited_count(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    if (body_pass_full_)
+    {
+      workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          f(i);
+        }
+      });
+      return;
+    }
+    workers_.parallel_for(movers_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k)
       {
-        f(visited(k));
+        f(movers_[k]);
       }
     });
   }
+  /// How many bodies sleep now (counted again after a sleep, wake or edit).
+  std::size_t asleep_bodies();
   /// The first point at or after k that starts a new body pair (or the end).
   std::size_t pair_boundary(std::size_t k) const;
 
@@ -238,6 +265,8 @@ struct WorldImpl
   void detect(const StepContext& ctx, double margin, StepReport& report);
   /// Broad and narrow phase of the pairs with a mover, within margin_.
   void find_mover_pairs();
+  /// pairs_: the movers' pairs merged with the resting grid's, in (i, j) order.
+  void merge_pairs();
   /// movers_ and the resting bodies' grid, again if what rests or its boxes
   /// changed; true if they were (the frame's per-body stages then visit every body).
   bool refresh_resting_grid();
@@ -425,6 +454,7 @@ struct WorldImpl
   // The broad phase looks from the movers (world_contacts.cpp).
   std::vector<std::size_t> movers_;     ///< bodies that move, ascending
   std::vector<std::size_t> resting_;    ///< the others
+  std::vector<unsigned char> is_resting_;  ///< by body: in resting_
   RestingGrid resting_grid_;            ///< resting_' boxes
   bool resting_built_ = false;          ///< ... built at these:
   std::uint64_t resting_version_ = 0;

@@ -112,9 +112,20 @@ void WorldImpl::wake_island(std::uint32_t label, std::vector<WorldContact>& into
   cache_cursor_ = cache_.size() + 1;  // the cache may have changed: the next lookup searches
 }
 
+std::size_t WorldImpl::asleep_bodies()
+{
+  if (asleep_counted_stamp_ != sleep_stamp_ || asleep_counted_version_ != version_)
+  {
+    asleep_counted_stamp_ = sleep_stamp_;
+    asleep_counted_version_ = version_;
+    asleep_count_ = static_cast<std::size_t>(std::count(asleep_.begin(), asleep_.end(), true));
+  }
+  return asleep_count_;
+}
+
 void WorldImpl::wake_everyone()
 {
-  if (sleeping_contacts_.empty() && std::find(asleep_.begin(), asleep_.end(), true) == asleep_.end())
+  if (sleeping_contacts_.empty() && asleep_bodies() == 0)
   {
     return;
   }
@@ -129,6 +140,10 @@ void WorldImpl::wake_everyone()
 
 bool WorldImpl::wake_reached_islands()
 {
+  if (asleep_bodies() == 0)
+  {
+    return false;
+  }
   bool woke = false;
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {

@@ -77,7 +77,10 @@ void WorldImpl::step_frame(StepReport& report)
   {
     wake_everyone();                                      // world_sleeping_contacts.cpp
   }
-  body_pass_full_ = refresh_resting_grid();               // world_contacts.cpp
+  // Visiting every body is always right; only the movers, cheaper when
+  // most of the world rests (for_each_body).
+  const bool rebuilt = refresh_resting_grid();            // world_contacts.cpp
+  body_pass_full_ = rebuilt || 2 * movers_.size() > bodies_.size();
   ctx.h = settings_.dt / settings_.substeps;
   ctx.inv_h = 1.0 / ctx.h;
   if (settings_.soft_step)
@@ -174,23 +177,6 @@ void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepCon
   }
 }
 
-void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
-{
-  Body& b = bodies_[i];
-  if (b.type() == BodyType::Static || asleep_[i])
-  {
-    return;
-  }
-  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-  b.set_position(b.position() + b.velocity() * travel);
-  // Kinematic bodies follow their set spin whatever the rotation toggle says.
-  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-  if (turns && b.omega() != 0.0)
-  {
-    b.set_theta(b.theta() + b.omega() * ctx.h);
-  }
-}
-
 void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
 {
   if (settings_.solver_mode == SolverMode::Exact)
@@ -227,13 +213,7 @@ void WorldImpl::finish_report(StepReport& report)
       report.kinetic_energy += bodies_[i].kinetic_energy();
     }
   }
-  if (asleep_counted_stamp_ != sleep_stamp_ || asleep_counted_version_ != version_)
-  {
-    asleep_counted_stamp_ = sleep_stamp_;
-    asleep_counted_version_ = version_;
-    asleep_count_ = static_cast<std::size_t>(std::count(asleep_.begin(), asleep_.end(), true));
-  }
-  report.sleeping_bodies += asleep_count_;
+  report.sleeping_bodies += asleep_bodies();
 }
 
 void WorldImpl::require_finite_state()

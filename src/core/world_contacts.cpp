@@ -187,6 +187,7 @@ bool WorldImpl::refresh_resting_grid()
   boxes_.resize(n);
   reach_.assign(n, 0.0);
   is_resting_.assign(n, 0);
+  resting_census_ = BodyCensus{};
   for (std::size_t i = 0; i < n; ++i)
   {
     if (is_mover(i))
@@ -196,6 +197,7 @@ bool WorldImpl::refresh_resting_grid()
     }
     resting_.push_back(i);
     is_resting_[i] = 1;
+    count_body(i, resting_census_);
     boxes_[i] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_) : bodies_[i].aabb();
   }
   resting_grid_.build(boxes_, resting_);

@@ -32,20 +32,23 @@ void BodyCensus::add(const BodyCensus& other)
 
 BodyCensus WorldImpl::take_census()
 {
-  // Counts only, so the parts' sums are the one-pass ones.
-  const std::size_t parts = bodies_.size() < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
+  // Counts only, so the parts' sums are the one-pass ones. A resting body's
+  // count cannot change while it rests: the resting bodies' census is kept
+  // with their grid and only the movers are counted again.
+  const bool movers_only = movers_current();
+  const std::size_t n = movers_only ? movers_.size() : bodies_.size();
+  const std::size_t parts = n < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
   census_parts_.assign(parts, BodyCensus{});
   workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
     for (std::size_t part = begin; part < end; ++part)
     {
-      const std::size_t n = bodies_.size();
-      for (std::size_t i = n * part / parts; i < n * (part + 1) / parts; ++i)
+      for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
       {
-        count_body(i, census_parts_[part]);
+        count_body(movers_only ? movers_[k] : k, census_parts_[part]);
       }
     }
   });
-  BodyCensus census;
+  BodyCensus census = movers_only ? resting_census_ : BodyCensus{};
   for (const BodyCensus& part : census_parts_)
   {
     census.add(part);

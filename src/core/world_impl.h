@@ -455,6 +455,7 @@ struct WorldImpl
   std::vector<std::size_t> movers_;     ///< bodies that move, ascending
   std::vector<std::size_t> resting_;    ///< the others
   std::vector<unsigned char> is_resting_;  ///< by body: in resting_
+  BodyCensus resting_census_;           ///< count_body over resting_
   RestingGrid resting_grid_;            ///< resting_' boxes
   bool resting_built_ = false;          ///< ... built at these:
   std::uint64_t resting_version_ = 0;

@@ -130,6 +130,8 @@ struct WorldImpl
   /// Keeps aside what a step of `frames` frames changes.
   void save_motion(int frames);
   void restore_motion();
+  /// Body i's motion and rest time into the rollback buffers.
+  void keep_body(std::size_t i);
   /// The last contacts become the cache that warm starting reads; swapping
   /// keeps both buffers' capacity.
   void swap_contact_buffers();
@@ -504,6 +506,7 @@ struct WorldImpl
   int contact_swaps_ = 0;           ///< swaps of the contact buffers since save_motion
   std::vector<bool> saved_asleep_;
   bool saving_motion_ = false;  ///< inside a step that keeps what it changes for a rollback
+  bool saved_movers_only_ = false;  ///< only the movers' motion is kept so far
   bool sleeping_kept_ = false;  ///< the step changed what sleeps; the state before is kept below
   std::vector<WorldContact> saved_sleeping_contacts_;
   double saved_sleeping_penetration_ = 0.0;

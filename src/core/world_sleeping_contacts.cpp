@@ -155,6 +155,7 @@ bool WorldImpl::wake_reached_islands()
     {
       if (asleep_[i])
       {
+        keep_sleeping_for_rollback();
         rest_time_[i] = 0.0;  // being reached is not resting
         wake_island(island_label_[i], cache_);
         woke = true;
@@ -171,6 +172,17 @@ void WorldImpl::keep_sleeping_for_rollback()
     return;
   }
   sleeping_kept_ = true;
+  // The resting bodies are about to change too: they are still as the step
+  // found them (the step after they came to rest kept every body, so their
+  // entries are normally fresh already; this does not rely on it).
+  if (saved_movers_only_)
+  {
+    saved_movers_only_ = false;
+    for (std::size_t i : resting_)
+    {
+      keep_body(i);
+    }
+  }
   saved_sleeping_contacts_ = sleeping_contacts_;
   saved_sleeping_penetration_ = sleeping_penetration_;
   saved_island_label_ = island_label_;

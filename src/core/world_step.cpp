@@ -278,12 +278,16 @@ void WorldImpl::save_motion(int frames)
 {
   // Only what a step changes is kept aside (no outlines, no scratch), in
   // buffers that keep their capacity from step to step.
+  // While the movers stay the movers only they change; the first change of
+  // what sleeps keeps the others too (keep_sleeping_for_rollback).
+  saved_movers_only_ = movers_current();
   saved_motion_.resize(bodies_.size());
-  workers_.parallel_for(bodies_.size(), kMinSharedBodies, [this](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
+  saved_rest_time_.resize(bodies_.size());
+  const std::size_t count = saved_movers_only_ ? movers_.size() : bodies_.size();
+  workers_.parallel_for(count, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      const Body& b = bodies_[i];
-      saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
+      keep_body(saved_movers_only_ ? movers_[k] : k);
     }
   });
   // A step that swaps the contact buffers once leaves the contacts it started
@@ -298,7 +302,6 @@ void WorldImpl::save_motion(int frames)
   saved_asleep_ = asleep_;
   saving_motion_ = true;
   sleeping_kept_ = false;
-  keep_copy(rest_time_, saved_rest_time_, workers_);
   saved_time_ = time_;
   saved_frame_count_ = frame_count_;
   saved_cache_h_ = cache_h_;
@@ -309,17 +312,27 @@ void WorldImpl::save_motion(int frames)
   }
 }
 
+void WorldImpl::keep_body(std::size_t i)
+{
+  const Body& b = bodies_[i];
+  saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
+  saved_rest_time_[i] = rest_time_[i];
+}
+
 void WorldImpl::restore_motion()
 {
   rest_known_ = false;  // the rest frame remembered may be one this step made
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  const std::size_t count = saved_movers_only_ ? movers_.size() : bodies_.size();
+  for (std::size_t k = 0; k < count; ++k)
   {
+    const std::size_t i = saved_movers_only_ ? movers_[k] : k;
     Body& b = bodies_[i];
     const BodyMotion& m = saved_motion_[i];
     b.set_position(m.position);
     b.set_theta(m.theta);
     b.set_velocity(m.velocity);
     b.set_omega(m.omega);
+    rest_time_[i] = saved_rest_time_[i];
   }
   if (!contacts_in_cache_)
   {
@@ -339,7 +352,6 @@ void WorldImpl::restore_motion()
     island_label_.swap(saved_island_label_);
     next_island_label_ = saved_next_island_label_;
   }
-  rest_time_.swap(saved_rest_time_);
   time_ = saved_time_;
   frame_count_ = saved_frame_count_;
   cache_h_ = saved_cache_h_;

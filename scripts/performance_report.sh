@@ -120,10 +120,10 @@ for scene in pyramid rain; do
   done
 done
 
-log "resting: settled pyramids, sleeping on${BOX2D_V3_DIR:+, and Box2D v3}"
+log "resting: settled pyramids, alone and with one moving body, sleeping on${BOX2D_V3_DIR:+, and Box2D v3}"
 for n in "${RESTING_SIZES[@]}"; do
   # The same pyramid awake, where the throughput sizes do not have it.
-  scenes=(resting)
+  scenes=(resting stirred)
   [[ " ${THROUGHPUT_SIZES[*]} " == *" $n "* ]] || scenes+=(pyramid)
   for scene in "${scenes[@]}"; do
     for engine in collision2d ${BOX2D_V3_DIR:+box2d_v3}; do

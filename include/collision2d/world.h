@@ -140,10 +140,12 @@ public:
   bool has_body(BodyId id) const;
   const Body& body(BodyId id) const;
   const Material& material(BodyId id) const;
-  /// Sets the pose and velocity of a body between frames.
+  /// Sets the pose and velocity of a body between frames; a sleeping body
+  /// wakes with its whole island.
   void set_body_state(BodyId id, Vec2 position, double theta, Vec2 velocity, double omega);
   /// Makes a body dynamic, static or kinematic between frames (a static one
-  /// loses its velocity); it wakes, and its contacts keep their impulses.
+  /// loses its velocity); it wakes (with its island), and its contacts keep
+  /// their impulses.
   void set_body_type(BodyId id, BodyType type);
   /// Ids in ascending order.
   std::vector<BodyId> body_ids() const;
@@ -167,8 +169,12 @@ public:
   /// naming the body, and the world is then put back exactly as it was before
   /// the call (bodies' motion, contacts, sleep and clock).
   StepReport step(int frames = 1);
-  /// Contact points of the last substep with their impulses (pairs of a
-  /// sleeping island keep the values they had when it fell asleep).
+  /// Contact points of the last substep with their impulses, in (a, b)
+  /// order. A sleeping island's contacts keep the values they had when it
+  /// fell asleep: they are kept out of the step until a moving body reaches
+  /// the island, which then wakes whole in that frame. With sleeping islands
+  /// the list is assembled on each call; the reference holds until the next
+  /// call or edit.
   const std::vector<WorldContact>& contacts() const;
   double time() const;
   std::uint64_t frame_count() const;

@@ -94,7 +94,7 @@ struct ContactPoint
   bool pair_block = false;       ///< first point of a manifold: whether its 2x2 block is solvable
   bool kinetic = false;          ///< slid before: the kinetic bound applies
   bool sliding = false;          ///< friction at its bound in the last solve
-  bool active = true;            ///< World: false for a sleeping island's carried point
+  bool active = true;            ///< World: false for a point the velocity prediction leaves out
   bool exact = false;            ///< World: solved by its island's LCP this substep
   bool position_solved = false;  ///< World: penetration corrected by its island's LCP
 

@@ -34,6 +34,9 @@ void WorldImpl::predict_velocities(const StepContext& ctx)
     kicked_velocity_[i] = bodies_[i].velocity();
     kicked_omega_[i] = bodies_[i].omega();
   }
+  // The rows must line up with the cache; right after an island fell asleep
+  // or woke (its contacts put aside or brought back) they do not, and that
+  // substep is not predicted.
   if (points_.size() != cache_.size())
   {
     return;
@@ -43,7 +46,7 @@ void WorldImpl::predict_velocities(const StepContext& ctx)
   for (std::size_t k = 0; k < points_.size(); ++k)
   {
     ContactPoint& row = points_[k];
-    // Rows of bodies that fell asleep since are carried, as in detection.
+    // Rows of bodies asleep now are left out, as detection leaves them out.
     row.active = row.active && previous_point_matches(k) && !asleep_[row.a] && !asleep_[row.b];
     row.lambda_n *= scale;
     row.lambda_t *= scale;

@@ -211,6 +211,11 @@ struct WorldImpl
   /// After advance_body: a stopped body held, a free one on its parabola,
   /// and the pose change its contacts follow.
   void follow_body(std::size_t i, const StepContext& ctx);
+  /// advance_body for the soft step: the body's angle goes to frame_theta_,
+  /// set on the body (with its trigonometry) once, by turn_bodies.
+  void advance_soft_body(std::size_t i, const StepContext& ctx, bool swept);
+  /// The angles in frame_theta_ set on the bodies that turned.
+  void turn_bodies();
   void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   /// The soft passes, or in exact mode each island's LCP (the passes then
@@ -477,6 +482,8 @@ struct WorldImpl
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
   std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared
   std::vector<double> prepared_theta_;
+  std::vector<double> frame_theta_;      ///< soft step: each body's angle during the substeps (turn_bodies)
+  bool thetas_pending_ = false;          ///< frame_theta_ holds angles not yet set on the bodies
   /// soft step: stopped at its time of impact this frame (bytes, not bits:
   /// the workers set their own bodies' flags at once)
   std::vector<unsigned char> stopped_;

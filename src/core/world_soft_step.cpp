@@ -68,6 +68,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     solve_contacts(ctx, false, report);                   // relax
     ++report.substeps;
   }
+  turn_bodies();
   // 4. Restitution to the fixed point, then the impulses kept for next frame.
   if (rows_on())
   {
@@ -93,6 +94,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   held_theta_.resize(bodies_.size());
   prepared_position_.resize(bodies_.size());
   prepared_theta_.resize(bodies_.size());
+  frame_theta_.resize(bodies_.size());
   for_each_body([this](std::size_t i) { reset_body_motion(i); });
   // The frame's active points are those of the pairs that hit (detect()),
   // so the short pair list says which bodies they touch.
@@ -143,6 +145,7 @@ void WorldImpl::reset_body_motion(std::size_t i)
   body.turned_sin = 0.0;
   prepared_position_[i] = bodies_[i].position();
   prepared_theta_[i] = bodies_[i].theta();
+  frame_theta_[i] = bodies_[i].theta();
   stopped_[i] = false;
   touching_[i] = false;
 }
@@ -236,9 +239,44 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   store_velocities();
   const bool swept = sweep(ctx.h, report);                // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
+  thetas_pending_ = true;
   for_each_body([&](std::size_t i) {
-    advance_body(i, ctx, swept);                          // world_step.cpp
+    advance_soft_body(i, ctx, swept);
     follow_body(i, ctx);
+  });
+}
+
+void WorldImpl::advance_soft_body(std::size_t i, const StepContext& ctx, bool swept)
+{
+  // As advance_body, the angle into frame_theta_ (turn_bodies).
+  Body& b = bodies_[i];
+  if (b.type() == BodyType::Static || asleep_[i])
+  {
+    return;
+  }
+  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+  b.set_position(b.position() + b.velocity() * travel);
+  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+  if (turns && b.omega() != 0.0)
+  {
+    frame_theta_[i] = frame_theta_[i] + b.omega() * ctx.h;
+  }
+}
+
+void WorldImpl::turn_bodies()
+{
+  if (!thetas_pending_)
+  {
+    return;
+  }
+  thetas_pending_ = false;
+  for_each_body([this](std::size_t i) {
+    Body& b = bodies_[i];
+    const double theta = frame_theta_[i];
+    if (theta != b.theta() || std::signbit(theta) != std::signbit(b.theta()))
+    {
+      b.set_theta(theta);
+    }
   });
 }
 
@@ -248,14 +286,14 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
   if (stopped_[i])
   {
     b.set_position(held_position_[i]);
-    b.set_theta(held_theta_[i]);
+    frame_theta_[i] = held_theta_[i];
     return;
   }
   if (clamped(i))
   {
     stopped_[i] = true;
     held_position_[i] = b.position();
-    held_theta_[i] = b.theta();
+    held_theta_[i] = frame_theta_[i];
   }
   else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
   {
@@ -267,7 +305,7 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
   state.moved = b.position() - prepared_position_[i];
   // A body that has not turned (static, asleep, not spinning) needs no
   // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
-  const double turned = b.theta() - prepared_theta_[i];
+  const double turned = frame_theta_[i] - prepared_theta_[i];
   const bool still = turned == 0.0 && !std::signbit(turned);
   state.turned_cos = still ? 1.0 : std::cos(turned);
   state.turned_sin = still ? 0.0 : std::sin(turned);

@@ -100,6 +100,7 @@ bool WorldImpl::sweep(double h, StepReport& report)
   {
     return false;
   }
+  turn_bodies();  // the soft step's angles so far: sweeping reads the outlines
   const std::size_t n = bodies_.size();
   toi_.assign(n, 1.0);
   boxes_.resize(n);

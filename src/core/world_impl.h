@@ -107,19 +107,27 @@ struct WorldImpl
   void advance(StepContext& ctx, StepReport& report);
   /// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
   void advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept);
-  void advance_body(std::size_t i, const StepContext& ctx, bool swept)
+  /// Body i's move over the substep (up to its time of impact when
+  /// `swept`); true when it turns, by omega h, which the caller adds to the
+  /// angle it keeps (advance_body: the body's own).
+  bool move_body(std::size_t i, const StepContext& ctx, bool swept)
   {
     Body& b = bodies_[i];
     if (b.type() == BodyType::Static || asleep_[i])
     {
-      return;
+      return false;
     }
     const double travel = swept ? toi_[i] * ctx.h : ctx.h;
     b.set_position(b.position() + b.velocity() * travel);
     // Kinematic bodies follow their set spin whatever the rotation toggle says.
     const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-    if (turns && b.omega() != 0.0)
+    return turns && b.omega() != 0.0;
+  }
+  void advance_body(std::size_t i, const StepContext& ctx, bool swept)
+  {
+    if (move_body(i, ctx, swept))
     {
+      Body& b = bodies_[i];
       b.set_theta(b.theta() + b.omega() * ctx.h);
     }
   }
@@ -208,12 +216,9 @@ struct WorldImpl
   void prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
   /// Body i's pose at prepare, no pose change yet, not stopped or touching.
   void reset_body_motion(std::size_t i);
-  /// After advance_body: a stopped body held, a free one on its parabola,
+  /// After move_body: a stopped body held, a free one on its parabola,
   /// and the pose change its contacts follow.
   void follow_body(std::size_t i, const StepContext& ctx);
-  /// advance_body for the soft step: the body's angle goes to frame_theta_,
-  /// set on the body (with its trigonometry) once, by turn_bodies.
-  void advance_soft_body(std::size_t i, const StepContext& ctx, bool swept);
   /// The angles in frame_theta_ set on the bodies that turned.
   void turn_bodies();
   void aim_at_impact(ContactPoint& p) const;

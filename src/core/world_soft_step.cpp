@@ -240,27 +240,15 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   const bool swept = sweep(ctx.h, report);                // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   thetas_pending_ = true;
+  // The angles go to frame_theta_ and onto the bodies, with their sine and
+  // cosine, once per frame (turn_bodies): nothing reads them between.
   for_each_body([&](std::size_t i) {
-    advance_soft_body(i, ctx, swept);
+    if (move_body(i, ctx, swept))
+    {
+      frame_theta_[i] = frame_theta_[i] + bodies_[i].omega() * ctx.h;
+    }
     follow_body(i, ctx);
   });
-}
-
-void WorldImpl::advance_soft_body(std::size_t i, const StepContext& ctx, bool swept)
-{
-  // As advance_body, the angle into frame_theta_ (turn_bodies).
-  Body& b = bodies_[i];
-  if (b.type() == BodyType::Static || asleep_[i])
-  {
-    return;
-  }
-  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-  b.set_position(b.position() + b.velocity() * travel);
-  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-  if (turns && b.omega() != 0.0)
-  {
-    frame_theta_[i] = frame_theta_[i] + b.omega() * ctx.h;
-  }
 }
 
 void WorldImpl::turn_bodies()

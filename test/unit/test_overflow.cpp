@@ -13,6 +13,7 @@
 #include "collision2d/scenario_io.h"
 #include "collision2d/world.h"
 #include "extremes_support.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
@@ -162,26 +163,6 @@ TEST(Overflow, WorldStepRefusesNamingTheBody)
               now.theta() == then.theta() && now.omega() == then.omega());
 }
 
-bool same_contacts(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
-{
-  if (x.size() != y.size())
-  {
-    return false;
-  }
-  for (std::size_t k = 0; k < x.size(); ++k)
-  {
-    const WorldContact& p = x[k];
-    const WorldContact& q = y[k];
-    if (p.a != q.a || p.b != q.b || p.contact.feature != q.contact.feature || p.contact.normal != q.contact.normal ||
-        p.contact.point != q.contact.point || p.impulse.normal != q.impulse.normal ||
-        p.impulse.tangent != q.impulse.tangent || p.sliding != q.sliding || p.anchor_drift != q.anchor_drift)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 TEST(Overflow, RefusedWorldStepPutsTheContactsBack)
 {
   // Two overlapping disks are pushed apart (a contact with impulses); then a
@@ -209,7 +190,7 @@ TEST(Overflow, RefusedWorldStepPutsTheContactsBack)
       world.set_body_state(thrown, {100.0, 0.0}, 0.0, {0.0, -1e308}, 0.0);
       const World before = world;
       EXPECT_THROW(world.step(frames), std::overflow_error) << "soft " << soft << ", frames " << frames;
-      EXPECT_TRUE(same_contacts(world.contacts(), before.contacts())) << "soft " << soft << ", frames " << frames;
+      EXPECT_TRUE(test::same_contacts(world.contacts(), before.contacts())) << "soft " << soft << ", frames " << frames;
       EXPECT_EQ(world.frame_count(), before.frame_count());
     }
   }

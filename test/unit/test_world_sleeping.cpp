@@ -14,11 +14,15 @@
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
 #include "world_impl.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
 namespace
 {
+using test::same_bits;
+using test::same_contacts;
+
 constexpr int kSettleFrames = 600;  // 10 s: a small pyramid falls asleep well before
 constexpr double kDropHeight = 1.5;  // m above the top box's centre
 constexpr double kDropSpeed = 4.0;   // m/s down
@@ -27,30 +31,6 @@ constexpr double kDiskMass = 2.0;    // kg
 constexpr double kLargest = std::numeric_limits<double>::max();
 constexpr double kFarSpeed = 1e298;   // m/s: a frame moves a body 1.7e296 m, far above the rounding step there
 constexpr double kFrame = 1.0 / 60.0; // s, the scenes' frame
-
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
-
-bool same_contacts(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
-{
-  if (x.size() != y.size())
-  {
-    return false;
-  }
-  for (std::size_t k = 0; k < x.size(); ++k)
-  {
-    const WorldContact& p = x[k];
-    const WorldContact& q = y[k];
-    if (p.a != q.a || p.b != q.b || p.contact.feature != q.contact.feature || p.sliding != q.sliding ||
-        !same_bits(p.contact.point.x, q.contact.point.x) || !same_bits(p.contact.point.y, q.contact.point.y) ||
-        !same_bits(p.contact.penetration, q.contact.penetration) ||
-        !same_bits(p.impulse.normal, q.impulse.normal) || !same_bits(p.impulse.tangent, q.impulse.tangent) ||
-        !same_bits(p.anchor_drift, q.anchor_drift))
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 bool same_bodies(const World& x, const World& y)
 {

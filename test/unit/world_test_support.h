@@ -1,8 +1,10 @@
-// Helpers shared by the World tests: measurements taken while stepping.
+// Helpers shared by the World tests: measurements taken while stepping, and
+// bit-for-bit comparisons of worlds.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -61,6 +63,32 @@ inline double largest_move(const World& world, const std::vector<Vec2>& from, co
     }
   }
   return worst;
+}
+
+inline bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+
+inline bool same_bits(Vec2 x, Vec2 y) { return same_bits(x.x, y.x) && same_bits(x.y, y.y); }
+
+/// Every field of every contact, bit for bit, in the same order.
+inline bool same_contacts(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
+{
+  if (x.size() != y.size())
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < x.size(); ++k)
+  {
+    const WorldContact& p = x[k];
+    const WorldContact& q = y[k];
+    if (p.a != q.a || p.b != q.b || p.contact.feature != q.contact.feature || p.sliding != q.sliding ||
+        !same_bits(p.contact.normal, q.contact.normal) || !same_bits(p.contact.point, q.contact.point) ||
+        !same_bits(p.contact.penetration, q.contact.penetration) || !same_bits(p.impulse.normal, q.impulse.normal) ||
+        !same_bits(p.impulse.tangent, q.impulse.tangent) || !same_bits(p.anchor_drift, q.anchor_drift))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace test

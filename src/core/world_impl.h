@@ -18,75 +18,12 @@
 #include "resting_grid.h"
 #include "soft_rows.h"
 #include "worker_pool.h"
+#include "world_stage_types.h"
 
 namespace collision2d
 {
 namespace detail
 {
-/// What one substep needs to know, decided once per frame or substep.
-struct StepContext
-{
-  double h = 0.0;      ///< substep length (s)
-  double inv_h = 0.0;  ///< 1/s
-  ActiveEffects effects;       ///< what this frame models
-  bool warm_available = false; ///< warm starting on and a cache to start from
-  bool first = false;          ///< first substep of the frame
-  bool warm = false;           ///< this substep starts from cached impulses
-};
-
-/// One soft pass's parameters (world_soft_solve.cpp).
-struct SoftPass;
-
-/// Bodies below which a per-body stage stays on the calling thread: each
-/// body's update is a few operations, less than waking the workers costs.
-constexpr std::size_t kMinSharedBodies = 2048;
-/// Contact points below which a per-point stage stays on the calling thread.
-constexpr std::size_t kMinSharedPoints = 1024;
-/// Broad-phase pairs below which filling their contact rows stays on the
-/// calling thread.
-constexpr std::size_t kMinSharedPairs = 1024;
-
-/// What select_effects needs to know of the bodies (world_effects.cpp).
-struct BodyCensus
-{
-  std::size_t dynamic = 0;
-  std::size_t rough = 0;           ///< bodies with friction
-  std::size_t dynamic_rough = 0;
-  std::size_t bouncy = 0;          ///< bodies with restitution
-  std::size_t dynamic_bouncy = 0;
-  std::size_t turning = 0;         ///< dynamic polygons and spinning dynamic bodies
-  void add(const BodyCensus& other);
-};
-
-/// Each body's pose and velocity, what a failed step puts back.
-struct BodyMotion
-{
-  Vec2 position;
-  double theta = 0.0;
-  Vec2 velocity;
-  double omega = 0.0;
-};
-
-/// The root of island i in a union-find forest, halving the path on the way.
-inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-/// Test hook (world_contacts.cpp): rebuild the resting grid and visit every
-/// body in every frame, as if what rests had just changed.
-void set_full_body_passes(bool full);
-
-/// Test hooks (world_rest.cpp): turn the replay of rest frames off, and count
-/// the frames replayed in this process.
-void set_rest_replay_enabled(bool enabled);
-std::uint64_t replayed_rest_frames();
-
 struct WorldImpl
 {
   explicit WorldImpl(const WorldSettings& settings) : settings_(settings) {}
@@ -110,27 +47,8 @@ struct WorldImpl
   /// Body i's move over the substep (up to its time of impact when
   /// `swept`); true when it turns, by omega h, which the caller adds to the
   /// angle it keeps (advance_body: the body's own).
-  bool move_body(std::size_t i, const StepContext& ctx, bool swept)
-  {
-    Body& b = bodies_[i];
-    if (b.type() == BodyType::Static || asleep_[i])
-    {
-      return false;
-    }
-    const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-    b.set_position(b.position() + b.velocity() * travel);
-    // Kinematic bodies follow their set spin whatever the rotation toggle says.
-    const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-    return turns && b.omega() != 0.0;
-  }
-  void advance_body(std::size_t i, const StepContext& ctx, bool swept)
-  {
-    if (move_body(i, ctx, swept))
-    {
-      Body& b = bodies_[i];
-      b.set_theta(b.theta() + b.omega() * ctx.h);
-    }
-  }
+  bool move_body(std::size_t i, const StepContext& ctx, bool swept);
+  void advance_body(std::size_t i, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
   /// Throws std::overflow_error naming the first body whose state is not finite.

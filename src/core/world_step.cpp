@@ -177,6 +177,29 @@ void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepCon
   }
 }
 
+bool WorldImpl::move_body(std::size_t i, const StepContext& ctx, bool swept)
+{
+  Body& b = bodies_[i];
+  if (b.type() == BodyType::Static || asleep_[i])
+  {
+    return false;
+  }
+  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+  b.set_position(b.position() + b.velocity() * travel);
+  // Kinematic bodies follow their set spin whatever the rotation toggle says.
+  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
+  return turns && b.omega() != 0.0;
+}
+
+void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
+{
+  if (move_body(i, ctx, swept))
+  {
+    Body& b = bodies_[i];
+    b.set_theta(b.theta() + b.omega() * ctx.h);
+  }
+}
+
 void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
 {
   if (settings_.solver_mode == SolverMode::Exact)

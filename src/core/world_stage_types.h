@@ -1,0 +1,82 @@
+// Internal to the core: what the World's stages hand each other besides the
+// World's own state (world_impl.h): the step's context, the body census, the
+// motion a rollback puts back, the thresholds for sharing a stage among the
+// workers, and the test hooks.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "collision2d/world.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// What one substep needs to know, decided once per frame or substep.
+struct StepContext
+{
+  double h = 0.0;      ///< substep length (s)
+  double inv_h = 0.0;  ///< 1/s
+  ActiveEffects effects;       ///< what this frame models
+  bool warm_available = false; ///< warm starting on and a cache to start from
+  bool first = false;          ///< first substep of the frame
+  bool warm = false;           ///< this substep starts from cached impulses
+};
+
+/// One soft pass's parameters (world_soft_solve.cpp).
+struct SoftPass;
+
+/// Bodies below which a per-body stage stays on the calling thread: each
+/// body's update is a few operations, less than waking the workers costs.
+constexpr std::size_t kMinSharedBodies = 2048;
+/// Contact points below which a per-point stage stays on the calling thread.
+constexpr std::size_t kMinSharedPoints = 1024;
+/// Broad-phase pairs below which filling their contact rows stays on the
+/// calling thread.
+constexpr std::size_t kMinSharedPairs = 1024;
+
+/// What select_effects needs to know of the bodies (world_effects.cpp).
+struct BodyCensus
+{
+  std::size_t dynamic = 0;
+  std::size_t rough = 0;           ///< bodies with friction
+  std::size_t dynamic_rough = 0;
+  std::size_t bouncy = 0;          ///< bodies with restitution
+  std::size_t dynamic_bouncy = 0;
+  std::size_t turning = 0;         ///< dynamic polygons and spinning dynamic bodies
+  void add(const BodyCensus& other);
+};
+
+/// Each body's pose and velocity, what a failed step puts back.
+struct BodyMotion
+{
+  Vec2 position;
+  double theta = 0.0;
+  Vec2 velocity;
+  double omega = 0.0;
+};
+
+/// The root of island i in a union-find forest, halving the path on the way.
+inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+/// Test hook (world_contacts.cpp): rebuild the resting grid and visit every
+/// body in every frame, as if what rests had just changed.
+void set_full_body_passes(bool full);
+
+/// Test hooks (world_rest.cpp): turn the replay of rest frames off, and count
+/// the frames replayed in this process.
+void set_rest_replay_enabled(bool enabled);
+std::uint64_t replayed_rest_frames();
+
+}  // namespace detail
+}  // namespace collision2d

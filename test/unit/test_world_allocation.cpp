@@ -67,6 +67,17 @@ Scene sleeping_pyramid()
   return scene;
 }
 
+/// The sleeping pyramid while one kinematic disk slides past, far from it:
+/// the frames step only the movers.
+Scene stirred_pyramid()
+{
+  Scene scene = sleeping_pyramid();
+  Body disk(1.0, 0.5, {-30.0, 3.0}, {0.5, 0.0});
+  disk.set_type(BodyType::Kinematic);
+  scene.bodies.push_back(SceneBody{disk, Material{}, "stirrer"});
+  return scene;
+}
+
 /// Large enough that two workers share every stage they can take.
 Scene shared_pyramid()
 {
@@ -88,6 +99,8 @@ const AllocationCase kCases[] = {
     {"pyramid_soft_step", [] { return scenes::pyramid(20); }, true},
     {"pyramid_fx2d", [] { return scenes::pyramid(20); }, false},
     {"sleeping_pyramid_soft_step", sleeping_pyramid, true},
+    {"stirred_pyramid_soft_step", stirred_pyramid, true},
+    {"stirred_pyramid_fx2d", stirred_pyramid, false},
     {"gas_soft_step", [] { return scenes::elastic_gas(300); }, true},
     {"gas_fx2d", [] { return scenes::elastic_gas(300); }, false},
     {"demo_soft_step", [] { return scenes::demo(); }, true},

@@ -304,9 +304,10 @@ struct WorldImpl
   void wake_everyone();
   /// Detection: wakes the islands that a mover's contact reaches; true if any woke.
   bool wake_reached_islands();
-  /// Before the step first changes the contacts kept aside: keeps them (and
-  /// the starting contacts, if the change reaches them) for a rollback.
-  void keep_sleeping_for_rollback();
+  /// Before the step first changes the contacts kept aside: keeps them (and,
+  /// with `starting_contacts`, the step's starting contacts, which the
+  /// change may reach) for a rollback.
+  void keep_sleeping_for_rollback(bool starting_contacts);
   /// After an edit of contacts_ and asleep_ as a whole (set_step_state):
   /// sleeping contacts aside again, islands labelled from them.
   void sort_out_sleeping();

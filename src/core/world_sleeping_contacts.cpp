@@ -57,7 +57,7 @@ void WorldImpl::label_new_sleepers()
 
 void WorldImpl::put_contacts_aside()
 {
-  keep_sleeping_for_rollback();
+  keep_sleeping_for_rollback(false);  // only this frame's contacts change
   // A contact kept aside keeps its impulses and friction state; its slip is
   // not followed while nothing moves.
   moved_contacts_.clear();
@@ -75,13 +75,20 @@ void WorldImpl::put_contacts_aside()
     }
   }
   contacts_.erase(kept, contacts_.end());
-  merge_into(sleeping_contacts_, moved_contacts_, merge_scratch_);
+  if (sleeping_contacts_.empty())
+  {
+    sleeping_contacts_.swap(moved_contacts_);  // nothing to merge with: no third buffer
+  }
+  else
+  {
+    merge_into(sleeping_contacts_, moved_contacts_, merge_scratch_);
+  }
   measure_sleeping_penetration();
 }
 
 void WorldImpl::wake_island(std::uint32_t label, std::vector<WorldContact>& into)
 {
-  keep_sleeping_for_rollback();
+  keep_sleeping_for_rollback(true);
   ++sleep_stamp_;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
@@ -129,7 +136,7 @@ void WorldImpl::wake_everyone()
   {
     return;
   }
-  keep_sleeping_for_rollback();
+  keep_sleeping_for_rollback(true);
   ++sleep_stamp_;
   merge_into(contacts_, sleeping_contacts_, merge_scratch_);
   sleeping_contacts_.clear();
@@ -155,7 +162,7 @@ bool WorldImpl::wake_reached_islands()
     {
       if (asleep_[i])
       {
-        keep_sleeping_for_rollback();
+        keep_sleeping_for_rollback(true);
         rest_time_[i] = 0.0;  // being reached is not resting
         wake_island(island_label_[i], cache_);
         woke = true;
@@ -165,8 +172,15 @@ bool WorldImpl::wake_reached_islands()
   return woke;
 }
 
-void WorldImpl::keep_sleeping_for_rollback()
+void WorldImpl::keep_sleeping_for_rollback(bool starting_contacts)
 {
+  // Woken contacts join the cache, which may hold the step's starting
+  // contacts: those are kept too.
+  if (saving_motion_ && starting_contacts && contacts_in_cache_)
+  {
+    saved_contacts_ = contact_swaps_ == 1 ? cache_ : contacts_;
+    contacts_in_cache_ = false;
+  }
   if (!saving_motion_ || sleeping_kept_)
   {
     return;
@@ -187,12 +201,6 @@ void WorldImpl::keep_sleeping_for_rollback()
   saved_sleeping_penetration_ = sleeping_penetration_;
   saved_island_label_ = island_label_;
   saved_next_island_label_ = next_island_label_;
-  // Woken contacts join the cache, which may be the step's starting contacts.
-  if (contacts_in_cache_)
-  {
-    saved_contacts_ = contact_swaps_ == 1 ? cache_ : contacts_;
-    contacts_in_cache_ = false;
-  }
 }
 
 void WorldImpl::sort_out_sleeping()

@@ -111,7 +111,7 @@ void WorldImpl::find_mover_pairs()
       // motion can close gets its contact now: the margin grows by how far
       // each body can travel in the frame (reach_ is 0 for a resting body).
       const std::size_t i = looked_[k];
-      reach_[i] = margin_ > 0.0 && is_mover(i) ? frame_reach(bodies_[i]) : 0.0;
+      reach_[i] = margin_ > 0.0 && !is_resting_[i] ? frame_reach(bodies_[i]) : 0.0;
       mover_boxes_[k] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
     }
   });
@@ -130,7 +130,7 @@ void WorldImpl::find_mover_pairs()
   resting_pairs_.clear();
   for (std::size_t k = 0; k < m && !resting_grid_.empty(); ++k)
   {
-    if (is_mover(looked_[k]))
+    if (!is_resting_[looked_[k]])
     {
       resting_grid_.query(mover_boxes_[k], looked_[k], resting_pairs_);
     }
@@ -269,7 +269,7 @@ void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
     const std::size_t j = w.pairs_[k].second;
     Collided& result = w.collided_[k];
     result = Collided::NotTried;
-    if (w.dynamic_pair(i, j) && (w.is_mover(i) || w.is_mover(j)))
+    if (w.dynamic_pair(i, j))  // every pair found has a mover (find_mover_pairs)
     {
       result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k], true) ? Collided::Hit : Collided::Miss;
     }

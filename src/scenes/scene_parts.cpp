@@ -175,7 +175,10 @@ void add_gas(Scene& scene, const GasParams& p)
   require_positive(w, "gas", "width (upper.x - lower.x)");
   require_positive(h, "gas", "height (upper.y - lower.y)");
   // Square cells laid out to the region's aspect ratio, one disk per cell.
-  const int cols = std::max(1, static_cast<int>(std::ceil(std::sqrt(p.count * w / h))));
+  // More columns than disks would stay empty; capping also keeps a very wide
+  // region's column count (up to infinity) inside an int.
+  const double wanted = std::ceil(std::sqrt(p.count * w / h));
+  const int cols = static_cast<int>(std::clamp(wanted, 1.0, static_cast<double>(p.count)));
   const int rows = (p.count + cols - 1) / cols;
   const double cell = std::min(w / cols, h / rows);
   const double slack = cell - 2.0 * p.radius;

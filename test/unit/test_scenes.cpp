@@ -152,6 +152,29 @@ TEST(StandardScenes, EveryBuilderStartsWithoutOverlapAndWithStillStaticBodies)
   }
 }
 
+TEST(StandardScenes, GasInAnExtremelyWideRegionIsRefusedWithoutOverflow)
+{
+  // Found by fuzz_scene_yaml: width / height beyond an int's range made the
+  // column count overflow its cast (undefined behaviour). Capped at one
+  // column per disk, the cells are far too flat for the disks: refused.
+  Scene scene;
+  scenes::GasParams gas;
+  gas.count = 3;
+  gas.lower = Vec2{0.0, 0.0};
+  gas.upper = Vec2{1e300, 1e-300};
+  EXPECT_THROW(scenes::add_gas(scene, gas), std::invalid_argument);
+  // A wide but possible region gets one row of disks, one per column.
+  gas.upper = Vec2{1e6, 1.0};
+  gas.radius = 0.1;
+  scenes::add_gas(scene, gas);
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  for (const SceneBody& b : scene.bodies)
+  {
+    EXPECT_GT(b.body.position().x, 0.0);
+    EXPECT_LT(b.body.position().x, 1e6);
+  }
+}
+
 TEST(StandardScenes, UnknownNameIsRejectedByName)
 {
   try

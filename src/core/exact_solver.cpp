@@ -74,6 +74,13 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
     report.converged = report.converged && residual <= tol * scale;
   }
 
+  // Impulses that overflowed (a mass ratio beyond double precision in a
+  // deep overlap) solved nothing: the documented fallback, bodies unchanged.
+  for (const detail::BodyVelocity& body : state)
+  {
+    if (body.inv_mass > 0.0 && !(is_finite(body.v) && std::isfinite(body.omega)))
+      return failed_report(report, contacts.size(), impulses);
+  }
   detail::store_velocities(state, bodies);
   if (impulses != nullptr)
     detail::store_impulses(rows, contacts.size(), *impulses);

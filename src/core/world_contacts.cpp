@@ -290,13 +290,18 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
   return std::max(margin_ + reach_[i] + reach_[j], touching);
 }
 
-void WorldImpl::publish_contacts()
+void WorldImpl::publish_contacts(bool carry_slips)
 {
+  // One pass for both: the points are read once while they are in cache.
   contacts_.resize(points_.size());
-  workers_.parallel_for(points_.size(), kMinSharedPoints, [this](std::size_t begin, std::size_t end) {
+  workers_.parallel_for(points_.size(), kMinSharedPoints, [this, carry_slips](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
-      const ContactPoint& row = points_[k];
+      ContactPoint& row = points_[k];
+      if (carry_slips)
+      {
+        carry_slip(row);
+      }
       WorldContact& c = contacts_[k];
       c.a = ids_[row.a];
       c.b = ids_[row.b];

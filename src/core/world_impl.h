@@ -160,8 +160,9 @@ struct WorldImpl
   double anchor_drift(const ContactPoint& p) const;
   /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
   double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
-  /// After the frame: each sticking point's slip, carried to the next frame.
-  void update_anchors();
+  /// After the frame: a sticking point's slip, carried to the next frame
+  /// (publish_contacts does it on its way through the points).
+  void carry_slip(ContactPoint& p) const;
   void integrate_positions(StepContext& ctx, StepReport& report);
   void restitution_pass(StepReport& report);
   /// The deepest overlap of the frame's contact points at the poses now,
@@ -240,7 +241,9 @@ struct WorldImpl
   std::size_t cached_pair(std::size_t& cursor, BodyId a, BodyId b) const;
   /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
-  void publish_contacts();
+  /// The frame's points become contacts_ (the next frame's warm-start cache);
+  /// with `carry_slips`, each point's slip is carried first (carry_slip).
+  void publish_contacts(bool carry_slips = false);
   double measure_penetration() const;
 
   // world_solve.cpp: the velocity stage on the contact-solver kernel.

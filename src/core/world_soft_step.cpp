@@ -75,10 +75,9 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     soft_rows_.unpack(points_, velocity_, workers_);
   }
   restitution_pass(report);
-  update_anchors();
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();
-  publish_contacts();
+  publish_contacts(true);                                 // with the slips carried
   cache_h_ = ctx.h;
 }
 
@@ -215,18 +214,12 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
   }
 }
 
-void WorldImpl::update_anchors()
+void WorldImpl::carry_slip(ContactPoint& p) const
 {
-  workers_.parallel_for(points_.size(), kMinSharedPoints, [this](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      ContactPoint& p = points_[k];
-      if (p.active)
-      {
-        p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
-      }
-    }
-  });
+  if (p.active)
+  {
+    p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+  }
 }
 
 void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)

@@ -130,8 +130,9 @@ struct WorldImpl
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
   void prepare_soft_points(const StepContext& ctx);
-  /// prepare_soft_points' per-point work on points [begin, end) (whole pairs).
-  void prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
+  /// prepare_soft_points' per-point work on points [begin, end) (whole
+  /// pairs); returns the fastest Newton target among them (m/s, 0 if none).
+  double prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
   /// Body i's pose at prepare, no pose change yet, not stopped or touching.
   void reset_body_motion(std::size_t i);
   /// After move_body: a stopped body held, a free one on its parabola,
@@ -424,6 +425,7 @@ struct WorldImpl
   std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
   std::vector<WorldContact> cache_;   ///< previous substep's contacts, for warm starting
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
+  double fastest_target_ = 0.0;       ///< soft step: the frame's fastest Newton target (m/s), from prepare
   mutable std::size_t cache_cursor_ = 0;  ///< cached_pair's position in cache_
   std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
   std::vector<double> kicked_omega_;

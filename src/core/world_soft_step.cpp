@@ -16,6 +16,7 @@
 // (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
 // out rigidly at the soft rate; the relax adds normal impulses only.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -88,16 +89,24 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
-  // Both preparations of a block of points run while it is in cache.
+  // Both preparations of a block of points run while it is in cache. The
+  // fastest target is a max, the same in any order (std::max skips a NaN).
+  std::atomic<double> fastest{0.0};
   for_point_ranges([&](std::size_t begin, std::size_t end) {
+    double range_fastest = 0.0;
     for (std::size_t block = begin; block < end;)
     {
       const std::size_t block_end = std::min(end, pair_boundary(block + kPrepareBlockPoints));
       prepare_point_range(ctx.effects, block, block_end);  // world_solve.cpp
-      prepare_soft_range(moving, fixed, block, block_end);
+      range_fastest = std::max(range_fastest, prepare_soft_range(moving, fixed, block, block_end));
       block = block_end;
     }
+    double seen = fastest.load();
+    while (seen < range_fastest && !fastest.compare_exchange_weak(seen, range_fastest))
+    {
+    }
   });
+  fastest_target_ = fastest.load();
   stopped_.resize(bodies_.size());
   touching_.resize(bodies_.size());
   held_position_.resize(bodies_.size());
@@ -118,8 +127,10 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   }
 }
 
-void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end)
+double WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin,
+                                     std::size_t end)
 {
+  double fastest = 0.0;
   for (std::size_t k = begin; k < end; ++k)
   {
     ContactPoint& p = points_[k];
@@ -133,6 +144,7 @@ void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
     p.frame_impulse = 0.0;
     const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
     p.softness = both_move ? moving : fixed;
+    fastest = std::max(fastest, p.target);
   }
   // A manifold's normal block is the same all frame (lever arms are fixed).
   for (std::size_t k = begin; k + 1 < end; ++k)
@@ -145,6 +157,7 @@ void WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
       ++k;
     }
   }
+  return fastest;
 }
 
 void WorldImpl::reset_body_motion(std::size_t i)
@@ -314,12 +327,9 @@ double WorldImpl::followed_penetration()
 
 void WorldImpl::restitution_pass(StepReport& report)
 {
-  // The scan for a bouncing contact is shared; the passes are Gauss-Seidel
-  // in point order and stay on one thread.
-  const double fastest = max_over(points_.size(), kMinSharedPoints, 0.0, [this](std::size_t k) {
-    const ContactPoint& p = points_[k];
-    return p.active ? p.target : 0.0;
-  });
+  // The passes are Gauss-Seidel in point order and stay on one thread; the
+  // fastest target was found in prepare.
+  const double fastest = fastest_target_;
   if (fastest == 0.0)
   {
     return;

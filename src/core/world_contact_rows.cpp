@@ -3,6 +3,7 @@
 // rows filled by the workers, each with its impulses matched from the
 // previous frame's contacts (the cache, keyed by body ids and feature).
 #include <algorithm>
+#include <limits>
 
 #include "world_impl.h"
 
@@ -115,8 +116,9 @@ void WorldImpl::place_pairs_in_order(bool cached)
   pair_rows_[pairs_.size()] = rows;
 }
 
-void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
+double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
 {
+  double deepest = -std::numeric_limits<double>::infinity();
   const std::size_t i = pairs_[k].first;
   const std::size_t j = pairs_[k].second;
   const Manifold& m = manifolds_[k];
@@ -132,6 +134,7 @@ void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     row.separation = m.points[c].separation;
     row.feature = m.points[c].feature;
     row.count = m.count;
+    deepest = std::max(deepest, row.penetration);
     const WorldContact* cached =
         warm_scale > 0.0 || friction ? find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature) : nullptr;
     if (cached != nullptr)
@@ -142,6 +145,7 @@ void WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
       row.anchor_drift = cached->anchor_drift;
     }
   }
+  return deepest;
 }
 
 std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const { return cached_pair(cache_cursor_, a, b); }

@@ -71,17 +71,23 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     points_.reserve(2 * rows);  // geometric: a count that creeps up allocates rarely
   }
   points_.resize(rows);
+  // The deepest point is a max, the same in any order (std::max skips a NaN).
+  std::atomic<double> deepest{report.max_detected_penetration};
   workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
+    double range_deepest = deepest.load();
     for (std::size_t k = begin; k < end; ++k)
     {
       if (collided_[k] == Collided::Hit)
       {
-        add_manifold(k, warm_scale, friction);
+        range_deepest = std::max(range_deepest, add_manifold(k, warm_scale, friction));
       }
     }
+    double seen = deepest.load();
+    while (seen < range_deepest && !deepest.compare_exchange_weak(seen, range_deepest))
+    {
+    }
   });
-  report.max_detected_penetration = max_over(points_.size(), kMinSharedPoints, report.max_detected_penetration,
-                                             [this](std::size_t k) { return points_[k].penetration; });
+  report.max_detected_penetration = deepest.load();
   // Contacts kept aside still count (world_sleeping_contacts.cpp).
   if (!sleeping_contacts_.empty())
   {

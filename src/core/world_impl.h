@@ -235,7 +235,9 @@ struct WorldImpl
   void place_pairs_part(std::size_t part, std::size_t parts, bool cached);
   void place_pairs_in_order(bool cached);
   /// Pair k's rows, where place_pair_rows put them (a WorkerPool range's item).
-  void add_manifold(std::size_t k, double warm_scale, bool friction);
+  /// Pair k's manifold into its rows, impulses matched from the cache;
+  /// returns its deepest penetration (m).
+  double add_manifold(std::size_t k, double warm_scale, bool friction);
   /// Index of the first cached contact of pair (a, b), or of where it would be.
   std::size_t cached_pair(BodyId a, BodyId b) const;
   /// ... from `cursor`, which it moves (cached_pair uses cache_cursor_).

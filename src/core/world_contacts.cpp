@@ -71,7 +71,6 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     points_.reserve(2 * rows);  // geometric: a count that creeps up allocates rarely
   }
   points_.resize(rows);
-  // The deepest point is a max, the same in any order (std::max skips a NaN).
   std::atomic<double> deepest{report.max_detected_penetration};
   workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
     double range_deepest = deepest.load();
@@ -82,10 +81,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
         range_deepest = std::max(range_deepest, add_manifold(k, warm_scale, friction));
       }
     }
-    double seen = deepest.load();
-    while (seen < range_deepest && !deepest.compare_exchange_weak(seen, range_deepest))
-    {
-    }
+    raise_to(deepest, range_deepest);
   });
   report.max_detected_penetration = deepest.load();
   // Contacts kept aside still count (world_sleeping_contacts.cpp).
@@ -296,17 +292,20 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
   return std::max(margin_ + reach_[i] + reach_[j], touching);
 }
 
-void WorldImpl::publish_contacts(bool carry_slips)
+void WorldImpl::publish_contacts(bool soft_frame)
 {
-  // One pass for both: the points are read once while they are in cache.
+  // One pass for all: the points are read once while they are in cache.
   contacts_.resize(points_.size());
-  workers_.parallel_for(points_.size(), kMinSharedPoints, [this, carry_slips](std::size_t begin, std::size_t end) {
+  std::atomic<double> deepest{0.0};
+  workers_.parallel_for(points_.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
+    double range_deepest = 0.0;
     for (std::size_t k = begin; k < end; ++k)
     {
       ContactPoint& row = points_[k];
-      if (carry_slips)
+      if (soft_frame && row.active)
       {
         carry_slip(row);
+        range_deepest = std::max(range_deepest, -current_separation(row, velocity_));
       }
       WorldContact& c = contacts_[k];
       c.a = ids_[row.a];
@@ -316,7 +315,10 @@ void WorldImpl::publish_contacts(bool carry_slips)
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
     }
+    raise_to(deepest, range_deepest);
   });
+  followed_known_ = soft_frame;
+  followed_deepest_ = deepest.load();
 }
 
 double WorldImpl::measure_penetration() const

@@ -161,8 +161,8 @@ struct WorldImpl
   double anchor_drift(const ContactPoint& p) const;
   /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
   double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
-  /// After the frame: a sticking point's slip, carried to the next frame
-  /// (publish_contacts does it on its way through the points).
+  /// After the frame: an active sticking point's slip, carried to the next
+  /// frame (publish_contacts does it on its way through the points).
   void carry_slip(ContactPoint& p) const;
   void integrate_positions(StepContext& ctx, StepReport& report);
   void restitution_pass(StepReport& report);
@@ -244,9 +244,10 @@ struct WorldImpl
   std::size_t cached_pair(std::size_t& cursor, BodyId a, BodyId b) const;
   /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
-  /// The frame's points become contacts_ (the next frame's warm-start cache);
-  /// with `carry_slips`, each point's slip is carried first (carry_slip).
-  void publish_contacts(bool carry_slips = false);
+  /// The frame's points become contacts_ (the next frame's warm-start cache).
+  /// After a soft frame each active point's slip is carried first
+  /// (carry_slip) and the deepest followed gap kept for the report.
+  void publish_contacts(bool soft_frame = false);
   double measure_penetration() const;
 
   // world_solve.cpp: the velocity stage on the contact-solver kernel.
@@ -428,6 +429,10 @@ struct WorldImpl
   std::vector<WorldContact> cache_;   ///< previous substep's contacts, for warm starting
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
   double fastest_target_ = 0.0;       ///< soft step: the frame's fastest Newton target (m/s), from prepare
+  /// Soft step: followed_penetration() of the step's last frame, worked out
+  /// by publish_contacts (nothing changes the points or poses after it).
+  bool followed_known_ = false;
+  double followed_deepest_ = 0.0;  ///< m
   mutable std::size_t cache_cursor_ = 0;  ///< cached_pair's position in cache_
   std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
   std::vector<double> kicked_omega_;

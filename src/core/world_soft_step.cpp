@@ -16,7 +16,6 @@
 // (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
 // out rigidly at the soft rate; the relax adds normal impulses only.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -80,7 +79,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   restitution_pass(report);
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();
-  publish_contacts(true);                                 // with the slips carried
+  publish_contacts(true);                                 // slips carried, gaps followed
   cache_h_ = ctx.h;
 }
 
@@ -89,8 +88,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
-  // Both preparations of a block of points run while it is in cache. The
-  // fastest target is a max, the same in any order (std::max skips a NaN).
+  // Both preparations of a block of points run while it is in cache.
   std::atomic<double> fastest{0.0};
   for_point_ranges([&](std::size_t begin, std::size_t end) {
     double range_fastest = 0.0;
@@ -101,10 +99,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
       range_fastest = std::max(range_fastest, prepare_soft_range(moving, fixed, block, block_end));
       block = block_end;
     }
-    double seen = fastest.load();
-    while (seen < range_fastest && !fastest.compare_exchange_weak(seen, range_fastest))
-    {
-    }
+    raise_to(fastest, range_fastest);
   });
   fastest_target_ = fastest.load();
   stopped_.resize(bodies_.size());
@@ -240,10 +235,7 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
 
 void WorldImpl::carry_slip(ContactPoint& p) const
 {
-  if (p.active)
-  {
-    p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
-  }
+  p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
 }
 
 void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)

@@ -4,6 +4,7 @@
 // workers, and the test hooks.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -59,6 +60,17 @@ struct BodyMotion
 };
 
 /// The root of island i in a union-find forest, halving the path on the way.
+/// best = std::max(best, value) from several workers. A max is the same in
+/// any order (std::max skips a NaN value), so the result does not depend on
+/// how the work was split.
+inline void raise_to(std::atomic<double>& best, double value)
+{
+  double seen = best.load();
+  while (seen < value && !best.compare_exchange_weak(seen, value))
+  {
+  }
+}
+
 inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
 {
   while (parent[i] != i)

@@ -45,6 +45,7 @@ StepReport WorldImpl::step(int frames)
     return report;
   }
   save_motion(frames);
+  followed_known_ = false;  // publish_contacts works it out again for this step
   try
   {
     for (int f = 0; f < frames; ++f)
@@ -223,7 +224,14 @@ void WorldImpl::finish_report(StepReport& report)
 {
   // The soft step follows its contacts' gaps from the poses; the Fx2D step,
   // whose correction is linearised, measures them again.
-  report.max_penetration = settings_.soft_step ? followed_penetration() : measure_penetration();
+  if (!settings_.soft_step)
+  {
+    report.max_penetration = measure_penetration();
+  }
+  else
+  {
+    report.max_penetration = followed_known_ ? followed_deepest_ : followed_penetration();
+  }
   // A sleeping body's kinetic energy is exactly 0: summing the movers' in
   // order gives the bits of summing every body's.
   const bool movers_only = movers_current() && !body_pass_full_;

@@ -159,7 +159,6 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
     // Padding: the spare body on both sides, nothing to push.
     r.a[j] = spare_;
     r.b[j] = spare_;
-    r.first[j] = SIZE_MAX;
     for (double* f : {r.nx, r.ny, r.tx, r.ty, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
                       r.bias_rate, r.mu_s, r.mu_k, r.rough})
     {
@@ -182,7 +181,6 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   const ContactPoint& p = points[first];
   r.a[j] = static_cast<std::uint32_t>(p.a);
   r.b[j] = static_cast<std::uint32_t>(p.b);
-  r.first[j] = first;
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
   r.tx[j] = p.tangent.x;
@@ -252,32 +250,28 @@ void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocit
                       WorkerPool& workers) const
 {
   velocity.pop_back();
-  // Each lane writes only its own manifold's points.
-  workers.parallel_for(rows_.size(), kMinSharedLanes / kRowLanes, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t b = begin; b < end; ++b)
+  // In point order, so the points are written in turn and the lanes read
+  // where they lie; each manifold's points are written by one worker.
+  workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r)
     {
-      unpack_batch(rows_[b], points);
+      const RowSlot& row = row_slots_[r];
+      const std::size_t batch = colours_[row.colour].begin + row.slot / kRowLanes;
+      unpack_lane(rows_[batch], static_cast<int>(row.slot % kRowLanes), points, row.first);
     }
   });
 }
 
-void SoftRows::unpack_batch(const RowBatch& r, std::vector<ContactPoint>& points)
+void SoftRows::unpack_lane(const RowBatch& r, int j, std::vector<ContactPoint>& points, std::size_t first)
 {
-  for (int j = 0; j < kRowLanes; ++j)
+  for (int k = 0; k < 2; ++k)
   {
-    if (r.first[j] == SIZE_MAX)
-    {
-      continue;
-    }
-    for (int k = 0; k < 2; ++k)
-    {
-      ContactPoint& c = points[r.first[j] + k];
-      const RowPoint& q = r.point[k];
-      c.lambda_n = q.normal[j];
-      c.lambda_t = q.tangent[j];
-      c.frame_impulse = q.frame[j];
-      c.sliding = q.sliding[j] != 0.0;
-    }
+    ContactPoint& c = points[first + k];
+    const RowPoint& q = r.point[k];
+    c.lambda_n = q.normal[j];
+    c.lambda_t = q.tangent[j];
+    c.frame_impulse = q.frame[j];
+    c.sliding = q.sliding[j] != 0.0;
   }
 }
 

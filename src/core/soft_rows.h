@@ -39,7 +39,6 @@ struct alignas(32) RowBatch
 {
   std::uint32_t a[kRowLanes];  ///< body indices; padding lanes name the spare body
   std::uint32_t b[kRowLanes];
-  std::size_t first[kRowLanes];  ///< index of the manifold's first point
   double nx[kRowLanes], ny[kRowLanes], tx[kRowLanes], ty[kRowLanes];
   double k11[kRowLanes], k12[kRowLanes], k22[kRowLanes];  ///< normal block (1/kg)
   double pair_tangent_mass[kRowLanes];                ///< kg
@@ -99,7 +98,7 @@ private:
   std::size_t take_colour(std::size_t a, std::size_t b);
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
-  static void unpack_batch(const RowBatch& batch, std::vector<ContactPoint>& points);
+  static void unpack_lane(const RowBatch& batch, int lane, std::vector<ContactPoint>& points, std::size_t first);
 
   std::vector<RowBatch> rows_;
   std::vector<RowColour> colours_;

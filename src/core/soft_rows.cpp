@@ -159,7 +159,7 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
     // Padding: the spare body on both sides, nothing to push.
     r.a[j] = spare_;
     r.b[j] = spare_;
-    for (double* f : {r.nx, r.ny, r.tx, r.ty, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
+    for (double* f : {r.nx, r.ny, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
                       r.bias_rate, r.mu_s, r.mu_k, r.rough})
     {
       f[j] = 0.0;
@@ -183,8 +183,6 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   r.b[j] = static_cast<std::uint32_t>(p.b);
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
-  r.tx[j] = p.tangent.x;
-  r.ty[j] = p.tangent.y;
   r.k11[j] = p.k_n;
   r.k12[j] = p.pair_k12;
   r.k22[j] = points[first + 1].k_n;

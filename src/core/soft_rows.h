@@ -39,7 +39,7 @@ struct alignas(32) RowBatch
 {
   std::uint32_t a[kRowLanes];  ///< body indices; padding lanes name the spare body
   std::uint32_t b[kRowLanes];
-  double nx[kRowLanes], ny[kRowLanes], tx[kRowLanes], ty[kRowLanes];
+  double nx[kRowLanes], ny[kRowLanes];  ///< the normal; the tangent is perp(normal), as prepared
   double k11[kRowLanes], k12[kRowLanes], k22[kRowLanes];  ///< normal block (1/kg)
   double pair_tangent_mass[kRowLanes];                ///< kg
   double inv_mass_a[kRowLanes], inv_mass_b[kRowLanes], inv_inertia_a[kRowLanes], inv_inertia_b[kRowLanes];

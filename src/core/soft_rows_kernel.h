@@ -87,7 +87,7 @@ Lane<V> load_lane(const Ops& ops, const RowBatch& r, const std::vector<BodyVeloc
   ops.gather(state, r.a, l.a);
   ops.gather(state, r.b, l.b);
   l.n = {ops.load(r.nx), ops.load(r.ny)};
-  l.t = {ops.load(r.tx), ops.load(r.ty)};
+  l.t = {neg(l.n.y), l.n.x};  // perp(n), exactly the prepared tangent
   l.ra1 = {ops.load(r.point[0].ra_x), ops.load(r.point[0].ra_y)};
   l.rb1 = {ops.load(r.point[0].rb_x), ops.load(r.point[0].rb_y)};
   l.ra2 = {ops.load(r.point[1].ra_x), ops.load(r.point[1].ra_y)};

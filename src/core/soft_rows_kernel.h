@@ -212,8 +212,11 @@ void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass,
   const V k22 = ops.load(r.k22);
   const V x1 = ops.load(r.point[0].normal);
   const V x2 = ops.load(r.point[1].normal);
-  const V q1 = (dot(relative_velocity(l, l.ra1, l.rb1), l.n) + bias1 / scale1) - (k11 * x1 + k12 * x2);
-  const V q2 = (dot(relative_velocity(l, l.ra2, l.rb2), l.n) + bias2 / scale2) - (k12 * x1 + k22 * x2);
+  // The relax pass's scales are exactly 1, and x / 1 is x: no division there.
+  const V speed1 = pass.use_bias ? bias1 / scale1 : bias1;
+  const V speed2 = pass.use_bias ? bias2 / scale2 : bias2;
+  const V q1 = (dot(relative_velocity(l, l.ra1, l.rb1), l.n) + speed1) - (k11 * x1 + k12 * x2);
+  const V q2 = (dot(relative_velocity(l, l.ra2, l.rb2), l.n) + speed2) - (k12 * x1 + k22 * x2);
   V y1, y2;
   lcp2(k11, k12, k22, q1, q2, y1, y2);
   set_normal(ops, l, l.ra1, l.rb1, r.point[0], scale1 * y1);

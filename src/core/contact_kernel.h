@@ -19,14 +19,16 @@ namespace detail
 /// inverse mass and inertia, so impulses never change them.
 struct BodyVelocity
 {
+  // What the soft rows read comes first, in two runs of four doubles that the
+  // four-lane path loads whole (soft_rows_avx2.cpp).
   Vec2 v;
   double omega = 0.0;
-  double inv_mass = 0.0;
-  double inv_inertia = 0.0;
   // Soft step only: the pose change since the frame's contacts were prepared.
   Vec2 moved;                ///< translation (m)
   double turned_cos = 1.0;   ///< rotation, as its cosine and sine
   double turned_sin = 0.0;
+  double inv_mass = 0.0;
+  double inv_inertia = 0.0;
 };
 
 inline BodyVelocity body_velocity(Vec2 v, double omega, double inv_mass, double inv_inertia)

@@ -16,7 +16,8 @@ namespace
 /// Colours tried before a manifold goes to the overflow: a box in a stack
 /// touches at most six others, so greedy colouring needs far fewer.
 constexpr std::size_t kMaxColours = 24;
-constexpr std::size_t kBitsPerWord = 64;
+/// A bit per colour, for the colours a body is in.
+constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kMaxColours) - 1;
 /// Row manifolds (lanes) below which filling or emptying the batches stays on
 /// the calling thread: a lane is a few dozen copies.
 constexpr std::size_t kMinSharedLanes = 512;
@@ -65,20 +66,20 @@ void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& v
 
 std::size_t SoftRows::take_colour(std::size_t a, std::size_t b)
 {
-  // a and b are the bodies the manifold moves (SIZE_MAX for one that cannot move).
-  const auto taken = [&](std::size_t c, std::size_t i) {
-    return i != SIZE_MAX && (used_[c * words_ + i / kBitsPerWord] >> (i % kBitsPerWord) & 1U) != 0;
-  };
-  std::size_t colour = 0;
-  while (colour < kMaxColours && (taken(colour, a) || taken(colour, b)))
+  // a and b are the bodies the manifold moves (SIZE_MAX for one that cannot
+  // move); the lowest colour neither is in yet.
+  const auto colours_of = [&](std::size_t i) { return i == SIZE_MAX ? 0U : colours_of_[i]; };
+  const std::uint32_t free = ~(colours_of(a) | colours_of(b)) & kAllColours;
+  if (free == 0)
   {
-    ++colour;
+    return kMaxColours;
   }
+  const std::size_t colour = static_cast<std::size_t>(__builtin_ctz(free));
   for (std::size_t i : {a, b})
   {
-    if (colour < kMaxColours && i != SIZE_MAX)
+    if (i != SIZE_MAX)
     {
-      used_[colour * words_ + i / kBitsPerWord] |= std::uint64_t{1} << (i % kBitsPerWord);
+      colours_of_[i] |= std::uint32_t{1} << colour;
     }
   }
   return colour;
@@ -89,8 +90,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
-  words_ = velocity.size() / kBitsPerWord + 1;
-  used_.assign(kMaxColours * words_, 0);
+  colours_of_.assign(velocity.size(), 0);
   colours_.resize(kMaxColours);
   for (RowColour& c : colours_)
   {

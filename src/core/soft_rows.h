@@ -103,7 +103,7 @@ private:
   std::vector<RowBatch> rows_;
   std::vector<RowColour> colours_;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
-  std::vector<std::uint64_t> used_;      ///< per colour, a bit per body it moves
+  std::vector<std::uint32_t> colours_of_;  ///< per body, a bit per colour that moves it
   /// Where a row manifold goes: its colour and its place among the colour's rows.
   struct RowSlot
   {
@@ -112,7 +112,6 @@ private:
     std::size_t slot = 0;
   };
   std::vector<RowSlot> row_slots_;  ///< scratch, in point order
-  std::size_t words_ = 0;
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
 };

@@ -64,7 +64,8 @@ void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, doub
   p.pair_tangent_mass = p.tangent_mass;
   // Measured once, before any impulse: later impulses never move the target.
   p.restitution = restitution;
-  p.target = newton_target(dot(relative_velocity(p, state), p.normal), restitution, threshold);
+  p.approach_speed = dot(relative_velocity(p, state), p.normal);
+  p.target = newton_target(p.approach_speed, restitution, threshold);
 }
 
 void prepare_pair(ContactPoint& first, const ContactPoint& second)

@@ -112,7 +112,7 @@ struct ContactPoint
   double tangent_mass = 0.0;  ///< 1 / k_t (kg)
   double target = 0.0;        ///< post-solve normal separation speed (m/s), fixed at prepare
   double restitution = 0.0;   ///< the pair's e
-  double approach_speed = 0.0;  ///< normal relative speed at prepare (m/s), < 0 approaching
+  double approach_speed = 0.0;  ///< normal relative speed at prepare (m/s), < 0 approaching (prepare_point)
 
   // Bookkeeping of the solvers that own the point.
   std::size_t contact = 0;  ///< index into the caller's contact list

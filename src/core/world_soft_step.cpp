@@ -134,7 +134,6 @@ double WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fix
       continue;
     }
     p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
-    p.approach_speed = dot(relative_velocity(p, velocity_), p.normal);
     aim_at_impact(p);
     p.frame_impulse = 0.0;
     const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;

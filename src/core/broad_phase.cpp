@@ -42,12 +42,6 @@ constexpr double kFallbackCell = 1.0;  // m
 /// a change in the number of boxes redoes it at once.
 constexpr std::size_t kCellRefreshCalls = 16;
 
-bool is_usable(const Aabb& box)
-{
-  return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.hi.x) &&
-         std::isfinite(box.hi.y) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y;
-}
-
 std::int32_t cell_index(double v, double origin, double inv_cell)
 {
   // The origin is the lowest corner, so v - origin >= 0 and truncation is
@@ -100,7 +94,7 @@ void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)
     for (std::size_t i = detail::part_begin(boxes.size(), part, parts);
          i < detail::part_begin(boxes.size(), part + 1, parts); ++i)
     {
-      if (is_usable(boxes[i]))
+      if (detail::is_usable(boxes[i]))
       {
         c.lower(boxes[i].lo.x, boxes[i].lo.y);
       }
@@ -141,7 +135,7 @@ void BroadPhase::choose_cell_size(const std::vector<Aabb>& boxes)
   double top_lo_y = 0.0;
   for (const Aabb& box : boxes)
   {
-    if (!is_usable(box))
+    if (!detail::is_usable(box))
     {
       continue;
     }
@@ -214,7 +208,7 @@ void BroadPhase::classify(const std::vector<Aabb>& boxes, RangeRunner* runner)
 
 BroadPhase::BoxClass BroadPhase::classify_box(const std::vector<Aabb>& boxes, std::size_t i)
 {
-  if (!is_usable(boxes[i]))
+  if (!detail::is_usable(boxes[i]))
   {
     return BoxClass::Unusable;
   }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include "collision2d/broad_phase.h"
@@ -15,6 +16,14 @@ namespace detail
 /// Boxes or grid entries below which a pass stays in one part: too little
 /// work to pay for waking the runner's threads.
 constexpr std::size_t kMinSharedBroadItems = 4096;
+
+/// Whether a box takes part in pairing: finite, with lo <= hi on both axes.
+/// Any other box is empty and pairs with nothing.
+inline bool is_usable(const Aabb& box)
+{
+  return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.hi.x) &&
+         std::isfinite(box.hi.y) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y;
+}
 
 /// How many parts a pass over `count` items takes (1: not shared).
 inline std::size_t runner_parts(const RangeRunner* runner, std::size_t count)

@@ -3,6 +3,8 @@
 // corner of the two boxes' intersection, so once.
 #include "resting_grid.h"
 
+#include "broad_phase_parts.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -23,12 +25,6 @@ constexpr double kCellLimit = 536870912.0;  // 2^29
 constexpr std::size_t kFewMembers = 32;
 /// A query covering more cells than this tests every member instead.
 constexpr std::int64_t kMaxQueryCells = 1024;
-
-bool is_usable(const Aabb& box)
-{
-  return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.hi.x) &&
-         std::isfinite(box.hi.y) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y;
-}
 
 }  // namespace
 

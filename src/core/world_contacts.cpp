@@ -117,7 +117,7 @@ void WorldImpl::find_mover_pairs()
       mover_boxes_[k] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
     }
   });
-  broad_phase_.find_pairs(mover_boxes_, mover_pairs_, workers_);
+  fat_pairs_.find_pairs(mover_boxes_, broad_phase_, mover_pairs_, workers_);  // fat_box_pairs.h
   auto kept = mover_pairs_.begin();
   for (const BodyPair& pair : mover_pairs_)
   {

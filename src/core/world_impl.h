@@ -15,6 +15,7 @@
 #include "collision2d/world.h"
 #include "contact_kernel.h"
 #include "posed_polygon.h"
+#include "fat_box_pairs.h"
 #include "resting_grid.h"
 #include "soft_rows.h"
 #include "worker_pool.h"
@@ -357,6 +358,7 @@ struct WorldImpl
 
   // Scratch reused across substeps and steps (no allocation once warmed up).
   BroadPhase broad_phase_;
+  FatBoxPairs fat_pairs_;  ///< the movers' pairs kept while their boxes stay inside enlarged ones
   BroadPhase sweep_phase_;
   std::vector<Aabb> boxes_;
   std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)

@@ -1,0 +1,87 @@
+// The broad phase's pairs kept from frame to frame (fat_box_pairs.h).
+#include "fat_box_pairs.h"
+
+#include <algorithm>
+
+#include "broad_phase_parts.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// A box is enlarged by this fraction of its larger side on every side: a
+/// unit box by 0.1 m, far more than a resting body moves between frames,
+/// while the enlarged boxes of a stack's neighbours overlap no further ones.
+constexpr double kFatFraction = 0.1;
+
+Aabb enlarged(const Aabb& box)
+{
+  // A box too large to enlarge within range stays as it is.
+  const Aabb fat = box.inflated(kFatFraction * std::max(box.hi.x - box.lo.x, box.hi.y - box.lo.y));
+  return is_usable(fat) ? fat : box;
+}
+
+bool inside(const Aabb& box, const Aabb& fat)
+{
+  return fat.lo.x <= box.lo.x && fat.lo.y <= box.lo.y && box.hi.x <= fat.hi.x && box.hi.y <= fat.hi.y;
+}
+
+}  // namespace
+
+void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, std::vector<BodyPair>& pairs,
+                             RangeRunner& runner)
+{
+  if (still_inside(boxes))
+  {
+    ++reused_;
+  }
+  else
+  {
+    rebuild(boxes, broad_phase, runner);
+  }
+  // Boxes that overlap lie in enlarged boxes that overlap, so every pair is
+  // among the kept ones, which are in (i, j) order; an unusable box pairs
+  // with nothing, as in BroadPhase.
+  pairs.clear();
+  for (const BodyPair& pair : fat_pairs_)
+  {
+    const Aabb& a = boxes[pair.first];
+    const Aabb& b = boxes[pair.second];
+    if (a.overlaps(b) && is_usable(a) && is_usable(b))
+    {
+      pairs.push_back(pair);
+    }
+  }
+}
+
+bool FatBoxPairs::still_inside(const std::vector<Aabb>& boxes) const
+{
+  if (!built_ || boxes.size() != fat_.size())
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < boxes.size(); ++k)
+  {
+    if (!is_usable(boxes[k]) || !inside(boxes[k], fat_[k]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+void FatBoxPairs::rebuild(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, RangeRunner& runner)
+{
+  fat_.resize(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k)
+  {
+    fat_[k] = enlarged(boxes[k]);
+  }
+  broad_phase.find_pairs(fat_, fat_pairs_, runner);
+  built_ = true;
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,39 @@
+// Internal to the core: the broad phase's pairs kept from frame to frame.
+// Pairs are found on boxes enlarged by a fraction of their size; while every
+// box stays inside its enlarged one, the pairs of the boxes now are exactly
+// the kept pairs whose boxes overlap now, so no grid is built. A stack at
+// rest keeps its pairs for as long as it rests.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "collision2d/broad_phase.h"
+
+namespace collision2d
+{
+namespace detail
+{
+class FatBoxPairs
+{
+public:
+  /// Replaces `pairs` with BroadPhase::find_pairs(boxes): the same pairs in
+  /// the same order. Pairs name positions in `boxes`, so whose box is where
+  /// does not matter, only that each box lies inside its enlarged one.
+  void find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, std::vector<BodyPair>& pairs,
+                  RangeRunner& runner);
+  /// Frames whose pairs came from the kept ones (tests).
+  std::size_t reused() const { return reused_; }
+
+private:
+  bool still_inside(const std::vector<Aabb>& boxes) const;
+  void rebuild(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, RangeRunner& runner);
+
+  std::vector<Aabb> fat_;            ///< the enlarged boxes the kept pairs were found on
+  std::vector<BodyPair> fat_pairs_;  ///< every pair of overlapping enlarged boxes, in (i, j) order
+  bool built_ = false;
+  std::size_t reused_ = 0;
+};
+
+}  // namespace detail
+}  // namespace collision2d

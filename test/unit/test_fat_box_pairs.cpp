@@ -1,0 +1,125 @@
+// The broad phase's pairs kept from frame to frame (src/core/fat_box_pairs.h):
+// every frame's pairs must be exactly BroadPhase's for the boxes of that
+// frame, whether the kept pairs were reused or found again, for boxes that
+// jitter in place, jump, turn unusable (non-finite, inverted) or huge, and
+// when the list of bodies changes.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "fat_box_pairs.h"
+
+namespace collision2d
+{
+namespace
+{
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+
+class SerialRunner : public RangeRunner
+{
+public:
+  int workers() const override { return 1; }
+  void run(std::size_t count, Job job, void* context) override { job(context, 0, count); }
+};
+
+/// Unit boxes in a loose grid: each touches or nearly touches its neighbours.
+std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows)
+{
+  std::vector<Aabb> boxes;
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    for (std::size_t c = 0; c < columns; ++c)
+    {
+      const double x = static_cast<double>(c) * 1.02;
+      const double y = static_cast<double>(r) * 1.0;
+      boxes.push_back({{x, y}, {x + 1.0, y + 1.0}});
+    }
+  }
+  return boxes;
+}
+
+/// One frame: the kept pairs' answer against a fresh broad phase's.
+void expect_same_pairs(detail::FatBoxPairs& kept, const std::vector<Aabb>& boxes)
+{
+  BroadPhase fresh;
+  BroadPhase reused;
+  SerialRunner runner;
+  std::vector<BodyPair> want;
+  std::vector<BodyPair> pairs;
+  fresh.find_pairs(boxes, want);
+  kept.find_pairs(boxes, reused, pairs, runner);
+  EXPECT_EQ(pairs, want);
+}
+
+TEST(FatBoxPairs, JitteringAndJumpingBoxesGiveTheBroadPhasesPairs)
+{
+  std::vector<Aabb> boxes = grid_boxes(12, 8);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  std::uniform_int_distribution<std::size_t> pick(0, boxes.size() - 1);
+  detail::FatBoxPairs kept;
+  std::size_t jumps = 0;
+  for (int frame = 0; frame < 200; ++frame)
+  {
+    for (Aabb& box : boxes)
+    {
+      const Vec2 d{jitter(rng), jitter(rng)};
+      box = {box.lo + d, box.hi + d};
+    }
+    if (frame % 17 == 5)
+    {
+      // A jump far outside its enlarged box, onto another box.
+      boxes[pick(rng)] = boxes[pick(rng)];
+      ++jumps;
+    }
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_GT(kept.reused(), 100u) << "the kept pairs were never reused";
+  EXPECT_LT(kept.reused(), 200u - jumps + 1) << "a jump must find the pairs again";
+}
+
+TEST(FatBoxPairs, UnusableAndHugeBoxesPairAsInTheBroadPhase)
+{
+  std::vector<Aabb> boxes = grid_boxes(6, 4);
+  detail::FatBoxPairs kept;
+  expect_same_pairs(kept, boxes);
+  // Inverted by less than its enlargement: the enlarged box is usable and
+  // overlaps its neighbours, but the box itself pairs with nothing.
+  boxes[7].lo.x = boxes[7].hi.x + 0.05;
+  expect_same_pairs(kept, boxes);
+  expect_same_pairs(kept, boxes);
+  boxes[9].hi.y = kNan;
+  expect_same_pairs(kept, boxes);
+  // A box too large to enlarge, then everything back in place.
+  boxes[3] = {{-1e308, -1e308}, {1e308, 1e308}};
+  expect_same_pairs(kept, boxes);
+  expect_same_pairs(kept, boxes);
+  const std::vector<Aabb> restored = grid_boxes(6, 4);
+  expect_same_pairs(kept, restored);
+  expect_same_pairs(kept, restored);
+  EXPECT_GT(kept.reused(), 0u);
+}
+
+TEST(FatBoxPairs, AnotherNumberOfBoxesFindsThePairsAgain)
+{
+  std::vector<Aabb> boxes = grid_boxes(5, 5);
+  detail::FatBoxPairs kept;
+  expect_same_pairs(kept, boxes);
+  expect_same_pairs(kept, boxes);
+  EXPECT_EQ(kept.reused(), 1u);
+  // Two boxes trade places: each is outside its enlarged box.
+  std::swap(boxes.front(), boxes.back());
+  expect_same_pairs(kept, boxes);
+  EXPECT_EQ(kept.reused(), 1u);
+  // One box fewer, every other one in place.
+  boxes.pop_back();
+  expect_same_pairs(kept, boxes);
+  EXPECT_EQ(kept.reused(), 1u);
+  expect_same_pairs(kept, boxes);
+  EXPECT_EQ(kept.reused(), 2u);
+}
+
+}  // namespace
+}  // namespace collision2d

@@ -15,6 +15,11 @@ namespace
 /// unit box by 0.1 m, far more than a resting body moves between frames,
 /// while the enlarged boxes of a stack's neighbours overlap no further ones.
 constexpr double kFatFraction = 0.1;
+/// After enlarged boxes were left at once, the next ones are built this many
+/// frames later, then twice as many, up to kMaxWait: where bodies keep moving
+/// (a gas, a rain) the exact boxes' pairs cost less than enlarged ones.
+constexpr int kFirstWait = 1;
+constexpr int kMaxWait = 64;
 
 Aabb enlarged(const Aabb& box)
 {
@@ -36,10 +41,19 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
   if (still_inside(boxes))
   {
     ++reused_;
+    wait_ = kFirstWait;
+  }
+  else if (frames_to_wait_ > 0)
+  {
+    --frames_to_wait_;
+    broad_phase.find_pairs(boxes, pairs, runner);
+    return;
   }
   else
   {
     rebuild(boxes, broad_phase, runner);
+    frames_to_wait_ = wait_;
+    wait_ = std::min(2 * wait_, kMaxWait);
   }
   // Boxes that overlap lie in enlarged boxes that overlap, so every pair is
   // among the kept ones, which are in (i, j) order; an unusable box pairs

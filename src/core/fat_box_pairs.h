@@ -2,7 +2,9 @@
 // Pairs are found on boxes enlarged by a fraction of their size; while every
 // box stays inside its enlarged one, the pairs of the boxes now are exactly
 // the kept pairs whose boxes overlap now, so no grid is built. A stack at
-// rest keeps its pairs for as long as it rests.
+// rest keeps its pairs for as long as it rests. Where boxes keep leaving
+// their enlarged ones, the exact boxes are paired and enlarging is tried
+// again after a wait that doubles.
 #pragma once
 
 #include <cstddef>
@@ -33,6 +35,8 @@ private:
   std::vector<BodyPair> fat_pairs_;  ///< every pair of overlapping enlarged boxes, in (i, j) order
   bool built_ = false;
   std::size_t reused_ = 0;
+  int wait_ = 1;            ///< frames the next failed reuse waits before enlarging again
+  int frames_to_wait_ = 0;  ///< frames left that pair the exact boxes
 };
 
 }  // namespace detail

@@ -1184,7 +1184,7 @@ Box2D v3*; the time ratio is CPU time per frame, wall in the table).
   (compare the wall and CPU columns; CPU time excludes time spent preempted).
 - **Both pipelines.** Every run of ours sets `soft_step` explicitly: the
   soft step (contacts found once a frame within a speculative margin, solved
-  as damped springs, relaxed every substep, restitution after the substeps)
+  as damped springs, relaxed every substep, restitution at the end of each substep)
   and the Fx2D order (detect, correct positions, solve velocities every
   substep). Shared knobs, one at a time around the scene's settings (4
   substeps x 2 velocity iterations, every effect Auto), in both: velocity

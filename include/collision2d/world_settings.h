@@ -75,7 +75,7 @@ struct Material
   X(solver_mode, SolverMode, SolverMode::Iterative, kAnyFinite, "", "Velocity solve: iterative passes, or exact LCP per island") \
   X(exact_position_correction, bool, true, kAnyFinite, "", "Exact solver only: penetration also solved as one LCP per island") \
   X(warm_start_before_integration, bool, false, kAnyFinite, "", "Advance poses with velocities predicted from the last substep's contacts") \
-  X(soft_step, bool, true, kAnyFinite, "", "Soft step (iterative mode): collide once per frame, soft contacts, relax, restitution last") \
+  X(soft_step, bool, true, kAnyFinite, "", "Soft step (iterative mode): collide once per frame, soft contacts, relax, restitution each substep") \
   X(contact_hertz, double, 40.0, kNonNegative, "Hz", "Soft step: contact stiffness (at most a quarter of the substep rate; twice it against static bodies)") \
   X(contact_damping_ratio, double, 10.0, kNonNegative, "", "Soft step: damping ratio of the contact spring") \
   X(contact_push_speed, double, 3.0, kPositive, "m/s", "Soft step: fastest a penetration is pushed out") \

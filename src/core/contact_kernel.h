@@ -224,6 +224,9 @@ bool block_solvable(double k11, double k12, double k22);
 /// Soft step: the point's gap now, from the bodies' pose changes since
 /// prepare (m, < 0 overlapping).
 double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>& state);
+/// Soft step: a gap at most this wide touches (m); one closed exactly within
+/// a substep leaves only round-off.
+constexpr double kTouchingGap = 1e-9;
 /// One soft update of the normal impulse. A speculative point (gap > 0) only
 /// removes the approach that would close its gap within the substep; an
 /// overlapping one, with `use_bias`, is pushed out at most at `max_push` (m/s)
@@ -236,8 +239,10 @@ void solve_soft_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double
 /// Reads first.pair_k12 and first.pair_block, set when the frame is prepared.
 void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
                              double inv_h, double max_push, bool use_bias);
-/// Drives a point that pushed this frame toward its Newton target (normal
-/// impulse only, accumulated >= 0). Returns its residual before the update.
+/// Takes back a point's whole normal impulse.
+void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
+/// Drives a point toward its Newton target, of either sign (normal impulse
+/// only, accumulated >= 0). Returns its residual before the update.
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state);
 
 /// Normal residual (m/s): a pushing point must meet its target exactly, an

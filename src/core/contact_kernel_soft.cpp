@@ -117,12 +117,16 @@ void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vec
   set_soft_impulse(second, scale2 * y2, state);
 }
 
+void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
+{
+  const double applied = -p.lambda_n;
+  p.lambda_n = 0.0;
+  p.frame_impulse += applied;
+  apply_impulse(p, applied * p.normal, state);
+}
+
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
-  if (p.target <= 0.0 || p.frame_impulse <= 0.0)
-  {
-    return 0.0;  // no bounce asked for, or a speculative point that never touched
-  }
   const double vn = dot(relative_velocity(p, state), p.normal);
   const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass);
   const double applied = total - p.lambda_n;

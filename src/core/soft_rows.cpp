@@ -214,6 +214,40 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   }
 }
 
+RowPoint* SoftRows::row_point_of(std::size_t k, int& lane)
+{
+  // row_slots_ is in point order: the last manifold starting at or before k
+  // holds k if it starts there or k is its second point.
+  const auto after = std::upper_bound(row_slots_.begin(), row_slots_.end(), k,
+                                      [](std::size_t point, const RowSlot& row) { return point < row.first; });
+  if (after == row_slots_.begin())
+  {
+    return nullptr;
+  }
+  const RowSlot& row = *(after - 1);
+  const std::size_t which = k - row.first;
+  if (which > 1)
+  {
+    return nullptr;
+  }
+  lane = static_cast<int>(row.slot % kRowLanes);
+  return &rows_[colours_[row.colour].begin + row.slot / kRowLanes].point[which];
+}
+
+double* SoftRows::normal_impulse_of(std::size_t k)
+{
+  int lane = 0;
+  RowPoint* point = row_point_of(k, lane);
+  return point == nullptr ? nullptr : &point->normal[lane];
+}
+
+double* SoftRows::frame_impulse_of(std::size_t k)
+{
+  int lane = 0;
+  RowPoint* point = row_point_of(k, lane);
+  return point == nullptr ? nullptr : &point->frame[lane];
+}
+
 namespace
 {
 /// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches.

@@ -88,6 +88,11 @@ public:
                        std::size_t parts = 1);
   void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
                   std::size_t parts = 1);
+  /// Where point k's accumulated and frame normal impulses live while the
+  /// rows are packed: its lane of a row, or nullptr when its manifold is
+  /// solved on the point verbs (the point's own fields are then current).
+  double* normal_impulse_of(std::size_t k);
+  double* frame_impulse_of(std::size_t k);
   /// The rows' impulses and friction state back into their points, batches
   /// shared among the workers; drops the spare body.
   void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, WorkerPool& workers) const;
@@ -99,6 +104,8 @@ private:
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
   static void unpack_lane(const RowBatch& batch, int lane, std::vector<ContactPoint>& points, std::size_t first);
+  /// Point k's row point and lane, or nullptr when its manifold has no row.
+  RowPoint* row_point_of(std::size_t k, int& lane);
 
   std::vector<RowBatch> rows_;
   std::vector<RowColour> colours_;

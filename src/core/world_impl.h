@@ -132,8 +132,8 @@ struct WorldImpl
   void soft_frame(StepContext& ctx, StepReport& report);
   void prepare_soft_points(const StepContext& ctx);
   /// prepare_soft_points' per-point work on points [begin, end) (whole
-  /// pairs); returns the fastest Newton target among them (m/s, 0 if none).
-  double prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
+  /// pairs); returns whether any of them can bounce (e > 0).
+  bool prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
   /// Body i's pose at prepare, no pose change yet, not stopped or touching.
   void reset_body_motion(std::size_t i);
   /// After move_body: a stopped body held, a free one on its parabola,
@@ -141,7 +141,6 @@ struct WorldImpl
   void follow_body(std::size_t i, const StepContext& ctx);
   /// The angles in frame_theta_ set on the bodies that turned.
   void turn_bodies();
-  void aim_at_impact(ContactPoint& p) const;
   void integrate_velocities(const StepContext& ctx);
   /// The soft passes, or in exact mode each island's LCP (the passes then
   /// take only the islands it could not solve).
@@ -166,7 +165,18 @@ struct WorldImpl
   /// frame (publish_contacts does it on its way through the points).
   void carry_slip(ContactPoint& p) const;
   void integrate_positions(StepContext& ctx, StepReport& report);
-  void restitution_pass(StepReport& report);
+  // world_soft_restitution.cpp: restitution, substep by substep.
+  /// The frame's points that can bounce, after the rows are packed.
+  void find_bounce_points();
+  /// At a substep's start: each bouncing point's Newton target from the
+  /// velocities now.
+  void aim_bounces();
+  /// How fast gravity closes p's gap (m/s^2, > 0 closing): only bodies that
+  /// fall feel it.
+  double closing_gravity(const ContactPoint& p) const;
+  /// At a substep's end: the points it pushed driven to their targets,
+  /// iterated to the fixed point.
+  void restitute(StepReport& report);
   /// The deepest overlap of the frame's contact points at the poses now,
   /// followed from the pose changes since they were prepared (m).
   double followed_penetration();
@@ -430,7 +440,9 @@ struct WorldImpl
   std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
   std::vector<WorldContact> cache_;   ///< previous substep's contacts, for warm starting
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
-  double fastest_target_ = 0.0;       ///< soft step: the frame's fastest Newton target (m/s), from prepare
+  bool bounces_ = false;               ///< soft step: some point of the frame can bounce
+  std::vector<BouncePoint> bounce_points_;  ///< ... those points
+  std::vector<std::size_t> bouncing_;   ///< scratch: the bounce_points_ a substep's restitution drives
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).
   bool followed_known_ = false;

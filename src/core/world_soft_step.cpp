@@ -5,9 +5,11 @@
 // first). Each substep integrates gravity, warm starts, solves the contacts as
 // damped springs, moves the bodies and relaxes (solves again without the
 // push-out, so no correction stays behind as velocity). A contact's gap
-// follows from the bodies' pose changes, not from detecting again. After the
-// substeps, restitution drives every bouncing contact to its Newton target,
-// iterated to the fixed point.
+// follows from the bodies' pose changes, not from detecting again. At each
+// substep's end, restitution drives the contacts the substep pushed to their
+// Newton targets (e times the approach speed at the substep's start), iterated
+// to the fixed point: a body that meets several others in turn within one
+// frame bounces off each as it meets it.
 // Static friction holds position, not only velocity: a sticking point
 // remembers how far it has slipped since it stuck (across frames, with its
 // impulses) and its friction pulls that back at the contact's rate, so a stack
@@ -33,10 +35,6 @@ constexpr double kMaxHertzPerSubstepRate = 0.25;
 /// Contacts with a body that cannot move are this much stiffer, so a stack
 /// is not pressed into the ground by its own weight.
 constexpr double kStaticStiffnessFactor = 2.0;
-/// Restitution passes stop when every bouncing contact is this close to its
-/// target (m/s), relative to the fastest approach, or after kMaxRestitutionPasses.
-constexpr double kRestitutionTolerance = 1e-12;
-constexpr int kMaxRestitutionPasses = 64;
 /// A touching body turns at most this much per substep (rad): the frame's
 /// contacts follow its pose from lever arms fixed at prepare, which a faster
 /// spin would swing through the surface it touches.
@@ -61,22 +59,24 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   {
     soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
   }
+  find_bounce_points();                                   // world_soft_restitution.cpp
   // 3. Substeps.
   for (int k = 0; k < settings_.substeps; ++k)
   {
+    aim_bounces();
     integrate_velocities(ctx);
     solve_contacts(ctx, true, report);
     integrate_positions(ctx, report);
     solve_contacts(ctx, false, report);                   // relax
+    restitute(report);
     ++report.substeps;
   }
   turn_bodies();
-  // 4. Restitution to the fixed point, then the impulses kept for next frame.
+  // 4. The impulses kept for next frame.
   if (rows_on())
   {
     soft_rows_.unpack(points_, velocity_, workers_);
   }
-  restitution_pass(report);
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();
   publish_contacts(true);                                 // slips carried, gaps followed
@@ -89,19 +89,22 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
   // Both preparations of a block of points run while it is in cache.
-  std::atomic<double> fastest{0.0};
+  std::atomic<bool> bounces{false};
   for_point_ranges([&](std::size_t begin, std::size_t end) {
-    double range_fastest = 0.0;
+    bool range_bounces = false;
     for (std::size_t block = begin; block < end;)
     {
       const std::size_t block_end = std::min(end, pair_boundary(block + kPrepareBlockPoints));
       prepare_point_range(ctx.effects, block, block_end);  // world_solve.cpp
-      range_fastest = std::max(range_fastest, prepare_soft_range(moving, fixed, block, block_end));
+      range_bounces = prepare_soft_range(moving, fixed, block, block_end) || range_bounces;
       block = block_end;
     }
-    raise_to(fastest, range_fastest);
+    if (range_bounces)
+    {
+      bounces.store(true, std::memory_order_relaxed);
+    }
   });
-  fastest_target_ = fastest.load();
+  bounces_ = bounces.load();
   stopped_.resize(bodies_.size());
   touching_.resize(bodies_.size());
   held_position_.resize(bodies_.size());
@@ -122,10 +125,10 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   }
 }
 
-double WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin,
-                                     std::size_t end)
+bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin,
+                                   std::size_t end)
 {
-  double fastest = 0.0;
+  bool bounces = false;
   for (std::size_t k = begin; k < end; ++k)
   {
     ContactPoint& p = points_[k];
@@ -134,11 +137,10 @@ double WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fix
       continue;
     }
     p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
-    aim_at_impact(p);
     p.frame_impulse = 0.0;
     const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
     p.softness = both_move ? moving : fixed;
-    fastest = std::max(fastest, p.target);
+    bounces = bounces || p.restitution > 0.0;
   }
   // A manifold's normal block is the same all frame (lever arms are fixed).
   for (std::size_t k = begin; k + 1 < end; ++k)
@@ -151,7 +153,7 @@ double WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fix
       ++k;
     }
   }
-  return fastest;
+  return bounces;
 }
 
 void WorldImpl::reset_body_motion(std::size_t i)
@@ -165,27 +167,6 @@ void WorldImpl::reset_body_motion(std::size_t i)
   frame_theta_[i] = bodies_[i].theta();
   stopped_[i] = false;
   touching_[i] = false;
-}
-
-void WorldImpl::aim_at_impact(ContactPoint& p) const
-{
-  // A speculative point is hit later in the frame, after gravity has closed
-  // its gap faster: its target is e times the approach speed at contact.
-  if (p.separation <= 0.0 || p.restitution == 0.0)
-  {
-    return;  // checked first: most points touch or do not bounce
-  }
-  const auto falls = [&](std::size_t i) { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; };
-  const Vec2 closing_gravity = (falls(p.a) ? settings_.gravity : Vec2{0.0, 0.0}) -
-                               (falls(p.b) ? settings_.gravity : Vec2{0.0, 0.0});
-  const double closing = dot(closing_gravity, p.normal);  // m/s^2, > 0 closes the gap
-  const double approach = std::max(0.0, -p.approach_speed);
-  if (closing <= 0.0)
-  {
-    return;
-  }
-  const double at_contact = std::sqrt(approach * approach + 2.0 * closing * p.separation);
-  p.target = newton_target(-at_contact, p.restitution, settings_.restitution_threshold);
 }
 
 void WorldImpl::integrate_velocities(const StepContext& ctx)
@@ -314,34 +295,6 @@ double WorldImpl::followed_penetration()
     const ContactPoint& p = points_[k];
     return p.active ? -current_separation(p, velocity_) : -std::numeric_limits<double>::infinity();
   });
-}
-
-void WorldImpl::restitution_pass(StepReport& report)
-{
-  // The passes are Gauss-Seidel in point order and stay on one thread; the
-  // fastest target was found in prepare.
-  const double fastest = fastest_target_;
-  if (fastest == 0.0)
-  {
-    return;
-  }
-  double residual = 0.0;
-  for (int pass = 0; pass < kMaxRestitutionPasses; ++pass)
-  {
-    residual = 0.0;
-    for (ContactPoint& p : points_)
-    {
-      if (p.active)
-      {
-        residual = std::max(residual, apply_restitution(p, velocity_));
-      }
-    }
-    if (residual <= kRestitutionTolerance * fastest)
-    {
-      break;
-    }
-  }
-  report.velocity_residual = std::max(report.velocity_residual, residual);
 }
 
 }  // namespace detail

@@ -29,6 +29,17 @@ struct StepContext
 /// One soft pass's parameters (world_soft_solve.cpp).
 struct SoftPass;
 
+/// Soft step: a contact point that can bounce (e > 0) and where its normal
+/// impulses live during the substeps (world_soft_restitution.cpp).
+struct BouncePoint
+{
+  std::size_t point = 0;
+  double* normal = nullptr;     ///< accumulated normal impulse: in its row, or the point's own
+  double* frame = nullptr;      ///< impulse applied over the frame, likewise
+  double target = 0.0;          ///< this substep's Newton target (m/s), from its start
+  bool apart = false;           ///< neither touching nor approaching at the substep's start
+};
+
 /// Bodies below which a per-body stage stays on the calling thread: each
 /// body's update is a few operations, less than waking the workers costs.
 constexpr std::size_t kMinSharedBodies = 2048;

@@ -86,6 +86,10 @@ bool is_mass_ratio(const BenchScene& s)
   return s.name.compare(0, 15, "heavy_on_light_") == 0;
 }
 
+/// Scenes whose bodies come to rest: a world that sleeps then holds them
+/// still at little cost (the peers sleep at their defaults too).
+bool comes_to_rest(const BenchScene& s) { return s.kind == SceneKind::Resting || s.kind == SceneKind::Incline; }
+
 std::string text(double value)
 {
   char buffer[32];
@@ -215,6 +219,10 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
   {
     add_exact(base, runs);
   }
+  if (comes_to_rest(scene))
+  {
+    add_toggles(base, &WorldSettings::sleeping, "sleeping", {Toggle::On}, runs);
+  }
   if (scene.kind == SceneKind::Bullet)
   {
     add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
@@ -278,6 +286,10 @@ void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
   if (scene.name != "pyramid")
   {
     add_exact(base, runs);
+  }
+  if (comes_to_rest(scene))
+  {
+    add_toggles(base, &WorldSettings::sleeping, "sleeping", {Toggle::On}, runs);
   }
   if (scene.kind == SceneKind::Bullet)
   {

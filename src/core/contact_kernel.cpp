@@ -76,7 +76,6 @@ void prepare_pair(ContactPoint& first, const ContactPoint& second)
 
 void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
-  p.frame_impulse += p.lambda_n;
   if (p.lambda_n != 0.0 || p.lambda_t != 0.0)
   {
     apply_impulse(p, p.lambda_n * p.normal + p.lambda_t * p.tangent, state);

@@ -83,11 +83,9 @@ struct ContactPoint
   double lambda_n = 0.0;  ///< accumulated normal impulse (N s), >= 0
   double lambda_t = 0.0;  ///< accumulated tangential impulse on b along tangent (N s)
 
-  // Soft step: the impulse the frame applied (restitution only acts where it
-  // pushed), the slip carried from earlier frames, and the gap at prepare
+  // Soft step: the slip carried from earlier frames, and the gap at prepare
   // less the anchors' offset, so the current gap follows from the bodies'
   // pose changes.
-  double frame_impulse = 0.0;    ///< normal impulse applied over the frame, warm starts included (N s)
   double anchor_drift = 0.0;     ///< tangential slip since the point last stuck, at prepare (m)
   double base_separation = 0.0;  ///< m
   double pair_k12 = 0.0;         ///< first point of a manifold: pair_coupling, fixed for the frame (1/kg)

@@ -71,7 +71,6 @@ void set_soft_impulse(ContactPoint& p, double total, std::vector<BodyVelocity>& 
 {
   const double applied = total - p.lambda_n;
   p.lambda_n = total;
-  p.frame_impulse += applied;
   apply_impulse(p, applied * p.normal, state);
 }
 }  // namespace
@@ -121,7 +120,6 @@ void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
   const double applied = -p.lambda_n;
   p.lambda_n = 0.0;
-  p.frame_impulse += applied;
   apply_impulse(p, applied * p.normal, state);
 }
 
@@ -131,7 +129,6 @@ double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
   const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass);
   const double applied = total - p.lambda_n;
   p.lambda_n = total;
-  p.frame_impulse += applied;
   apply_impulse(p, applied * p.normal, state);
   return p.lambda_n > 0.0 ? std::abs(vn - p.target) : std::max(0.0, p.target - vn);
 }

@@ -170,7 +170,7 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
     }
     for (RowPoint& q : r.point)
     {
-      for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.kinetic, q.anchor, q.normal, q.tangent, q.frame,
+      for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.kinetic, q.anchor, q.normal, q.tangent,
                         q.sliding})
       {
         f[j] = 0.0;
@@ -209,7 +209,6 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
     q.anchor[j] = c.anchor_drift;
     q.normal[j] = c.lambda_n;
     q.tangent[j] = c.lambda_t;
-    q.frame[j] = c.frame_impulse;
     q.sliding[j] = c.sliding ? 1.0 : 0.0;
   }
 }
@@ -239,13 +238,6 @@ double* SoftRows::normal_impulse_of(std::size_t k)
   int lane = 0;
   RowPoint* point = row_point_of(k, lane);
   return point == nullptr ? nullptr : &point->normal[lane];
-}
-
-double* SoftRows::frame_impulse_of(std::size_t k)
-{
-  int lane = 0;
-  RowPoint* point = row_point_of(k, lane);
-  return point == nullptr ? nullptr : &point->frame[lane];
 }
 
 namespace
@@ -302,7 +294,6 @@ void SoftRows::unpack_lane(const RowBatch& r, int j, std::vector<ContactPoint>& 
     const RowPoint& q = r.point[k];
     c.lambda_n = q.normal[j];
     c.lambda_t = q.tangent[j];
-    c.frame_impulse = q.frame[j];
     c.sliding = q.sliding[j] != 0.0;
   }
 }

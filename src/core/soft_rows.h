@@ -30,7 +30,6 @@ struct alignas(32) RowPoint
   double anchor[kRowLanes];   ///< slip since sticking, at prepare (m)
   double normal[kRowLanes];   ///< accumulated normal impulse (N s)
   double tangent[kRowLanes];  ///< accumulated tangential impulse (N s)
-  double frame[kRowLanes];    ///< normal impulse applied this frame (N s)
   double sliding[kRowLanes];  ///< friction at its bound
 };
 
@@ -88,11 +87,10 @@ public:
                        std::size_t parts = 1);
   void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
                   std::size_t parts = 1);
-  /// Where point k's accumulated and frame normal impulses live while the
-  /// rows are packed: its lane of a row, or nullptr when its manifold is
-  /// solved on the point verbs (the point's own fields are then current).
+  /// Where point k's accumulated normal impulse lives while the rows are
+  /// packed: its lane of a row, or nullptr when its manifold is solved on
+  /// the point verbs (the point's own field is then current).
   double* normal_impulse_of(std::size_t k);
-  double* frame_impulse_of(std::size_t k);
   /// The rows' impulses and friction state back into their points, batches
   /// shared among the workers; drops the spare body.
   void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, WorkerPool& workers) const;

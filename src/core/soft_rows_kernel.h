@@ -136,7 +136,6 @@ void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, RowPoint& 
 {
   const V ln = ops.load(point.normal);
   const V lt = ops.load(point.tangent);
-  ops.store(point.frame, ops.load(point.frame) + ln);
   const V zero = V(0.0);
   Lane<V> pushed = l;
   apply(pushed, ra, rb, scale(l.n, ln) + scale(l.t, lt));
@@ -194,7 +193,6 @@ void set_normal(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, RowPoint& point,
 {
   const V applied = total - ops.load(point.normal);
   ops.store(point.normal, total);
-  ops.store(point.frame, ops.load(point.frame) + applied);
   apply(l, ra, rb, scale(l.n, applied));
 }
 

@@ -177,7 +177,6 @@ void WorldImpl::solve_exact_islands(StepReport& report, const std::vector<double
       const detail::ContactPoint& row = islands.rows[r];
       ContactPoint& w = points_[row.contact];
       w.exact = true;
-      w.frame_impulse += row.lambda_n;  // the soft step bounces only what pushed
       w.lambda_n = add ? w.lambda_n + row.lambda_n : row.lambda_n;
       w.lambda_t = add ? w.lambda_t : row.lambda_t;
       w.sliding = add ? w.sliding : row.sliding;

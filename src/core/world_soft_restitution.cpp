@@ -38,11 +38,9 @@ void WorldImpl::find_bounce_points()
     }
     // Packed rows carry the impulses during the substeps; other points their own.
     double* normal = rows_on() ? soft_rows_.normal_impulse_of(k) : nullptr;
-    double* frame = rows_on() ? soft_rows_.frame_impulse_of(k) : nullptr;
     BouncePoint bounce;
     bounce.point = k;
     bounce.normal = normal != nullptr ? normal : &p.lambda_n;
-    bounce.frame = frame != nullptr ? frame : &p.frame_impulse;
     bounce_points_.push_back(bounce);
   }
 }
@@ -83,8 +81,8 @@ double WorldImpl::closing_gravity(const ContactPoint& p) const
 
 void WorldImpl::restitute(StepReport& report)
 {
-  // Every bouncing point the substep pushed (its impulse then holds it: the
-  // frame's pushes sum to it) takes part: each ends at e times its speed at
+  // Every bouncing point the substep pushed (it ends the substep holding an
+  // impulse: a substep's warm start and passes sum to the impulse) takes part: each ends at e times its speed at
   // the substep's start, reversed, or lets go; one that was apart and still
   // lets go at once (it was only pushed because another impact sent a body
   // its way: it meets that body in a later substep, at the speed it then
@@ -104,12 +102,10 @@ void WorldImpl::restitute(StepReport& report)
     }
     ContactPoint& p = points_[bounce.point];
     p.lambda_n = *bounce.normal;
-    p.frame_impulse = *bounce.frame;
     if (bounce.apart)
     {
       release_normal(p, velocity_);
       *bounce.normal = p.lambda_n;
-      *bounce.frame = p.frame_impulse;
       continue;
     }
     p.target = bounce.target;
@@ -145,7 +141,6 @@ void WorldImpl::restitute(StepReport& report)
   {
     const BouncePoint& bounce = bounce_points_[i];
     *bounce.normal = points_[bounce.point].lambda_n;
-    *bounce.frame = points_[bounce.point].frame_impulse;
   }
 }
 

@@ -137,7 +137,6 @@ bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
       continue;
     }
     p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
-    p.frame_impulse = 0.0;
     const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
     p.softness = both_move ? moving : fixed;
     bounces = bounces || p.restitution > 0.0;

@@ -35,7 +35,6 @@ struct BouncePoint
 {
   std::size_t point = 0;
   double* normal = nullptr;     ///< accumulated normal impulse: in its row, or the point's own
-  double* frame = nullptr;      ///< impulse applied over the frame, likewise
   double target = 0.0;          ///< this substep's Newton target (m/s), from its start
   bool apart = false;           ///< neither touching nor approaching at the substep's start
 };

@@ -99,6 +99,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   }
   overflow_.clear();
   coloured_ = 0;
+  used_colours_ = 0;
   // First pass: colour every manifold; rows are counted, then placed.
   row_slots_.clear();
   for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
@@ -115,6 +116,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
       continue;
     }
     ++coloured_;
+    used_colours_ = std::max(used_colours_, colour + 1);
     if (row_manifold(p))
     {
       row_slots_.push_back(RowSlot{k, colour, colours_[colour].lanes++});
@@ -127,8 +129,9 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   // Second pass: each colour's rows in whole batches, the last one padded.
   // Every lane has its own slot, so the workers can fill them in any split.
   std::size_t batches = 0;
-  for (RowColour& c : colours_)
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
   {
+    RowColour& c = colours_[colour];
     c.begin = batches;
     batches += (c.lanes + kRowLanes - 1) / kRowLanes;
     c.end = batches;
@@ -142,8 +145,9 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
       fill_lane(rows_[batch], static_cast<int>(row.slot % kRowLanes), points, row.first, friction);
     }
   });
-  for (const RowColour& c : colours_)
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
   {
+    const RowColour& c = colours_[colour];
     for (std::size_t slot = c.lanes; slot < (c.end - c.begin) * kRowLanes; ++slot)
     {
       fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, SIZE_MAX, friction);

@@ -77,7 +77,9 @@ public:
   /// `velocity` gains one spare body at its end for the padding lanes.
   void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
             WorkerPool& workers);
-  std::size_t colour_count() const { return colours_.size(); }
+  /// Colours in use: the greedy colouring takes the lowest free one, so
+  /// they are 0 .. colour_count() - 1.
+  std::size_t colour_count() const { return used_colours_; }
   const std::vector<std::size_t>& others(std::size_t colour) const { return colours_[colour].others; }
   const std::vector<std::size_t>& overflow() const { return overflow_; }
   /// Manifolds in colours (rows and others), not counting the overflow.
@@ -107,6 +109,7 @@ private:
 
   std::vector<RowBatch> rows_;
   std::vector<RowColour> colours_;
+  std::size_t used_colours_ = 0;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
   std::vector<std::uint32_t> colours_of_;  ///< per body, a bit per colour that moves it
   /// Where a row manifold goes: its colour and its place among the colour's rows.

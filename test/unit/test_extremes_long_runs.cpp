@@ -19,6 +19,7 @@
 #include "collision2d/scene.h"
 #include "collision2d/scenes/scene_parts.h"
 #include "extremes_support.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
@@ -27,15 +28,7 @@ namespace
 constexpr long kFrames = 100000;
 constexpr long kSanitizerFrames = 10000;
 
-double kinetic_energy(const World& world)
-{
-  double e = 0.0;
-  for (BodyId id : world.body_ids())
-  {
-    e += world.body(id).kinetic_energy();
-  }
-  return e;
-}
+using test::kinetic_energy;
 
 TEST(ExtremesLongRuns, RestingStackDoesNotDrift)
 {

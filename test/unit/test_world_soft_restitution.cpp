@@ -19,15 +19,7 @@ namespace collision2d
 {
 namespace
 {
-double kinetic_energy(const World& world)
-{
-  double e = 0.0;
-  for (BodyId id : world.body_ids())
-  {
-    e += world.body(id).kinetic_energy();
-  }
-  return e;
-}
+using test::kinetic_energy;
 
 Vec2 momentum(const World& world)
 {

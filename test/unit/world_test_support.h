@@ -38,6 +38,17 @@ inline double first_rebound_apex(World& world, BodyId id, int max_frames)
   return apex;
 }
 
+/// The world's kinetic energy (J), every body's summed.
+inline double kinetic_energy(const World& world)
+{
+  double e = 0.0;
+  for (BodyId id : world.body_ids())
+  {
+    e += world.body(id).kinetic_energy();
+  }
+  return e;
+}
+
 /// Every body's position, in body_ids() order.
 inline std::vector<Vec2> positions(const World& world)
 {

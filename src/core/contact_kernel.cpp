@@ -54,7 +54,7 @@ Vec2 midpoint_arm_b(const ContactPoint& first, const ContactPoint& second) { ret
 
 }  // namespace
 
-void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold)
+void prepare_masses(ContactPoint& p, double restitution)
 {
   p.tangent = perp(p.normal);
   p.k_n = inverse_effective_mass(p, p.r_a, p.r_b, p.normal);
@@ -62,8 +62,13 @@ void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, doub
   p.normal_mass = 1.0 / p.k_n;
   p.tangent_mass = 1.0 / p.k_t;
   p.pair_tangent_mass = p.tangent_mass;
-  // Measured once, before any impulse: later impulses never move the target.
   p.restitution = restitution;
+}
+
+void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold)
+{
+  prepare_masses(p, restitution);
+  // Measured once, before any impulse: later impulses never move the target.
   p.approach_speed = dot(relative_velocity(p, state), p.normal);
   p.target = newton_target(p.approach_speed, restitution, threshold);
 }

@@ -171,9 +171,11 @@ inline void apply_impulse(const ContactPoint& p, Vec2 impulse, std::vector<BodyV
   apply_impulse_at(p, p.r_a, p.r_b, impulse, state);
 }
 
-/// Fills the point's effective masses and its Newton target from the
-/// velocities now, before any impulse. The caller sets the lever arms and the
-/// per-point inverse masses first.
+/// Fills the point's effective masses and its restitution. The caller sets
+/// the lever arms and the per-point inverse masses first.
+void prepare_masses(ContactPoint& p, double restitution);
+/// prepare_masses, then the Newton target from the velocities now, before
+/// any impulse.
 void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold);
 /// The midpoint tangent mass of a two-point manifold, for its one friction row.
 void prepare_pair(ContactPoint& first, const ContactPoint& second);
@@ -196,6 +198,13 @@ bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<B
 /// impulse, split in proportion to the normal impulses.
 void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
                          double bias = 0.0);
+/// Soft step: the offset between the point's anchors on its two bodies now
+/// (m), from their pose changes since prepare; the gap and the slip follow.
+Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state);
+/// The gap (m, < 0 overlapping) and the tangential slip since prepare (m) at
+/// an anchor offset.
+inline double separation_at(const ContactPoint& p, Vec2 offset) { return p.base_separation + dot(offset, p.normal); }
+inline double slip_at(const ContactPoint& p, Vec2 offset) { return dot(offset - (p.r_b - p.r_a), p.tangent); }
 /// Soft step: the point's tangential slip since prepare, from the bodies' pose changes (m).
 double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state);
 /// Both normals and the midpoint friction row solved at once assuming the pair

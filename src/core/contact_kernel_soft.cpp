@@ -28,22 +28,23 @@ Softness make_softness(double hertz, double damping_ratio, double h)
   return Softness{omega / a1, a2 * a3, a3};
 }
 
-double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>& state)
+Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state)
 {
   const BodyVelocity& a = state[p.a];
   const BodyVelocity& b = state[p.b];
   const Vec2 turned_a = rotate(p.r_a, a.turned_cos, a.turned_sin);
   const Vec2 turned_b = rotate(p.r_b, b.turned_cos, b.turned_sin);
-  return p.base_separation + dot(b.moved - a.moved + turned_b - turned_a, p.normal);
+  return b.moved - a.moved + turned_b - turned_a;
+}
+
+double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>& state)
+{
+  return separation_at(p, anchor_offset(p, state));
 }
 
 double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state)
 {
-  const BodyVelocity& a = state[p.a];
-  const BodyVelocity& b = state[p.b];
-  const Vec2 turned_a = rotate(p.r_a, a.turned_cos, a.turned_sin);
-  const Vec2 turned_b = rotate(p.r_b, b.turned_cos, b.turned_sin);
-  return dot(b.moved - a.moved + turned_b - turned_a - (p.r_b - p.r_a), p.tangent);
+  return slip_at(p, anchor_offset(p, state));
 }
 
 namespace

@@ -304,8 +304,9 @@ void WorldImpl::publish_contacts(bool soft_frame)
       ContactPoint& row = points_[k];
       if (soft_frame && row.active)
       {
-        carry_slip(row);
-        range_deepest = std::max(range_deepest, -current_separation(row, velocity_));
+        const Vec2 offset = anchor_offset(row, velocity_);  // read once for both
+        carry_slip(row, offset);
+        range_deepest = std::max(range_deepest, -separation_at(row, offset));
       }
       WorldContact& c = contacts_[k];
       c.a = ids_[row.a];

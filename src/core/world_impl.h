@@ -163,7 +163,7 @@ struct WorldImpl
   double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
   /// After the frame: an active sticking point's slip, carried to the next
   /// frame (publish_contacts does it on its way through the points).
-  void carry_slip(ContactPoint& p) const;
+  void carry_slip(ContactPoint& p, Vec2 offset) const;
   void integrate_positions(StepContext& ctx, StepReport& report);
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
@@ -177,6 +177,8 @@ struct WorldImpl
   /// At a substep's end: the points it pushed driven to their targets,
   /// iterated to the fixed point.
   void restitute(StepReport& report);
+  /// The points restitute drives, into bouncing_; returns their fastest |target| (m/s).
+  double take_bouncing();
   /// The deepest overlap of the frame's contact points at the poses now,
   /// followed from the pose changes since they were prepared (m).
   double followed_penetration();
@@ -265,8 +267,9 @@ struct WorldImpl
   void load_velocities();
   void store_velocities();
   void prepare_points(const ActiveEffects& effects);
-  /// prepare_points on points [begin, end) (whole pairs).
-  void prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end);
+  /// prepare_points on points [begin, end) (whole pairs); without
+  /// `targets` (the soft step aims each substep) no Newton target is set.
+  void prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end, bool targets = true);
   void warm_start();
   void solve_velocities(bool friction);
   double velocity_residual() const;

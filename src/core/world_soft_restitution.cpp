@@ -2,7 +2,7 @@
 // substep). At a substep's start every point that can bounce takes its Newton
 // target from its approach speed then; at the substep's end the points the
 // substep pushed are driven to their targets, Gauss-Seidel in point order to
-// the fixed point. Targets fixed once per frame would stop a contact that a
+// the fixed point (on one thread). Targets fixed once per frame would stop a contact that a
 // body only turns toward after an earlier bounce in the same frame, and lose
 // its energy; per substep, each meeting bounces from the speed it happened at.
 #include <algorithm>
@@ -81,44 +81,7 @@ double WorldImpl::closing_gravity(const ContactPoint& p) const
 
 void WorldImpl::restitute(StepReport& report)
 {
-  // Every bouncing point the substep pushed (it ends the substep holding an
-  // impulse: a substep's warm start and passes sum to the impulse) takes part: each ends at e times its speed at
-  // the substep's start, reversed, or lets go; one that was apart and still
-  // lets go at once (it was only pushed because another impact sent a body
-  // its way: it meets that body in a later substep, at the speed it then
-  // has). With e = 1 the substep then keeps the kinetic energy exactly,
-  // however many bodies met in it. Impulses come from the rows for the
-  // passes and go back after them. A point the relax slowed before it
-  // touched bounces now, a gap short of contact: gravity over that gap is
-  // taken off its rebound, as the free fall it skips.
-  bouncing_.clear();
-  double fastest = 0.0;
-  for (std::size_t i = 0; i < bounce_points_.size(); ++i)
-  {
-    BouncePoint& bounce = bounce_points_[i];
-    if (*bounce.normal <= 0.0)
-    {
-      continue;
-    }
-    ContactPoint& p = points_[bounce.point];
-    p.lambda_n = *bounce.normal;
-    if (bounce.apart)
-    {
-      release_normal(p, velocity_);
-      *bounce.normal = p.lambda_n;
-      continue;
-    }
-    p.target = bounce.target;
-    if (bounce.target > 0.0)
-    {
-      const double gap = current_separation(p, velocity_);
-      const double closing = closing_gravity(p);
-      const double climb = gap > 0.0 && closing > 0.0 ? 2.0 * closing * gap : 0.0;  // m^2/s^2
-      p.target = std::sqrt(std::max(0.0, bounce.target * bounce.target - climb));
-    }
-    bouncing_.push_back(i);
-    fastest = std::max(fastest, std::abs(p.target));
-  }
+  const double fastest = take_bouncing();
   if (fastest == 0.0)
   {
     return;  // nothing bounces: the relax already holds every point
@@ -139,9 +102,50 @@ void WorldImpl::restitute(StepReport& report)
   report.velocity_residual = std::max(report.velocity_residual, residual);
   for (std::size_t i : bouncing_)
   {
-    const BouncePoint& bounce = bounce_points_[i];
-    *bounce.normal = points_[bounce.point].lambda_n;
+    *bounce_points_[i].normal = points_[bounce_points_[i].point].lambda_n;
   }
+}
+
+double WorldImpl::take_bouncing()
+{
+  // A point bounces if the substep pushed it: it ends the substep holding an
+  // impulse (the substep's warm start and passes sum to it). Each ends at e
+  // times its speed at the substep's start, reversed, or lets go; so with
+  // e = 1 the substep keeps the kinetic energy exactly, however many bodies
+  // met in it. One apart and not approaching at the start was pushed only
+  // because another impact sent a body its way: it lets go now and meets
+  // that body in a later substep, at the speed it then has. One the relax
+  // slowed before it touched bounces a gap short of contact: gravity over
+  // that gap comes off its rebound, as the free fall it skips.
+  bouncing_.clear();
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < bounce_points_.size(); ++i)
+  {
+    BouncePoint& bounce = bounce_points_[i];
+    if (*bounce.normal <= 0.0)
+    {
+      continue;
+    }
+    ContactPoint& p = points_[bounce.point];
+    p.lambda_n = *bounce.normal;  // from its row, while the rows are packed
+    if (bounce.apart)
+    {
+      release_normal(p, velocity_);
+      *bounce.normal = p.lambda_n;
+      continue;
+    }
+    p.target = bounce.target;
+    if (bounce.target > 0.0)
+    {
+      const double gap = current_separation(p, velocity_);
+      const double closing = closing_gravity(p);
+      const double climb = gap > 0.0 && closing > 0.0 ? 2.0 * closing * gap : 0.0;  // m^2/s^2
+      p.target = std::sqrt(std::max(0.0, bounce.target * bounce.target - climb));
+    }
+    bouncing_.push_back(i);
+    fastest = std::max(fastest, std::abs(p.target));
+  }
+  return fastest;
 }
 
 }  // namespace detail

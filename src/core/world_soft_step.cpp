@@ -95,7 +95,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
     for (std::size_t block = begin; block < end;)
     {
       const std::size_t block_end = std::min(end, pair_boundary(block + kPrepareBlockPoints));
-      prepare_point_range(ctx.effects, block, block_end);  // world_solve.cpp
+      prepare_point_range(ctx.effects, block, block_end, false);  // world_solve.cpp: restitution aims per substep
       range_bounces = prepare_soft_range(moving, fixed, block, block_end) || range_bounces;
       block = block_end;
     }
@@ -212,9 +212,9 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
   }
 }
 
-void WorldImpl::carry_slip(ContactPoint& p) const
+void WorldImpl::carry_slip(ContactPoint& p, Vec2 offset) const
 {
-  p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+  p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + slip_at(p, offset);
 }
 
 void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)

@@ -39,7 +39,7 @@ void WorldImpl::prepare_points(const ActiveEffects& effects)
   for_point_ranges([&](std::size_t begin, std::size_t end) { prepare_point_range(effects, begin, end); });
 }
 
-void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end)
+void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end, bool targets)
 {
   for (std::size_t k = begin; k < end; ++k)
   {
@@ -66,7 +66,14 @@ void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t be
     p.inv_inertia_a = effects.rotation && (rough || a.shape() == Shape::Polygon) ? a.inv_inertia() : 0.0;
     p.inv_inertia_b = effects.rotation && (rough || b.shape() == Shape::Polygon) ? b.inv_inertia() : 0.0;
     const double e = effects.restitution ? std::min(ma.restitution, mb.restitution) : 0.0;
-    prepare_point(p, velocity_, e, settings_.restitution_threshold);
+    if (targets)
+    {
+      prepare_point(p, velocity_, e, settings_.restitution_threshold);
+    }
+    else
+    {
+      prepare_masses(p, e);
+    }
   }
   for (std::size_t k = begin; k + 1 < end; ++k)
   {

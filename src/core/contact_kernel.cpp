@@ -54,17 +54,6 @@ Vec2 midpoint_arm_b(const ContactPoint& first, const ContactPoint& second) { ret
 
 }  // namespace
 
-void prepare_masses(ContactPoint& p, double restitution)
-{
-  p.tangent = perp(p.normal);
-  p.k_n = inverse_effective_mass(p, p.r_a, p.r_b, p.normal);
-  p.k_t = inverse_effective_mass(p, p.r_a, p.r_b, p.tangent);
-  p.normal_mass = 1.0 / p.k_n;
-  p.tangent_mass = 1.0 / p.k_t;
-  p.pair_tangent_mass = p.tangent_mass;
-  p.restitution = restitution;
-}
-
 void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold)
 {
   prepare_masses(p, restitution);

@@ -173,7 +173,16 @@ inline void apply_impulse(const ContactPoint& p, Vec2 impulse, std::vector<BodyV
 
 /// Fills the point's effective masses and its restitution. The caller sets
 /// the lever arms and the per-point inverse masses first.
-void prepare_masses(ContactPoint& p, double restitution);
+inline void prepare_masses(ContactPoint& p, double restitution)
+{
+  p.tangent = perp(p.normal);
+  p.k_n = inverse_effective_mass(p, p.r_a, p.r_b, p.normal);
+  p.k_t = inverse_effective_mass(p, p.r_a, p.r_b, p.tangent);
+  p.normal_mass = 1.0 / p.k_n;
+  p.tangent_mass = 1.0 / p.k_t;
+  p.pair_tangent_mass = p.tangent_mass;
+  p.restitution = restitution;
+}
 /// prepare_masses, then the Newton target from the velocities now, before
 /// any impulse.
 void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, double restitution, double threshold);

@@ -56,7 +56,7 @@ KNOB_LABELS = {"warm_starting": "warm {}", "time_of_impact": "TOI {}", "position
                "position_block": "position block {}", "warm_start_every_substep": "warm every substep {}",
                "warm_start_factor": "warm factor {}", "exact_position_correction": "exact position correction {}",
                "contact_hertz": "{} Hz", "contact_damping_ratio": "damping ratio {}",
-               "contact_push_speed": "push {} m/s", "speculative_margin": "margin {} m"}
+               "contact_push_speed": "push {} m/s", "speculative_margin": "margin {} m", "sleeping": "sleeping {}"}
 # Plot colours: ours per pipeline (all points, front), the peers.
 COLOURS = {"soft": ("#f1b6da", "#c51b7d"), "fx2d": ("#9ecae1", "#08519c"), "box2d": "#ff7f00",
            "chipmunk": "#238b45", "box2d_v3": "#6a3d9a"}
@@ -516,12 +516,13 @@ def machine_section(args, runs, stacks, scaling, default):
                     break
     except OSError:
         pass
+    commit = args.commit
     try:
-        commit = subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "rev-parse", "--short",
-                                 "HEAD"], capture_output=True, text=True, check=True).stdout.strip()
+        commit = commit or subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "rev-parse",
+                                           "--short", "HEAD"], capture_output=True, text=True, check=True).stdout.strip()
     except (OSError, subprocess.CalledProcessError):
         commit = "unknown"
-    load = ", ".join(f"{x:.1f}" for x in os.getloadavg())
+    load = args.load or ", ".join(f"{x:.1f}" for x in os.getloadavg())
     today = datetime.date.today().isoformat()
     grid = "quick (--quick: thinned grids, stacks to 10 s, stands to 20 s)" if args.quick else "full"
     v3 = ("**Box2D v3 was included** in this run as a third peer (built from a checkout outside this repository, "
@@ -1090,6 +1091,9 @@ def main():
     parser.add_argument("--doc", required=True)
     parser.add_argument("--elapsed", default="?")
     parser.add_argument("--quick", action="store_true")
+    # Re-rendering saved CSVs: the commit and load average of the run that measured them.
+    parser.add_argument("--commit", default="")
+    parser.add_argument("--load", default="")
     args = parser.parse_args()
 
     runs = prepare(read_csv(os.path.join(args.perf_dir, "runs.csv")))

@@ -58,8 +58,7 @@ void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, doub
 {
   prepare_masses(p, restitution);
   // Measured once, before any impulse: later impulses never move the target.
-  p.approach_speed = dot(relative_velocity(p, state), p.normal);
-  p.target = newton_target(p.approach_speed, restitution, threshold);
+  p.target = newton_target(dot(relative_velocity(p, state), p.normal), restitution, threshold);
 }
 
 void prepare_pair(ContactPoint& first, const ContactPoint& second)

@@ -104,13 +104,12 @@ struct ContactPoint
   double separation = 0.0;   ///< signed gap at detection (m): -depth, > 0 for a speculative point
   std::uint32_t feature = 0;
 
-  // Prepare: the tangent's own mass, the Newton target and, for the soft
-  // step, the pre-solve normal speed.
+  // Prepare: the tangent's own mass and the Newton target (the soft step
+  // sets the target each substep it bounces).
   double k_t = 0.0;           ///< inverse effective mass along the tangent (1/kg)
   double tangent_mass = 0.0;  ///< 1 / k_t (kg)
-  double target = 0.0;        ///< post-solve normal separation speed (m/s), fixed at prepare
+  double target = 0.0;        ///< post-solve normal separation speed (m/s)
   double restitution = 0.0;   ///< the pair's e
-  double approach_speed = 0.0;  ///< normal relative speed at prepare (m/s), < 0 approaching (prepare_point)
 
   // Bookkeeping of the solvers that own the point.
   std::size_t contact = 0;  ///< index into the caller's contact list

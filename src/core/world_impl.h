@@ -123,6 +123,8 @@ struct WorldImpl
       }
     });
   }
+  /// A dynamic body that is awake: gravity and contacts move it.
+  bool awake_dynamic(std::size_t i) const { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; }
   /// How many bodies sleep now (counted again after a sleep, wake or edit).
   std::size_t asleep_bodies();
   /// The first point at or after k that starts a new body pair (or the end).

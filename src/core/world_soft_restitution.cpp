@@ -2,9 +2,10 @@
 // substep). At a substep's start every point that can bounce takes its Newton
 // target from its approach speed then; at the substep's end the points the
 // substep pushed are driven to their targets, Gauss-Seidel in point order to
-// the fixed point (on one thread). Targets fixed once per frame would stop a contact that a
-// body only turns toward after an earlier bounce in the same frame, and lose
-// its energy; per substep, each meeting bounces from the speed it happened at.
+// the fixed point (on one thread). Targets fixed once per frame would stop a
+// contact that a body only turns toward after an earlier bounce in the same
+// frame, and lose its energy; per substep, each meeting bounces from the speed
+// it happened at.
 #include <algorithm>
 #include <cmath>
 
@@ -74,8 +75,8 @@ void WorldImpl::aim_bounces()
 
 double WorldImpl::closing_gravity(const ContactPoint& p) const
 {
-  const auto falls = [&](std::size_t i) { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; };
-  const Vec2 relative = (falls(p.a) ? settings_.gravity : Vec2{0.0, 0.0}) - (falls(p.b) ? settings_.gravity : Vec2{0.0, 0.0});
+  const Vec2 none{0.0, 0.0};
+  const Vec2 relative = (awake_dynamic(p.a) ? settings_.gravity : none) - (awake_dynamic(p.b) ? settings_.gravity : none);
   return dot(relative, p.normal);
 }
 

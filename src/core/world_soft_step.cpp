@@ -173,7 +173,7 @@ void WorldImpl::integrate_velocities(const StepContext& ctx)
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
   const double max_spin = kMaxTurnPerSubstep * ctx.inv_h;
   for_each_body([&](std::size_t i) {
-    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+    if (awake_dynamic(i))
     {
       velocity_[i].v = velocity_[i].v + gravity_kick;
       if (touching_[i])
@@ -271,7 +271,7 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
     held_position_[i] = b.position();
     held_theta_[i] = frame_theta_[i];
   }
-  else if (!touching_[i] && b.type() == BodyType::Dynamic && !asleep_[i])
+  else if (!touching_[i] && awake_dynamic(i))
   {
     // In free flight the substep's mean velocity is the end one less half
     // its gravity kick: a thrown body follows its parabola exactly.

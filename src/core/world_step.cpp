@@ -156,7 +156,7 @@ void WorldImpl::kick(const StepContext& ctx)
   {
     prev_position_[i] = bodies_[i].position();
     prev_theta_[i] = bodies_[i].theta();
-    if (bodies_[i].type() == BodyType::Dynamic && !asleep_[i])
+    if (awake_dynamic(i))
     {
       bodies_[i].set_velocity(bodies_[i].velocity() + gravity_kick);
     }

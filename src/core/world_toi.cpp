@@ -83,8 +83,7 @@ bool WorldImpl::mark_swept_bodies(double h)
     const Body& b = bodies_[i];
     const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
     const bool moving = d.x != 0.0 || d.y != 0.0;
-    const bool awake = b.type() == BodyType::Dynamic && !asleep_[i];
-    swept_[i] = awake && (mode == Toggle::On ? moving : is_fast(i, d));
+    swept_[i] = awake_dynamic(i) && (mode == Toggle::On ? moving : is_fast(i, d));
   });
   if (body_pass_full_)
   {

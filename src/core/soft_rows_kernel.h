@@ -132,7 +132,8 @@ V2<V> anchor_offset(const Lane<V>& l, V2<V> ra, V2<V> rb)
 }
 
 template <class V, class Ops>
-__attribute__((always_inline)) inline void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, RowPoint& point)
+__attribute__((always_inline)) inline void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb,
+                                                           RowPoint& point)
 {
   const V ln = ops.load(point.normal);
   const V lt = ops.load(point.tangent);

@@ -4,6 +4,7 @@
 // previous frame's contacts (the cache, keyed by body ids and feature).
 #include <algorithm>
 #include <limits>
+#include <new>
 
 #include "world_impl.h"
 
@@ -125,7 +126,10 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
   for (int c = 0; c < m.count; ++c)
   {
     ContactPoint& row = points_[pair_rows_[k] + static_cast<std::size_t>(c)];
-    row = ContactPoint{};
+    // Default-initialised in place: each member takes its initialiser by
+    // plain stores. `row = ContactPoint{}` first clears all of it with
+    // `rep stos`, whose start-up costs more than the stores (docs/performance.md).
+    new (&row) ContactPoint;
     row.a = i;
     row.b = j;
     row.normal = m.normal;

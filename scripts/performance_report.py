@@ -1371,7 +1371,7 @@ both since fixed:
 A third finding, on the base-60 pyramid of the stack bench at commit
 798fa2e (`perf record`, soft step, one thread): 61% of the samples in
 `WorldImpl::add_manifold` fell on one `rep stos`, GCC's clear of the whole
-320-byte contact point before the defaults were set (`row = ContactPoint{}`).
+320-byte contact point before the defaults were set (`row = ContactPoint{{}}`).
 On this machine's AMD cores that instruction's start-up costs more than the
 plain stores. The point is now default-initialised in place (commit 49f5a9f,
 same bits): whole-process CPU time A/B 0.968, median of 11 alternating pairs.

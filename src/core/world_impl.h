@@ -202,8 +202,10 @@ struct WorldImpl
   void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
   bool is_fast(std::size_t i, Vec2 displacement) const;
-  bool mark_swept_bodies(double h);
-  bool sweep(double h, StepReport& report);
+  /// `stored`: the bodies hold their velocities; otherwise (the soft
+  /// substep) they are read from velocity_ and stored only if a sweep runs.
+  bool mark_swept_bodies(double h, bool stored);
+  bool sweep(double h, StepReport& report, bool stored = true);
   bool clamped(std::size_t i) const;
 
   // world_contacts.cpp
@@ -268,6 +270,7 @@ struct WorldImpl
   // world_solve.cpp: the velocity stage on the contact-solver kernel.
   void load_velocities();
   void store_velocities();
+  void store_velocity(std::size_t i);
   void prepare_points(const ActiveEffects& effects);
   /// prepare_points on points [begin, end) (whole pairs); without
   /// `targets` (the soft step aims each substep) no Newton target is set.

@@ -224,13 +224,18 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   // with its velocity, shared among the workers. A body stopped at its time
   // of impact stays there for the rest of the frame, velocity kept: no
   // contact stops it before the next frame's collide finds the touching pair.
-  store_velocities();
-  const bool swept = sweep(ctx.h, report);                // world_toi.cpp
+  // The velocities go onto the bodies in the move pass (a sweep stores them
+  // first): one pass over the bodies fewer.
+  const bool swept = sweep(ctx.h, report, false);         // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   thetas_pending_ = true;
   // The angles go to frame_theta_ and onto the bodies, with their sine and
   // cosine, once per frame (turn_bodies): nothing reads them between.
   for_each_body([&](std::size_t i) {
+    if (!swept)
+    {
+      store_velocity(i);
+    }
     if (move_body(i, ctx, swept))
     {
       frame_theta_[i] = frame_theta_[i] + bodies_[i].omega() * ctx.h;

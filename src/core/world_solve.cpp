@@ -23,13 +23,16 @@ void WorldImpl::store_velocities()
 {
   // Impulses never change a static or kinematic body (its points carry zero
   // inverse mass), so only dynamic bodies are written back.
-  for_each_body([this](std::size_t i) {
-    if (bodies_[i].type() == BodyType::Dynamic)
-    {
-      bodies_[i].set_velocity(velocity_[i].v);
-      bodies_[i].set_omega(velocity_[i].omega);
-    }
-  });
+  for_each_body([this](std::size_t i) { store_velocity(i); });
+}
+
+void WorldImpl::store_velocity(std::size_t i)
+{
+  if (bodies_[i].type() == BodyType::Dynamic)
+  {
+    bodies_[i].set_velocity(velocity_[i].v);
+    bodies_[i].set_omega(velocity_[i].omega);
+  }
 }
 
 void WorldImpl::prepare_points(const ActiveEffects& effects)

@@ -74,14 +74,13 @@ bool WorldImpl::is_fast(std::size_t i, Vec2 displacement) const
   return length_sq(displacement) > reach * reach;
 }
 
-bool WorldImpl::mark_swept_bodies(double h)
+bool WorldImpl::mark_swept_bodies(double h, bool stored)
 {
   const Toggle mode = settings_.time_of_impact;
   // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
   for_each_body([&](std::size_t i) {
-    const Body& b = bodies_[i];
-    const Vec2 d = b.velocity() * h;  // substep_displacement of an awake dynamic body
+    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if awake dynamic
     const bool moving = d.x != 0.0 || d.y != 0.0;
     swept_[i] = awake_dynamic(i) && (mode == Toggle::On ? moving : is_fast(i, d));
   });
@@ -92,12 +91,16 @@ bool WorldImpl::mark_swept_bodies(double h)
   return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != 0; });
 }
 
-bool WorldImpl::sweep(double h, StepReport& report)
+bool WorldImpl::sweep(double h, StepReport& report, bool stored)
 {
   clamping_ = false;
-  if (settings_.time_of_impact == Toggle::Off || !mark_swept_bodies(h))
+  if (settings_.time_of_impact == Toggle::Off || !mark_swept_bodies(h, stored))
   {
     return false;
+  }
+  if (!stored)
+  {
+    store_velocities();  // the pairs' sweeps read every body's velocity
   }
   turn_bodies();  // the soft step's angles so far: sweeping reads the outlines
   const std::size_t n = bodies_.size();

@@ -282,6 +282,10 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
     // its gravity kick: a thrown body follows its parabola exactly.
     b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
   }
+  if (!touching_[i])
+  {
+    return;  // only contact points read a body's motion since prepare
+  }
   BodyVelocity& state = velocity_[i];
   state.moved = b.position() - prepared_position_[i];
   // A body that has not turned (static, asleep, not spinning) needs no

@@ -143,7 +143,7 @@ struct WorldImpl
   void follow_body(std::size_t i, const StepContext& ctx);
   /// The angles in frame_theta_ set on the bodies that turned.
   void turn_bodies();
-  void integrate_velocities(const StepContext& ctx);
+  void integrate_velocities(const StepContext& ctx, bool first);
   /// The soft passes, or in exact mode each island's LCP (the passes then
   /// take only the islands it could not solve).
   void solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report);
@@ -166,7 +166,9 @@ struct WorldImpl
   /// After the frame: an active sticking point's slip, carried to the next
   /// frame (publish_contacts does it on its way through the points).
   void carry_slip(ContactPoint& p, Vec2 offset) const;
-  void integrate_positions(StepContext& ctx, StepReport& report);
+  /// `kick_free`: another substep follows, whose gravity kick a body no
+  /// contact touches takes here (integrate_velocities then skips it).
+  void integrate_positions(StepContext& ctx, StepReport& report, bool kick_free);
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();

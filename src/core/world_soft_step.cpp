@@ -63,10 +63,11 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // 3. Substeps.
   for (int k = 0; k < settings_.substeps; ++k)
   {
+    const bool last = k + 1 == settings_.substeps;
     aim_bounces();
-    integrate_velocities(ctx);
+    integrate_velocities(ctx, k == 0);
     solve_contacts(ctx, true, report);
-    integrate_positions(ctx, report);
+    integrate_positions(ctx, report, !last);
     solve_contacts(ctx, false, report);                   // relax
     restitute(report);
     ++report.substeps;
@@ -168,12 +169,14 @@ void WorldImpl::reset_body_motion(std::size_t i)
   touching_[i] = false;
 }
 
-void WorldImpl::integrate_velocities(const StepContext& ctx)
+void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)
 {
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
   const double max_spin = kMaxTurnPerSubstep * ctx.inv_h;
+  // After the first substep a body no contact touches has had this kick in
+  // the last move pass (integrate_positions), while its velocity was in cache.
   for_each_body([&](std::size_t i) {
-    if (awake_dynamic(i))
+    if ((first || touching_[i]) && awake_dynamic(i))
     {
       velocity_[i].v = velocity_[i].v + gravity_kick;
       if (touching_[i])
@@ -217,7 +220,7 @@ void WorldImpl::carry_slip(ContactPoint& p, Vec2 offset) const
   p.anchor_drift = p.sliding || p.kinetic ? 0.0 : p.anchor_drift + slip_at(p, offset);
 }
 
-void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
+void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool kick_free)
 {
   // As advance() (world_step.cpp): fast bodies swept for time of impact
   // (world_toi.cpp, on one thread: it pairs bodies), then every body moved
@@ -229,6 +232,7 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
   const bool swept = sweep(ctx.h, report, false);         // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   thetas_pending_ = true;
+  const Vec2 gravity_kick = settings_.gravity * ctx.h;
   // The angles go to frame_theta_ and onto the bodies, with their sine and
   // cosine, once per frame (turn_bodies): nothing reads them between.
   for_each_body([&](std::size_t i) {
@@ -241,6 +245,11 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report)
       frame_theta_[i] = frame_theta_[i] + bodies_[i].omega() * ctx.h;
     }
     follow_body(i, ctx);
+    if (kick_free && !touching_[i] && awake_dynamic(i))
+    {
+      // Nothing reads its velocity before the next substep's kick would.
+      velocity_[i].v = velocity_[i].v + gravity_kick;
+    }
   });
 }
 

@@ -113,6 +113,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   prepared_position_.resize(bodies_.size());
   prepared_theta_.resize(bodies_.size());
   frame_theta_.resize(bodies_.size());
+  swept_reach_sq_.resize(bodies_.size());
   for_each_body([this](std::size_t i) { reset_body_motion(i); });
   // The frame's active points are those of the pairs that hit (detect()),
   // so the short pair list says which bodies they touch.
@@ -167,6 +168,7 @@ void WorldImpl::reset_body_motion(std::size_t i)
   frame_theta_[i] = bodies_[i].theta();
   stopped_[i] = false;
   touching_[i] = false;
+  swept_reach_sq_[i] = awake_dynamic(i) ? fast_reach_sq(i) : -1.0;
 }
 
 void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)

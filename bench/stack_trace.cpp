@@ -1,0 +1,124 @@
+// collision2d_stack_trace: where a stack's drift comes from. Steps one stack
+// scene (stack_scenes.h) in one engine, with the stack bench's rule for
+// peers, and prints every N frames the top body's pose and the stack's
+// drift so far (largest displacement of any dynamic body since 1 s, as the
+// stack bench measures it), so a settling sway can be told from a creep.
+//
+//   collision2d_stack_trace --scene NAME [--engine NAME] [--seconds S] [--every N]
+//
+// Prints CSV: t_s,top_x_m,top_y_m,top_theta_rad,drift_since_1s_m
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <algorithm>
+#include <exception>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "engine.h"
+#include "stack_scenes.h"
+
+namespace
+{
+using collision2d::Vec2;
+using namespace collision2d::bench;
+
+constexpr double kSettleSeconds = 1.0;  // s: drift counts from here, as in the stack bench
+
+struct Arguments
+{
+  std::string scene;
+  EngineKind engine = EngineKind::Collision2d;
+  double seconds = 8.0;
+  int every = 5;  ///< frames between rows
+};
+
+Arguments parse_arguments(int argc, char** argv)
+{
+  Arguments a;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string key = argv[i];
+    const std::string value = argv[i + 1];
+    if (key == "--scene")
+    {
+      a.scene = value;
+    }
+    else if (key == "--engine" && engine_from_name(value, a.engine))
+    {
+    }
+    else if (key == "--seconds" && std::atof(value.c_str()) > 0.0)
+    {
+      a.seconds = std::atof(value.c_str());
+    }
+    else if (key == "--every" && std::atoi(value.c_str()) > 0)
+    {
+      a.every = std::atoi(value.c_str());
+    }
+    else
+    {
+      throw std::invalid_argument("unknown or bad argument: " + key + " " + value);
+    }
+  }
+  if (a.scene.empty() || argc % 2 == 0)
+  {
+    throw std::invalid_argument("--scene NAME is required, and every option takes a value");
+  }
+  return a;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  try
+  {
+    const Arguments args = parse_arguments(argc, argv);
+    const collision2d::Scene scene = make_stack_scene(args.scene).scene;
+    std::unique_ptr<Engine> engine = make_engine(scene, EngineConfig{args.engine, PeerVariant::Substepped, scene.settings});
+    std::vector<std::size_t> dynamic;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+      if (scene.bodies[i].body.type() == collision2d::BodyType::Dynamic)
+      {
+        dynamic.push_back(i);
+      }
+    }
+    const std::size_t top = dynamic.back();  // the scene builds its stack bottom up
+    const double dt = scene.settings.dt;
+    const long settle_frame = std::lround(kSettleSeconds / dt);
+    const long frames = std::lround(args.seconds / dt);
+    std::vector<Vec2> settled;
+    std::printf("t_s,top_x_m,top_y_m,top_theta_rad,drift_since_1s_m\n");
+    for (long f = 1; f <= frames; ++f)
+    {
+      engine->step_frame();
+      if (f == settle_frame)
+      {
+        for (std::size_t i : dynamic)
+        {
+          settled.push_back(engine->state(i).position);
+        }
+      }
+      if (f % args.every != 0)
+      {
+        continue;
+      }
+      double drift = 0.0;
+      for (std::size_t k = 0; k < settled.size(); ++k)
+      {
+        drift = std::max(drift, collision2d::length(engine->state(dynamic[k]).position - settled[k]));
+      }
+      const BodyState s = engine->state(top);
+      std::printf("%.4f,%.6g,%.6g,%.6g,%.6g\n", f * dt, s.position.x, s.position.y, s.theta, drift);
+    }
+  }
+  catch (const std::exception& error)
+  {
+    std::fprintf(stderr, "collision2d_stack_trace: %s\n", error.what());
+    return 2;
+  }
+  return 0;
+}

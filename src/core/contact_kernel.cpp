@@ -64,14 +64,14 @@ void prepare_point(ContactPoint& p, const std::vector<BodyVelocity>& state, doub
 void prepare_pair(ContactPoint& first, const ContactPoint& second)
 {
   first.pair_tangent_mass =
-      1.0 / inverse_effective_mass(first, midpoint_arm_a(first, second), midpoint_arm_b(first, second), first.tangent);
+      1.0 / inverse_effective_mass(first, midpoint_arm_a(first, second), midpoint_arm_b(first, second), first.tangent());
 }
 
 void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
   if (p.lambda_n != 0.0 || p.lambda_t != 0.0)
   {
-    apply_impulse(p, p.lambda_n * p.normal + p.lambda_t * p.tangent, state);
+    apply_impulse(p, p.lambda_n * p.normal + p.lambda_t * p.tangent(), state);
   }
 }
 
@@ -100,12 +100,12 @@ double coulomb(ContactPoint& p, double needed, double normal_impulse)
 
 bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state, double bias)
 {
-  const double slip = dot(relative_velocity(p, state), p.tangent);
+  const double slip = dot(relative_velocity(p, state), p.tangent());
   const double vt = bias == 0.0 ? slip : slip + bias;
   const double total = coulomb(p, p.lambda_t - vt * p.tangent_mass, p.lambda_n);
   const double change = total - p.lambda_t;
   p.lambda_t = total;
-  apply_impulse(p, change * p.tangent, state);
+  apply_impulse(p, change * p.tangent(), state);
   return change != 0.0;
 }
 
@@ -180,7 +180,7 @@ void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<
   // pair, the slip speed, so two friction rows would be one constraint twice
   // with no unique split. Splitting the midpoint row's impulse in proportion
   // to the normal impulses keeps each point inside its own cone.
-  const Vec2 t = first.tangent;
+  const Vec2 t = first.tangent();
   const Vec2 r_a = midpoint_arm_a(first, second);
   const Vec2 r_b = midpoint_arm_b(first, second);
   const double slip = dot(relative_velocity_at(first, r_a, r_b, state), t);
@@ -198,7 +198,7 @@ void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<
 bool solve_stick_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state)
 {
   const Vec2 n = first.normal;
-  const Vec2 t = first.tangent;
+  const Vec2 t = first.tangent();
   const Vec2 r_a = midpoint_arm_a(first, second);
   const Vec2 r_b = midpoint_arm_b(first, second);
   const BlockRow rows[3] = {{n, first.r_a, first.r_b}, {n, second.r_a, second.r_b}, {t, r_a, r_b}};
@@ -266,7 +266,7 @@ double point_residual(const ContactPoint& p, const std::vector<BodyVelocity>& st
   {
     return normal;
   }
-  const double vt = dot(relative_velocity(p, state), p.tangent);
+  const double vt = dot(relative_velocity(p, state), p.tangent());
   const double bound = mu * p.lambda_n;
   const double magnitude = std::abs(p.lambda_t);
   double friction = 0.0;

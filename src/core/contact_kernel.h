@@ -60,10 +60,9 @@ struct ContactPoint
   // as few cache lines as possible; what only detection and prepare use follows.
 
   // Geometry.
-  std::size_t a = 0;  ///< body index, a < b
-  std::size_t b = 0;
+  std::uint32_t a = 0;  ///< body index, a < b
+  std::uint32_t b = 0;
   Vec2 normal;        ///< unit, from a to b
-  Vec2 tangent;       ///< perp(normal): tangential impulses act on b along it
   Vec2 r_a;           ///< lever arm from a's centre to the point (m)
   Vec2 r_b;
 
@@ -97,12 +96,12 @@ struct ContactPoint
   bool active = true;            ///< World: false for a point the velocity prediction leaves out
   bool exact = false;            ///< World: solved by its island's LCP this substep
   bool position_solved = false;  ///< World: penetration corrected by its island's LCP
+  std::uint32_t feature = 0;     ///< detection's feature id (beside the flags: no padding)
 
   // Detection.
   Vec2 point;                ///< world contact point at detection (m)
   double penetration = 0.0;  ///< depth at detection (m)
   double separation = 0.0;   ///< signed gap at detection (m): -depth, > 0 for a speculative point
-  std::uint32_t feature = 0;
 
   // Prepare: the tangent's own mass and the Newton target (the soft step
   // sets the target each substep it bounces).
@@ -112,8 +111,11 @@ struct ContactPoint
   double restitution = 0.0;   ///< the pair's e
 
   // Bookkeeping of the solvers that own the point.
-  std::size_t contact = 0;  ///< index into the caller's contact list
-  std::size_t cluster = 0;  ///< representative body of the coupled cluster
+  std::uint32_t contact = 0;  ///< index into the caller's contact list
+  std::uint32_t cluster = 0;  ///< representative body of the coupled cluster
+
+  /// perp(normal): tangential impulses act on b along it.
+  Vec2 tangent() const { return perp(normal); }
 };
 
 /// Inverse effective mass of an impulse along `dir` at lever arms r_a, r_b (1/kg).
@@ -174,9 +176,8 @@ inline void apply_impulse(const ContactPoint& p, Vec2 impulse, std::vector<BodyV
 /// the lever arms and the per-point inverse masses first.
 inline void prepare_masses(ContactPoint& p, double restitution)
 {
-  p.tangent = perp(p.normal);
   p.k_n = inverse_effective_mass(p, p.r_a, p.r_b, p.normal);
-  p.k_t = inverse_effective_mass(p, p.r_a, p.r_b, p.tangent);
+  p.k_t = inverse_effective_mass(p, p.r_a, p.r_b, p.tangent());
   p.normal_mass = 1.0 / p.k_n;
   p.tangent_mass = 1.0 / p.k_t;
   p.pair_tangent_mass = p.tangent_mass;
@@ -212,7 +213,7 @@ Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state
 /// The gap (m, < 0 overlapping) and the tangential slip since prepare (m) at
 /// an anchor offset.
 inline double separation_at(const ContactPoint& p, Vec2 offset) { return p.base_separation + dot(offset, p.normal); }
-inline double slip_at(const ContactPoint& p, Vec2 offset) { return dot(offset - (p.r_b - p.r_a), p.tangent); }
+inline double slip_at(const ContactPoint& p, Vec2 offset) { return dot(offset - (p.r_b - p.r_a), p.tangent()); }
 /// Soft step: the point's tangential slip since prepare, from the bodies' pose changes (m).
 double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state);
 /// Both normals and the midpoint friction row solved at once assuming the pair

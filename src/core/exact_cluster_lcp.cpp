@@ -19,8 +19,8 @@ void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange clust
     const ContactPoint& row = rows[cluster.begin + i];
     add_jacobian_entry(lcp, 2 * i, row.b, 1.0, row.normal, row.r_b);
     add_jacobian_entry(lcp, 2 * i, row.a, -1.0, row.normal, row.r_a);
-    add_jacobian_entry(lcp, 2 * i + 1, row.b, 1.0, row.tangent, row.r_b);
-    add_jacobian_entry(lcp, 2 * i + 1, row.a, -1.0, row.tangent, row.r_a);
+    add_jacobian_entry(lcp, 2 * i + 1, row.b, 1.0, row.tangent(), row.r_b);
+    add_jacobian_entry(lcp, 2 * i + 1, row.a, -1.0, row.tangent(), row.r_a);
   }
   finish_jacobian(rows, cluster, lcp);
 }
@@ -74,7 +74,7 @@ void assemble_frictional(const std::vector<ContactPoint>& rows, ClusterRange clu
     lcp.M(n_i + 3, n_i + 2) = -1.0;
 
     const Vec2 dv = relative_velocity(row, state);
-    const double vt = dot(dv, row.tangent);
+    const double vt = dot(dv, row.tangent());
     lcp.q(n_i) = (dot(dv, row.normal) - row.target) * s_i;
     lcp.q(n_i + 1) = vt * s_i;
     lcp.q(n_i + 2) = -vt * s_i;

@@ -56,7 +56,7 @@ double contact_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange c
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
   {
     const Vec2 dv = relative_velocity(rows[r], state);
-    scale = std::max({scale, std::abs(dot(dv, rows[r].normal)), std::abs(dot(dv, rows[r].tangent)),
+    scale = std::max({scale, std::abs(dot(dv, rows[r].normal)), std::abs(dot(dv, rows[r].tangent())),
                       rows[r].target});
   }
   return scale;

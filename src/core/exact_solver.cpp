@@ -57,7 +57,7 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   // Applied to the working copy only: the bodies change once all is checked.
   for (const detail::ContactPoint& row : rows)
   {
-    detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent, state);
+    detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent(), state);
     report.total_normal_impulse += row.lambda_n;
   }
   for (std::size_t c = 0; c < clusters.size(); ++c)

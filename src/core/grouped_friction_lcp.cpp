@@ -61,8 +61,8 @@ void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange clust
   {
     const FrictionGroup& group = lcp.groups[g];
     const ContactPoint& row = rows[group.first];
-    add_jacobian_entry(lcp, layout.points + g, row.b, 1.0, row.tangent, group.r_b);
-    add_jacobian_entry(lcp, layout.points + g, row.a, -1.0, row.tangent, group.r_a);
+    add_jacobian_entry(lcp, layout.points + g, row.b, 1.0, row.tangent(), group.r_b);
+    add_jacobian_entry(lcp, layout.points + g, row.a, -1.0, row.tangent(), group.r_a);
   }
   finish_jacobian(rows, cluster, lcp);
 }
@@ -91,7 +91,7 @@ void fill_unscaled(const std::vector<ContactPoint>& rows, ClusterRange cluster, 
   {
     const FrictionGroup& group = lcp.groups[g];
     const ContactPoint& row = rows[group.first];
-    const double vt = dot(relative_velocity_at(row, group.r_a, group.r_b, state), row.tangent);
+    const double vt = dot(relative_velocity_at(row, group.r_a, group.r_b, state), row.tangent());
     lcp.q(layout.t_plus(g)) = vt;
     lcp.q(layout.t_minus(g)) = -vt;
     lcp.M(layout.t_plus(g), layout.beta(g)) = 1.0;
@@ -178,7 +178,7 @@ double grouped_residual(const std::vector<ContactPoint>& rows, const GroupedLcp&
       tangent_sum += row.lambda_t;
     }
     const ContactPoint& row = rows[group.first];
-    const double vt = dot(relative_velocity_at(row, group.r_a, group.r_b, state), row.tangent);
+    const double vt = dot(relative_velocity_at(row, group.r_a, group.r_b, state), row.tangent());
     const double bound = cone(row) * normal_sum;
     const double magnitude = std::abs(tangent_sum);
     // The split into shares rounds, so the sliding flag (not |sum| == bound)

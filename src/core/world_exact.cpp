@@ -141,7 +141,7 @@ bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, Ex
   for (std::size_t r = cluster.begin; r < cluster.end; ++r)
   {
     const detail::ContactPoint& row = islands.rows[r];
-    detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent, islands.state);
+    detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent(), islands.state);
   }
   const double scale = std::max({speed_before, detail::contact_speed_scale(islands.rows, cluster, islands.state),
                                  detail::impulse_speed_scale(islands.rows, cluster)});

@@ -5,6 +5,7 @@
 // stack bench measures it), so a settling sway can be told from a creep.
 //
 //   collision2d_stack_trace --scene NAME [--engine NAME] [--seconds S] [--every N]
+//                           [--substeps K]
 //
 // Prints CSV: t_s,top_x_m,top_y_m,top_theta_rad,drift_since_1s_m
 #include <cmath>
@@ -32,7 +33,8 @@ struct Arguments
   std::string scene;
   EngineKind engine = EngineKind::Collision2d;
   double seconds = 8.0;
-  int every = 5;  ///< frames between rows
+  int every = 5;     ///< frames between rows
+  int substeps = 0;  ///< 0: the scene's (4)
 };
 
 Arguments parse_arguments(int argc, char** argv)
@@ -57,6 +59,10 @@ Arguments parse_arguments(int argc, char** argv)
     {
       a.every = std::atoi(value.c_str());
     }
+    else if (key == "--substeps" && std::atoi(value.c_str()) > 0)
+    {
+      a.substeps = std::atoi(value.c_str());
+    }
     else
     {
       throw std::invalid_argument("unknown or bad argument: " + key + " " + value);
@@ -76,7 +82,11 @@ int main(int argc, char** argv)
   try
   {
     const Arguments args = parse_arguments(argc, argv);
-    const collision2d::Scene scene = make_stack_scene(args.scene).scene;
+    collision2d::Scene scene = make_stack_scene(args.scene).scene;
+    if (args.substeps > 0)
+    {
+      scene.settings.substeps = args.substeps;  // the peers take it too (PeerVariant::Substepped)
+    }
     std::unique_ptr<Engine> engine = make_engine(scene, EngineConfig{args.engine, PeerVariant::Substepped, scene.settings});
     std::vector<std::size_t> dynamic;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)

@@ -1245,6 +1245,19 @@ second; drift: largest displacement of any dynamic body between 1 s and the
 checkpoint; penetration: our detection on each engine's poses at every frame
 end. All rows come from one run of `collision2d_stack_bench`.
 
+The drift targets count from 1 s, and in both engines the tall pyramids are
+still swaying then. `collision2d_stack_trace --scene NAME --engine NAME`
+prints the top box's pose and the drift since 1 s every few frames; at commit
+3c3ec98 (not this run), soft step defaults: on base-60 our top box swung
+between -31 and +57 mm sideways in the first second, was at -8.5 mm at 1 s
+and within 1 mm of its final place from 4.75 s on (drift 1 s -> 10 s 8.6 mm;
+with `--substeps 8` it stayed within -4.1 .. +8.9 mm in the first second and
+was at 1.3 mm at 1 s). Box2D v3's top box swung within -4.5 .. +10 mm in the first second,
+but its drift 1 s -> 10 s was 13.1 mm. On base-100, ours swung within
+-71 .. +65 mm (at +65 mm at 1 s, drift 61.5 mm), Box2D v3's drift was 108 mm.
+So the missed drift targets are a settling sway, not a creep: after about
+5 s (base-60) our stacks move less than 1 mm.
+
 {stacks_section(stacks, default)}
 ## Stacks standing for a minute (base-20 pyramid and 20-box column of the sweep)
 
@@ -1378,6 +1391,20 @@ same bits): whole-process CPU time A/B 0.968, median of 11 alternating pairs.
 Building everything with GCC's `-mstringop-strategy=unrolled_loop` instead
 gave 0.89 and 0.96 in two such runs (7 and 11 pairs); it was not kept, as
 `perf` on that build showed the gain in `add_manifold` alone.
+
+A fourth, on the rain of 1e5 bodies (one worker, soft step, commit 5856e6f,
+`perf record`): the per-body passes of each substep took most of the time,
+led by the velocities stored onto the bodies (11%), the marking for time of
+impact (11%), the pose change of each body (10%) and the gravity kick (9%);
+each streams the bodies through memory. Four commits (740992b, 9eac8fb,
+7f350dd, 9b6d5ac, same bits) store the velocities in the move pass, skip the
+pose change of a body no contact touches, give such a body its next kick in
+the move pass, and let the marking read a per-frame threshold instead of the
+bodies: whole-process CPU A/B 0.899, 0.945, 0.912, 0.911 (medians of 11 to
+15 alternating pairs). Fusing two per-frame passes the same way (velocities
+loaded with the pose reset) and the rows' unpacking with the contacts'
+publication measured no gain, on the rain and on the base-100 pyramid
+(whose data fit this machine's cache), and were not kept.
 """
 
 

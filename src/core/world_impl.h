@@ -203,9 +203,9 @@ struct WorldImpl
   /// O(1) update for a body just appended: building a world stays O(n).
   void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
-  bool is_fast(std::size_t i, Vec2 displacement) const;
-  /// The squared substep move above which body i is swept in Auto (m^2).
-  double fast_reach_sq(std::size_t i) const;
+  /// The squared substep move above which body i is swept in Auto (m^2);
+  /// -1 for a body that is not awake and dynamic (never swept).
+  double sweep_reach_sq(std::size_t i) const;
   /// `stored`: the bodies hold their velocities; otherwise (the soft
   /// substep) they are read from velocity_ and stored only if a sweep runs.
   bool mark_swept_bodies(double h, bool stored);
@@ -430,9 +430,7 @@ struct WorldImpl
   std::vector<BodyPair> mover_pairs_;
   std::vector<BodyPair> resting_pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
-  /// Soft step, per body for the frame: fast_reach_sq, or -1 for a body
-  /// that is not awake and dynamic (never swept).
-  std::vector<double> swept_reach_sq_;
+  std::vector<double> swept_reach_sq_;  ///< soft step: sweep_reach_sq per body, set for the frame
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact this substep
   std::vector<ContactPoint> points_;  ///< this substep's contact points

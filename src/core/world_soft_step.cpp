@@ -168,7 +168,7 @@ void WorldImpl::reset_body_motion(std::size_t i)
   frame_theta_[i] = bodies_[i].theta();
   stopped_[i] = false;
   touching_[i] = false;
-  swept_reach_sq_[i] = awake_dynamic(i) ? fast_reach_sq(i) : -1.0;
+  swept_reach_sq_[i] = sweep_reach_sq(i);
 }
 
 void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)

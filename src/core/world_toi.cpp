@@ -66,13 +66,12 @@ Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
   return b.type() == BodyType::Static || asleep_[i] ? Vec2{0.0, 0.0} : b.velocity() * h;
 }
 
-bool WorldImpl::is_fast(std::size_t i, Vec2 displacement) const
+double WorldImpl::sweep_reach_sq(std::size_t i) const
 {
-  return length_sq(displacement) > fast_reach_sq(i);
-}
-
-double WorldImpl::fast_reach_sq(std::size_t i) const
-{
+  if (!awake_dynamic(i))
+  {
+    return -1.0;
+  }
   // Two bodies can pass through each other in one substep only when their
   // relative move exceeds the sum of their thinnest half-widths.
   const double reach = settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
@@ -84,25 +83,14 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
   const Toggle mode = settings_.time_of_impact;
   // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
-  if (stored)
-  {
-    for_each_body([&](std::size_t i) {
-      const Vec2 d = bodies_[i].velocity() * h;  // substep_displacement of an awake dynamic body
-      const bool moving = d.x != 0.0 || d.y != 0.0;
-      swept_[i] = awake_dynamic(i) && (mode == Toggle::On ? moving : is_fast(i, d));
-    });
-  }
-  else
-  {
-    // The soft step's thresholds are set for the frame (reset_body_motion):
-    // this pass need not read the bodies.
-    for_each_body([&](std::size_t i) {
-      const double reach_sq = swept_reach_sq_[i];
-      const Vec2 d = velocity_[i].v * h;
-      const bool moving = d.x != 0.0 || d.y != 0.0;
-      swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
-    });
-  }
+  // The soft step reads its own velocities and the thresholds it set for the
+  // frame (reset_body_motion): its pass need not read the bodies.
+  for_each_body([&](std::size_t i) {
+    const double reach_sq = stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
+    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
+    const bool moving = d.x != 0.0 || d.y != 0.0;
+    swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
+  });
   if (body_pass_full_)
   {
     return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();

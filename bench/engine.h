@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "collision2d/scene.h"
 
@@ -61,6 +62,10 @@ public:
 
 /// Throws std::runtime_error when the peer was not found at build time.
 std::unique_ptr<Engine> make_engine(const Scene& scene, const EngineConfig& config);
+/// The states of bodies 0 .. states.size() - 1, in the scene's order.
+void read_states(const Engine& engine, std::vector<BodyState>& states);
+/// Largest displacement of any dynamic body of `scene` between two states (m).
+double largest_move(const Scene& scene, const std::vector<BodyState>& from, const std::vector<BodyState>& to);
 /// Whether make_engine can build this kind in this build.
 bool engine_available(EngineKind kind);
 

@@ -1,4 +1,5 @@
 // Dispatch to ours or to a peer; peers exist only when CMake found them.
+#include <algorithm>
 #include <stdexcept>
 
 #include "engine.h"
@@ -110,6 +111,27 @@ std::string variant_name(PeerVariant variant)
       return "substepped";
   }
   return "?";
+}
+
+void read_states(const Engine& engine, std::vector<BodyState>& states)
+{
+  for (std::size_t i = 0; i < states.size(); ++i)
+  {
+    states[i] = engine.state(i);
+  }
+}
+
+double largest_move(const Scene& scene, const std::vector<BodyState>& from, const std::vector<BodyState>& to)
+{
+  double move = 0.0;
+  for (std::size_t i = 0; i < from.size(); ++i)
+  {
+    if (scene.bodies[i].body.type() == BodyType::Dynamic)
+    {
+      move = std::max(move, length(to[i].position - from[i].position));
+    }
+  }
+  return move;
 }
 
 }  // namespace bench

@@ -22,13 +22,6 @@ constexpr double kInclineWindowStart = 0.5;  // s: the box has left its first-fr
 
 using States = std::vector<BodyState>;
 
-void read_states(const Engine& engine, States& states)
-{
-  for (std::size_t i = 0; i < states.size(); ++i)
-  {
-    states[i] = engine.state(i);
-  }
-}
 
 bool is_dynamic(const Scene& scene, std::size_t i)
 {
@@ -61,18 +54,6 @@ double kinetic_energy(const Scene& scene, const States& states)
   return energy;
 }
 
-double largest_move(const Scene& scene, const States& from, const States& to)
-{
-  double move = 0.0;
-  for (std::size_t i = 0; i < from.size(); ++i)
-  {
-    if (is_dynamic(scene, i))
-    {
-      move = std::max(move, length(to[i].position - from[i].position));
-    }
-  }
-  return move;
-}
 
 /// Largest overlap at these states, by our detection; infinite when the
 /// states are degenerate (coincident centres: the engine blew up).

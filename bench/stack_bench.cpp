@@ -41,7 +41,6 @@ namespace
 using namespace collision2d;
 using namespace collision2d::bench;
 
-constexpr double kSettleSeconds = 1.0;  // s: drift is measured from here on
 constexpr double kDefaultSeconds = 10.0;
 constexpr double kDefaultTimingSeconds = 1.0;  // s of simulation per timed run
 constexpr int kDefaultRepetitions = 5;
@@ -61,7 +60,7 @@ struct Arguments
 struct Checkpoint
 {
   double seconds = 0.0;
-  double drift = 0.0;            ///< m, from kSettleSeconds to `seconds`
+  double drift = 0.0;            ///< m, from kStackSettleSeconds to `seconds`
   double max_penetration = 0.0;  ///< m, largest over the frames up to `seconds`
 };
 
@@ -92,9 +91,9 @@ std::vector<double> parse_seconds(const std::string& text)
   while (std::getline(in, item, ','))
   {
     const double s = std::atof(item.c_str());
-    if (!(s > kSettleSeconds))
+    if (!(s > kStackSettleSeconds))
     {
-      usage("--seconds: every value must exceed the " + std::to_string(kSettleSeconds) + " s settling time");
+      usage("--seconds: every value must exceed the " + std::to_string(kStackSettleSeconds) + " s settling time");
     }
     values.push_back(s);
   }
@@ -186,29 +185,6 @@ EngineConfig config_for(EngineKind kind, const BenchScene& scene, Pipeline pipel
   return EngineConfig{kind, variant, with_pipeline(scene.scene.settings, pipeline)};
 }
 
-std::vector<BodyState> read_states(const Engine& engine, std::size_t count)
-{
-  std::vector<BodyState> states(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    states[i] = engine.state(i);
-  }
-  return states;
-}
-
-double largest_move(const Scene& scene, const std::vector<BodyState>& from, const std::vector<BodyState>& to)
-{
-  double move = 0.0;
-  for (std::size_t i = 0; i < from.size(); ++i)
-  {
-    if (scene.bodies[i].body.type() == BodyType::Dynamic)
-    {
-      move = std::max(move, length(to[i].position - from[i].position));
-    }
-  }
-  return move;
-}
-
 /// Deepest overlap at these poses by our detection; infinite when the poses
 /// are degenerate (the engine blew up).
 double deepest_overlap(std::vector<Body>& bodies, const std::vector<BodyState>& states)
@@ -244,15 +220,17 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
   {
     probe.push_back(entry.body);
   }
-  const int settle_frame = frames_for(kSettleSeconds, dt);
-  std::vector<BodyState> settled = read_states(*engine, scene.bodies.size());
+  const int settle_frame = frames_for(kStackSettleSeconds, dt);
+  std::vector<BodyState> settled(scene.bodies.size());
+  read_states(*engine, settled);
+  std::vector<BodyState> now(scene.bodies.size());
   std::vector<Checkpoint> out;
   double deepest = 0.0;
   std::size_t next = 0;
   for (int f = 1; next < seconds.size(); ++f)
   {
     engine->step_frame();
-    const std::vector<BodyState> now = read_states(*engine, scene.bodies.size());
+    read_states(*engine, now);
     deepest = std::max(deepest, deepest_overlap(probe, now));
     settled = f == settle_frame ? now : settled;
     while (next < seconds.size() && f == frames_for(seconds[next], dt))

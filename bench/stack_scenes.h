@@ -15,6 +15,9 @@ namespace collision2d
 {
 namespace bench
 {
+/// Stack drift is measured from this time on (s).
+constexpr double kStackSettleSeconds = 1.0;
+
 /// stack_pyramid_20, stack_column_20, stack_pyramid_60, stack_pyramid_100.
 std::vector<std::string> stack_scene_names();
 /// Whether `name` is one of stack_scene_names().

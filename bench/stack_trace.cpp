@@ -8,10 +8,8 @@
 //                           [--substeps K]
 //
 // Prints CSV: t_s,top_x_m,top_y_m,top_theta_rad,drift_since_1s_m
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <algorithm>
 #include <exception>
 #include <memory>
 #include <stdexcept>
@@ -20,13 +18,11 @@
 
 #include "engine.h"
 #include "stack_scenes.h"
+#include "timing.h"
 
 namespace
 {
-using collision2d::Vec2;
 using namespace collision2d::bench;
-
-constexpr double kSettleSeconds = 1.0;  // s: drift counts from here, as in the stack bench
 
 struct Arguments
 {
@@ -44,12 +40,10 @@ Arguments parse_arguments(int argc, char** argv)
   {
     const std::string key = argv[i];
     const std::string value = argv[i + 1];
+    const bool engine = key == "--engine" && engine_from_name(value, a.engine);
     if (key == "--scene")
     {
       a.scene = value;
-    }
-    else if (key == "--engine" && engine_from_name(value, a.engine))
-    {
     }
     else if (key == "--seconds" && std::atof(value.c_str()) > 0.0)
     {
@@ -63,7 +57,7 @@ Arguments parse_arguments(int argc, char** argv)
     {
       a.substeps = std::atoi(value.c_str());
     }
-    else
+    else if (!engine)
     {
       throw std::invalid_argument("unknown or bad argument: " + key + " " + value);
     }
@@ -88,40 +82,32 @@ int main(int argc, char** argv)
       scene.settings.substeps = args.substeps;  // the peers take it too (PeerVariant::Substepped)
     }
     std::unique_ptr<Engine> engine = make_engine(scene, EngineConfig{args.engine, PeerVariant::Substepped, scene.settings});
-    std::vector<std::size_t> dynamic;
+    // The scene builds its stack bottom up: the last dynamic body is the top.
+    std::size_t top = 0;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
     {
-      if (scene.bodies[i].body.type() == collision2d::BodyType::Dynamic)
-      {
-        dynamic.push_back(i);
-      }
+      top = scene.bodies[i].body.type() == collision2d::BodyType::Dynamic ? i : top;
     }
-    const std::size_t top = dynamic.back();  // the scene builds its stack bottom up
     const double dt = scene.settings.dt;
-    const long settle_frame = std::lround(kSettleSeconds / dt);
-    const long frames = std::lround(args.seconds / dt);
-    std::vector<Vec2> settled;
+    const int settle_frame = frames_for(kStackSettleSeconds, dt);
+    const int frames = frames_for(args.seconds, dt);
+    std::vector<BodyState> settled(scene.bodies.size());
+    std::vector<BodyState> now(scene.bodies.size());
     std::printf("t_s,top_x_m,top_y_m,top_theta_rad,drift_since_1s_m\n");
-    for (long f = 1; f <= frames; ++f)
+    for (int f = 1; f <= frames; ++f)
     {
       engine->step_frame();
       if (f == settle_frame)
       {
-        for (std::size_t i : dynamic)
-        {
-          settled.push_back(engine->state(i).position);
-        }
+        read_states(*engine, settled);
       }
       if (f % args.every != 0)
       {
         continue;
       }
-      double drift = 0.0;
-      for (std::size_t k = 0; k < settled.size(); ++k)
-      {
-        drift = std::max(drift, collision2d::length(engine->state(dynamic[k]).position - settled[k]));
-      }
-      const BodyState s = engine->state(top);
+      read_states(*engine, now);
+      const double drift = f < settle_frame ? 0.0 : largest_move(scene, settled, now);
+      const BodyState& s = now[top];
       std::printf("%.4f,%.6g,%.6g,%.6g,%.6g\n", f * dt, s.position.x, s.position.y, s.theta, drift);
     }
   }

@@ -4,6 +4,9 @@
 #include "soft_rows.h"
 
 #include <algorithm>
+#include <array>
+#include <cstring>
+#include <utility>
 
 #include "soft_rows_kernel.h"
 
@@ -46,6 +49,56 @@ struct ScalarOps
 
 bool row_manifold(const ContactPoint& p) { return p.count == 2 && p.pair_block; }
 
+/// A key whose unsigned order is the descending order of h. A float is fine
+/// enough to order contacts by height; equal heights keep point order.
+std::uint32_t descending_key(float h)
+{
+  std::uint32_t bits = 0;
+  h = h == 0.0F ? 0.0F : h;  // -0 sorts with +0
+  std::memcpy(&bits, &h, sizeof bits);
+  const std::uint32_t ascending = (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
+  return ~ascending;
+}
+
+/// Sorts keys by their high half, keeping the order of equal ones: a least
+/// significant digit radix sort, linear where a comparison sort cost more
+/// than the colouring it orders. One pass counts every digit.
+void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& scratch)
+{
+  constexpr int kDigitBits = 8;
+  constexpr int kKeyDigits = 4;  // the high 32 bits
+  constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
+  const auto digit = [](std::uint64_t key, int d) {
+    return static_cast<std::size_t>(key >> (32 + kDigitBits * d)) & (kDigits - 1);
+  };
+  std::array<std::array<std::size_t, kDigits>, kKeyDigits> start{};
+  for (const std::uint64_t key : keys)
+  {
+    for (int d = 0; d < kKeyDigits; ++d)
+    {
+      ++start[d][digit(key, d)];
+    }
+  }
+  scratch.resize(keys.size());
+  for (int d = 0; d < kKeyDigits; ++d)
+  {
+    if (keys.empty() || start[d][digit(keys.front(), d)] == keys.size())
+    {
+      continue;  // one value of this digit for all: nothing moves
+    }
+    std::size_t sum = 0;
+    for (std::size_t& s : start[d])
+    {
+      sum += std::exchange(s, sum);
+    }
+    for (const std::uint64_t key : keys)
+    {
+      scratch[start[d][digit(key, d)]++] = key;
+    }
+    keys.swap(scratch);
+  }
+}
+
 }  // namespace
 
 void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
@@ -64,20 +117,20 @@ void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& v
   }
 }
 
-std::size_t SoftRows::take_colour(std::size_t a, std::size_t b)
+std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
 {
-  // a and b are the bodies the manifold moves (SIZE_MAX for one that cannot
+  // a and b are the bodies the manifold moves (kFixed for one that cannot
   // move); the lowest colour neither is in yet.
-  const auto colours_of = [&](std::size_t i) { return i == SIZE_MAX ? 0U : colours_of_[i]; };
+  const auto colours_of = [&](std::uint32_t i) { return i == kFixed ? 0U : colours_of_[i]; };
   const std::uint32_t free = ~(colours_of(a) | colours_of(b)) & kAllColours;
   if (free == 0)
   {
     return kMaxColours;
   }
   const std::size_t colour = static_cast<std::size_t>(__builtin_ctz(free));
-  for (std::size_t i : {a, b})
+  for (std::uint32_t i : {a, b})
   {
-    if (i != SIZE_MAX)
+    if (i != kFixed)
     {
       colours_of_[i] |= std::uint32_t{1} << colour;
     }
@@ -85,7 +138,26 @@ std::size_t SoftRows::take_colour(std::size_t a, std::size_t b)
   return colour;
 }
 
-void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+void SoftRows::order_manifolds(const std::vector<ContactPoint>& points, Vec2 up)
+{
+  manifolds_.clear();
+  order_.clear();
+  for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
+  {
+    const ContactPoint& p = points[k];
+    if (!p.active)
+    {
+      continue;
+    }
+    const Vec2 at = p.count == 2 ? 0.5 * (p.point + points[k + 1].point) : p.point;
+    order_.push_back(std::uint64_t{descending_key(static_cast<float>(dot(at, up)))} << 32 | manifolds_.size());
+    manifolds_.push_back(Manifold{static_cast<std::uint32_t>(k), p.inv_mass_a != 0.0 ? p.a : kFixed,
+                                  p.inv_mass_b != 0.0 ? p.b : kFixed, row_manifold(p)});
+  }
+  sort_by_height(order_, sort_scratch_);
+}
+
+void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, Vec2 up, bool friction,
                     WorkerPool& workers)
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
@@ -100,30 +172,40 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   overflow_.clear();
   coloured_ = 0;
   used_colours_ = 0;
-  // First pass: colour every manifold; rows are counted, then placed.
-  row_slots_.clear();
-  for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
+  // First pass: colour every manifold from the top of the scene down; rows
+  // are counted, then placed. Colouring in point (body index) order made the
+  // colours lopsided across a stack, and a pyramid swayed to one side as it
+  // settled; from the top down, each level is coloured alike.
+  order_manifolds(points, up);
+  for (const std::uint64_t key : order_)
   {
-    const ContactPoint& p = points[k];
-    if (!p.active)
-    {
-      continue;
-    }
-    const std::size_t colour = take_colour(p.inv_mass_a != 0.0 ? p.a : SIZE_MAX, p.inv_mass_b != 0.0 ? p.b : SIZE_MAX);
+    Manifold& m = manifolds_[key & 0xffffffffU];
+    const std::size_t colour = take_colour(m.a, m.b);
     if (colour == kMaxColours)
     {
-      overflow_.push_back(k);
+      overflow_.push_back(m.first);
+      m.row = false;
       continue;
     }
     ++coloured_;
     used_colours_ = std::max(used_colours_, colour + 1);
-    if (row_manifold(p))
+    if (m.row)
     {
-      row_slots_.push_back(RowSlot{k, colour, colours_[colour].lanes++});
+      m.colour = static_cast<std::uint32_t>(colour);
     }
     else
     {
-      colours_[colour].others.push_back(k);
+      colours_[colour].others.push_back(m.first);
+    }
+  }
+  // Within a colour the rows share no body, so their places are free: in
+  // point order, as the points lie in memory.
+  row_slots_.clear();
+  for (const Manifold& m : manifolds_)
+  {
+    if (m.row)
+    {
+      row_slots_.push_back(RowSlot{m.first, m.colour, colours_[m.colour].lanes++});
     }
   }
   // Second pass: each colour's rows in whole batches, the last one padded.

@@ -73,9 +73,11 @@ class SoftRows
 {
 public:
   /// Colours and packs this frame's active points (prepared, soft terms set);
-  /// the colouring runs in point order, the lanes are filled by the workers.
-  /// `velocity` gains one spare body at its end for the padding lanes.
-  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+  /// the colouring runs from the highest manifold along `up` (against
+  /// gravity, any length; zero keeps point order) down, the lanes are filled
+  /// by the workers. `velocity` gains one spare body at its end for the
+  /// padding lanes.
+  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, Vec2 up, bool friction,
             WorkerPool& workers);
   /// Colours in use: the greedy colouring takes the lowest free one, so
   /// they are 0 .. colour_count() - 1.
@@ -98,9 +100,24 @@ public:
   void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, WorkerPool& workers) const;
 
 private:
-  /// The first colour free of bodies a and b (SIZE_MAX: one that cannot
-  /// move), now taken by them; colour_count() when none is free.
-  std::size_t take_colour(std::size_t a, std::size_t b);
+  /// A manifold's body that cannot move, for take_colour.
+  static constexpr std::uint32_t kFixed = UINT32_MAX;
+  /// What colouring reads of an active manifold, and where it went.
+  struct Manifold
+  {
+    std::uint32_t first = 0;  ///< its first point
+    std::uint32_t a = kFixed;  ///< the bodies it moves
+    std::uint32_t b = kFixed;
+    bool row = false;         ///< solved in the batches (once coloured)
+    std::uint32_t colour = 0;
+  };
+
+  /// The active manifolds in manifolds_, their keys in order_ from the
+  /// highest along `up` down.
+  void order_manifolds(const std::vector<ContactPoint>& points, Vec2 up);
+  /// The first colour free of bodies a and b (kFixed: one that cannot
+  /// move), now taken by them; kMaxColours when none is free.
+  std::size_t take_colour(std::uint32_t a, std::uint32_t b);
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
   static void unpack_lane(const RowBatch& batch, int lane, std::vector<ContactPoint>& points, std::size_t first);
@@ -120,6 +137,11 @@ private:
     std::size_t slot = 0;
   };
   std::vector<RowSlot> row_slots_;  ///< scratch, in point order
+  std::vector<Manifold> manifolds_;  ///< scratch, in point order
+  /// Scratch: per manifold, its height key (high half) and its index in
+  /// manifolds_ (low half), sorted.
+  std::vector<std::uint64_t> order_;
+  std::vector<std::uint64_t> sort_scratch_;
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
 };

@@ -57,7 +57,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   prepare_soft_points(ctx);
   if (rows_on())
   {
-    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
+    soft_rows_.pack(points_, velocity_, -settings_.gravity, ctx.effects.friction, workers_);  // soft_rows.cpp
   }
   find_bounce_points();                                   // world_soft_restitution.cpp
   // 3. Substeps.

@@ -1246,23 +1246,22 @@ checkpoint; penetration: our detection on each engine's poses at every frame
 end. All rows come from one run of `collision2d_stack_bench`.
 
 The drift targets count from 1 s, and in both engines the tall pyramids are
-still swaying then. `collision2d_stack_trace --scene NAME --engine NAME`
-prints the top box's pose and the drift since 1 s every few frames; at commit
-3c3ec98 (not this run), soft step defaults: on base-60 our top box swung
-between -31 and +57 mm sideways in the first second, was at -8.5 mm at 1 s
-and within 1 mm of its final place from 4.75 s on (drift 1 s -> 10 s 8.6 mm;
-with `--substeps 8` it stayed within -4.1 .. +8.9 mm in the first second and
-was at 1.3 mm at 1 s). Box2D v3's top box swung within -4.5 .. +10 mm in the first second,
-but its drift 1 s -> 10 s was 13.1 mm. On base-100, ours swung within
--71 .. +65 mm (at +65 mm at 1 s, drift 61.5 mm), Box2D v3's drift was 108 mm.
-So the missed drift targets are a settling sway, not a creep: after about
-5 s (base-60) our stacks move less than 1 mm. The sway comes from the order
-in which the rows are coloured (pair order, so by body index): in an
-experiment at 3c3ec98 that coloured the manifolds in order of contact
-height instead, the base-60 top box stayed within -0.7 .. +0.4 mm in the
-first second and the base-100 one within 0 .. +3.9 mm; the drift, now of
-the flanks still settling, was 7.3 mm and 22 mm (1 s -> 8 s). Not adopted
-yet: it needs a sort per frame and changes the soft step's golden hashes.
+still settling then. `collision2d_stack_trace --scene NAME --engine NAME`
+prints the top box's pose and the drift since 1 s every few frames. Until
+commit b7dfb95 the soft step coloured its rows in body index order, which
+made the colours lopsided across a pyramid built row by row, and the stack
+leaned as it settled: on base-60 the top box swung between -31.9 and
++58.2 mm sideways in the first second, on base-100 between -73.5 and
++64.8 mm. Since b7dfb95 the rows are coloured from the top of the scene
+down; at that commit (not this run) the top box stayed within 0 .. +1.4 mm
+(base-60) and -0.2 .. +2.6 mm (base-100) sideways, and the drift 1 s -> 10 s
+fell from 8.58 to 7.10 mm and from 61.5 to 17.8 mm. What is left is the
+stack's vertical settling, which Box2D v3 shares: the contacts carry the
+weight by compressing, the whole pyramid sinks into them and rebounds. At
+b7dfb95 the base-100 top box was 289 mm below its final height at 0.65 s
+and 107 mm above it at 1.25 s (Box2D v3: 204 mm below at 0.65 s, 53 mm
+above at 1.45 s), and the flank boxes slide a few millimetres while the
+load shifts.
 
 {stacks_section(stacks, default)}
 ## Stacks standing for a minute (base-20 pyramid and 20-box column of the sweep)

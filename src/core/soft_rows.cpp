@@ -138,26 +138,31 @@ std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
   return colour;
 }
 
-void SoftRows::order_manifolds(const std::vector<ContactPoint>& points, Vec2 up)
+void SoftRows::expect_points(std::size_t points) { notes_.resize(points); }
+
+void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
 {
-  manifolds_.clear();
+  const Vec2 at = second != nullptr ? 0.5 * (p.point + second->point) : p.point;
+  notes_[k] = Note{descending_key(static_cast<float>(dot(at, up))), p.inv_mass_a != 0.0 ? p.a : kFixed,
+                   p.inv_mass_b != 0.0 ? p.b : kFixed, 0, true, row_manifold(p)};
+}
+
+void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
+
+void SoftRows::order_manifolds()
+{
   order_.clear();
-  for (std::size_t k = 0; k < points.size(); k += points[k].count == 2 ? 2 : 1)
+  for (std::size_t k = 0; k < notes_.size(); ++k)
   {
-    const ContactPoint& p = points[k];
-    if (!p.active)
+    if (notes_[k].first)
     {
-      continue;
+      order_.push_back(std::uint64_t{notes_[k].key} << 32 | k);
     }
-    const Vec2 at = p.count == 2 ? 0.5 * (p.point + points[k + 1].point) : p.point;
-    order_.push_back(std::uint64_t{descending_key(static_cast<float>(dot(at, up)))} << 32 | manifolds_.size());
-    manifolds_.push_back(Manifold{static_cast<std::uint32_t>(k), p.inv_mass_a != 0.0 ? p.a : kFixed,
-                                  p.inv_mass_b != 0.0 ? p.b : kFixed, row_manifold(p)});
   }
   sort_by_height(order_, sort_scratch_);
 }
 
-void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, Vec2 up, bool friction,
+void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
                     WorkerPool& workers)
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
@@ -176,14 +181,15 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   // are counted, then placed. Colouring in point (body index) order made the
   // colours lopsided across a stack, and a pyramid swayed to one side as it
   // settled; from the top down, each level is coloured alike.
-  order_manifolds(points, up);
+  order_manifolds();
   for (const std::uint64_t key : order_)
   {
-    Manifold& m = manifolds_[key & 0xffffffffU];
+    const std::size_t first = key & 0xffffffffU;
+    Note& m = notes_[first];
     const std::size_t colour = take_colour(m.a, m.b);
     if (colour == kMaxColours)
     {
-      overflow_.push_back(m.first);
+      overflow_.push_back(first);
       m.row = false;
       continue;
     }
@@ -195,17 +201,18 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     }
     else
     {
-      colours_[colour].others.push_back(m.first);
+      colours_[colour].others.push_back(first);
     }
   }
   // Within a colour the rows share no body, so their places are free: in
   // point order, as the points lie in memory.
   row_slots_.clear();
-  for (const Manifold& m : manifolds_)
+  for (std::size_t k = 0; k < notes_.size(); ++k)
   {
-    if (m.row)
+    const Note& m = notes_[k];
+    if (m.first && m.row)
     {
-      row_slots_.push_back(RowSlot{m.first, m.colour, colours_[m.colour].lanes++});
+      row_slots_.push_back(RowSlot{k, m.colour, colours_[m.colour].lanes++});
     }
   }
   // Second pass: each colour's rows in whole batches, the last one padded.

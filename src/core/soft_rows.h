@@ -72,12 +72,19 @@ struct RowColour
 class SoftRows
 {
 public:
-  /// Colours and packs this frame's active points (prepared, soft terms set);
-  /// the colouring runs from the highest manifold along `up` (against
-  /// gravity, any length; zero keeps point order) down, the lanes are filled
-  /// by the workers. `velocity` gains one spare body at its end for the
-  /// padding lanes.
-  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, Vec2 up, bool friction,
+  /// Before prepare: the frame has this many points, each to be noted once.
+  void expect_points(std::size_t points);
+  /// At prepare, for each active manifold's first point k (its second point,
+  /// if any, prepared): what colouring needs, read while the points are in
+  /// cache. `up` is against gravity, any length (zero keeps point order).
+  /// Safe from several workers for distinct k.
+  void note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up);
+  /// ... and for every other point.
+  void note_no_manifold(std::size_t k);
+  /// Colours and packs this frame's noted manifolds (prepared, soft terms
+  /// set), from the highest along `up` down; the lanes are filled by the
+  /// workers. `velocity` gains one spare body at its end for the padding lanes.
+  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
             WorkerPool& workers);
   /// Colours in use: the greedy colouring takes the lowest free one, so
   /// they are 0 .. colour_count() - 1.
@@ -102,19 +109,20 @@ public:
 private:
   /// A manifold's body that cannot move, for take_colour.
   static constexpr std::uint32_t kFixed = UINT32_MAX;
-  /// What colouring reads of an active manifold, and where it went.
-  struct Manifold
+  /// Per point, from prepare: what colouring reads of the manifold that
+  /// starts there, and the colour it took.
+  struct Note
   {
-    std::uint32_t first = 0;  ///< its first point
-    std::uint32_t a = kFixed;  ///< the bodies it moves
+    std::uint32_t key = 0;     ///< descending in height
+    std::uint32_t a = kFixed;  ///< the bodies the manifold moves
     std::uint32_t b = kFixed;
-    bool row = false;         ///< solved in the batches (once coloured)
     std::uint32_t colour = 0;
+    bool first = false;        ///< an active manifold starts at this point
+    bool row = false;          ///< solved in the batches (once coloured)
   };
 
-  /// The active manifolds in manifolds_, their keys in order_ from the
-  /// highest along `up` down.
-  void order_manifolds(const std::vector<ContactPoint>& points, Vec2 up);
+  /// The noted manifolds' keys in order_, from the highest down.
+  void order_manifolds();
   /// The first colour free of bodies a and b (kFixed: one that cannot
   /// move), now taken by them; kMaxColours when none is free.
   std::size_t take_colour(std::uint32_t a, std::uint32_t b);
@@ -137,9 +145,9 @@ private:
     std::size_t slot = 0;
   };
   std::vector<RowSlot> row_slots_;  ///< scratch, in point order
-  std::vector<Manifold> manifolds_;  ///< scratch, in point order
-  /// Scratch: per manifold, its height key (high half) and its index in
-  /// manifolds_ (low half), sorted.
+  std::vector<Note> notes_;  ///< per point, written at prepare
+  /// Scratch: per manifold, its height key (high half) and its first point
+  /// (low half), sorted.
   std::vector<std::uint64_t> order_;
   std::vector<std::uint64_t> sort_scratch_;
   std::size_t coloured_ = 0;

@@ -57,7 +57,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   prepare_soft_points(ctx);
   if (rows_on())
   {
-    soft_rows_.pack(points_, velocity_, -settings_.gravity, ctx.effects.friction, workers_);  // soft_rows.cpp
+    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
   }
   find_bounce_points();                                   // world_soft_restitution.cpp
   // 3. Substeps.
@@ -90,6 +90,7 @@ void WorldImpl::prepare_soft_points(const StepContext& ctx)
   const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
   const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
   // Both preparations of a block of points run while it is in cache.
+  soft_rows_.expect_points(points_.size());
   std::atomic<bool> bounces{false};
   for_point_ranges([&](std::size_t begin, std::size_t end) {
     bool range_bounces = false;
@@ -144,15 +145,27 @@ bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
     bounces = bounces || p.restitution > 0.0;
   }
   // A manifold's normal block is the same all frame (lever arms are fixed).
-  for (std::size_t k = begin; k + 1 < end; ++k)
+  // The rows' colouring reads each manifold here, while it is in cache.
+  const Vec2 up = -settings_.gravity;
+  for (std::size_t k = begin; k < end; k += points_[k].count == 2 ? 2 : 1)
   {
     ContactPoint& p = points_[k];
-    if (p.active && p.count == 2)
+    ContactPoint* second = p.count == 2 ? &points_[k + 1] : nullptr;
+    if (second != nullptr)
     {
-      p.pair_k12 = pair_coupling(p, points_[k + 1]);
-      p.pair_block = block_solvable(p.k_n, p.pair_k12, points_[k + 1].k_n);
-      ++k;
+      soft_rows_.note_no_manifold(k + 1);
     }
+    if (!p.active)
+    {
+      soft_rows_.note_no_manifold(k);
+      continue;
+    }
+    if (second != nullptr)
+    {
+      p.pair_k12 = pair_coupling(p, *second);
+      p.pair_block = block_solvable(p.k_n, p.pair_k12, second->k_n);
+    }
+    soft_rows_.note_manifold(k, p, second, up);
   }
   return bounces;
 }

@@ -79,6 +79,7 @@ void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>
       ++start[d][digit(key, d)];
     }
   }
+  scratch.reserve(keys.size());  // exactly, as the keys
   scratch.resize(keys.size());
   for (int d = 0; d < kKeyDigits; ++d)
   {
@@ -138,7 +139,11 @@ std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
   return colour;
 }
 
-void SoftRows::expect_points(std::size_t points) { notes_.resize(points); }
+void SoftRows::expect_points(std::size_t points)
+{
+  notes_.reserve(points);  // exactly: doubling would leave up to twice the memory
+  notes_.resize(points);
+}
 
 void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
 {
@@ -151,7 +156,11 @@ void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
 
 void SoftRows::order_manifolds()
 {
+  // Sized exactly: these grow with the scene, and doubling would leave
+  // up to twice the memory they need.
   order_.clear();
+  order_.reserve(static_cast<std::size_t>(
+      std::count_if(notes_.begin(), notes_.end(), [](const Note& n) { return n.first; })));
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     if (notes_[k].first)
@@ -197,7 +206,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     used_colours_ = std::max(used_colours_, colour + 1);
     if (m.row)
     {
-      m.colour = static_cast<std::uint32_t>(colour);
+      m.colour = static_cast<std::uint8_t>(colour);
     }
     else
     {
@@ -207,12 +216,14 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   // Within a colour the rows share no body, so their places are free: in
   // point order, as the points lie in memory.
   row_slots_.clear();
+  row_slots_.reserve(order_.size());
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     const Note& m = notes_[k];
     if (m.first && m.row)
     {
-      row_slots_.push_back(RowSlot{k, m.colour, colours_[m.colour].lanes++});
+      row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour,
+                                   static_cast<std::uint32_t>(colours_[m.colour].lanes++)});
     }
   }
   // Second pass: each colour's rows in whole batches, the last one padded.

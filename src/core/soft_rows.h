@@ -116,7 +116,7 @@ private:
     std::uint32_t key = 0;     ///< descending in height
     std::uint32_t a = kFixed;  ///< the bodies the manifold moves
     std::uint32_t b = kFixed;
-    std::uint32_t colour = 0;
+    std::uint8_t colour = 0;   ///< below kMaxColours
     bool first = false;        ///< an active manifold starts at this point
     bool row = false;          ///< solved in the batches (once coloured)
   };
@@ -140,9 +140,9 @@ private:
   /// Where a row manifold goes: its colour and its place among the colour's rows.
   struct RowSlot
   {
-    std::size_t first = 0;  ///< the manifold's first point
-    std::size_t colour = 0;
-    std::size_t slot = 0;
+    std::uint32_t first = 0;  ///< the manifold's first point
+    std::uint32_t colour = 0;
+    std::uint32_t slot = 0;
   };
   std::vector<RowSlot> row_slots_;  ///< scratch, in point order
   std::vector<Note> notes_;  ///< per point, written at prepare

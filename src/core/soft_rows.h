@@ -82,8 +82,8 @@ public:
   /// ... and for every other point.
   void note_no_manifold(std::size_t k);
   /// Colours and packs this frame's noted manifolds (prepared, soft terms
-  /// set), from the highest along `up` down; the lanes are filled by the
-  /// workers. `velocity` gains one spare body at its end for the padding lanes.
+  /// set), the highest first; the lanes are filled by the workers.
+  /// `velocity` gains one spare body at its end for the padding lanes.
   void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
             WorkerPool& workers);
   /// Colours in use: the greedy colouring takes the lowest free one, so

@@ -79,7 +79,7 @@ void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>
       ++start[d][digit(key, d)];
     }
   }
-  scratch.reserve(keys.size());  // exactly, as the keys
+  scratch.reserve(keys.capacity());
   scratch.resize(keys.size());
   for (int d = 0; d < kKeyDigits; ++d)
   {
@@ -139,11 +139,7 @@ std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
   return colour;
 }
 
-void SoftRows::expect_points(std::size_t points)
-{
-  notes_.reserve(points);  // exactly: doubling would leave up to twice the memory
-  notes_.resize(points);
-}
+void SoftRows::expect_points(std::size_t points) { notes_.resize(points); }
 
 void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
 {
@@ -156,11 +152,10 @@ void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
 
 void SoftRows::order_manifolds()
 {
-  // Sized exactly: these grow with the scene, and doubling would leave
-  // up to twice the memory they need.
+  // At most one manifold per point: reserved so, the keys never grow by
+  // copying, and the pages past the last manifold are never touched.
   order_.clear();
-  order_.reserve(static_cast<std::size_t>(
-      std::count_if(notes_.begin(), notes_.end(), [](const Note& n) { return n.first; })));
+  order_.reserve(notes_.size());
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     if (notes_[k].first)

@@ -150,7 +150,7 @@ bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
   for (std::size_t k = begin; k < end; k += points_[k].count == 2 ? 2 : 1)
   {
     ContactPoint& p = points_[k];
-    ContactPoint* second = p.count == 2 ? &points_[k + 1] : nullptr;
+    const ContactPoint* second = p.count == 2 ? &points_[k + 1] : nullptr;
     if (second != nullptr)
     {
       soft_rows_.note_no_manifold(k + 1);

@@ -19,6 +19,8 @@ namespace
 /// Colours tried before a manifold goes to the overflow: a box in a stack
 /// touches at most six others, so greedy colouring needs far fewer.
 constexpr std::size_t kMaxColours = 24;
+/// Fewer manifolds than this are ordered by a comparison sort (sort_by_height).
+constexpr std::size_t kRadixSortFrom = 256;
 /// A bit per colour, for the colours a body is in.
 constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kMaxColours) - 1;
 /// Row manifolds (lanes) below which filling or emptying the batches stays on
@@ -62,9 +64,17 @@ std::uint32_t descending_key(float h)
 
 /// Sorts keys by their high half, keeping the order of equal ones: a least
 /// significant digit radix sort, linear where a comparison sort cost more
-/// than the colouring it orders. One pass counts every digit.
+/// than the colouring it orders. One pass counts every digit. The low halves
+/// are distinct and ascending, so a comparison sort of the whole keys gives
+/// the same order: below kRadixSortFrom keys it is cheaper than clearing and
+/// summing the digit counts.
 void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& scratch)
 {
+  if (keys.size() < kRadixSortFrom)
+  {
+    std::sort(keys.begin(), keys.end());
+    return;
+  }
   constexpr int kDigitBits = 8;
   constexpr int kKeyDigits = 4;  // the high 32 bits
   constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;

@@ -1263,6 +1263,29 @@ and 107 mm above it at 1.25 s (Box2D v3: 204 mm below at 0.65 s, 53 mm
 above at 1.45 s), and the flank boxes slide a few millimetres while the
 load shifts.
 
+Why the contact defaults stay at 40 Hz and damping ratio 10: the largest
+penetration is a loaded contact's steady compression, its load over
+m_eff (2 pi f)^2, so only a stiffer contact makes it smaller, and every
+stiffer contact we measured made the tall pyramids drift more. Measured at
+commit 6a4da26 (not this run) with a scratch driver stepping
+`make_stack_scene` for 10 s; drift 1 s -> 10 s / largest penetration, mm:
+
+| contact model | column | base-20 | base-60 | base-100 |
+|---|---|---|---|---|
+| defaults (40 Hz, damping ratio 10) | 0.047 / 6.02 | 0.425 / 2.87 | 7.10 / 10.8 | 17.8 / 20.0 |
+| contact_hertz 45 | 0.008 / 5.02 | 0.348 / 2.80 | 7.21 / 9.26 | 91.9 / 16.7 |
+| contact_hertz 50 | 0.038 / 4.58 | 0.292 / 2.66 | 8.02 / 8.13 | 165 / 14.3 |
+| contact_damping_ratio 20 | 2.00 / 6.02 | 0.728 / 2.86 | 12.2 / 9.54 | 39.1 / 18.1 |
+| contact_damping_ratio 40 | 9.49 / 6.02 | 3.59 / 3.05 | 49.8 / 9.45 | 123 / 15.7 |
+| stiffness by load: f times sqrt(supported mass / m_eff), at most a quarter of the substep rate | 0.541 / 4.24 | 0.363 / 2.53 | 138 / 7.19 | 196 / 11.6 |
+| rigid normal update, same push-out rate (no soft leak) | 18.2 / 4.82 | 16.1 / 2.68 | | |
+
+A stiffer or more damped contact slows the tall pyramids' breathing mode
+rather than ending it, and a stiffness that follows the load changes every
+frame and pumps energy into the flank boxes. Letting that stiffness reach
+half the substep rate, or the full rate, rings: the base-20 pyramid then
+drifts 34 and 88 mm.
+
 {stacks_section(stacks, default)}
 ## Stacks standing for a minute (base-20 pyramid and 20-box column of the sweep)
 

@@ -212,6 +212,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     if (m.row)
     {
       m.colour = static_cast<std::uint8_t>(colour);
+      ++colours_[colour].lanes;
     }
     else
     {
@@ -219,17 +220,27 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     }
   }
   // Within a colour the rows share no body, so their places are free: in
-  // point order, as the points lie in memory.
+  // point order, as the points lie in memory. A colour's only row goes to
+  // the point verbs: the same bits, without a batch's padding lanes.
   row_slots_.clear();
   row_slots_.reserve(order_.size());
+  std::array<std::uint32_t, kMaxColours> placed{};
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
-    const Note& m = notes_[k];
-    if (m.first && m.row)
+    Note& m = notes_[k];
+    if (m.first && m.row && colours_[m.colour].lanes == 1)
     {
-      row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour,
-                                   static_cast<std::uint32_t>(colours_[m.colour].lanes++)});
+      m.row = false;
+      colours_[m.colour].others.push_back(k);
     }
+    else if (m.first && m.row)
+    {
+      row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, placed[m.colour]++});
+    }
+  }
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
+  {
+    colours_[colour].lanes = placed[colour];
   }
   // Second pass: each colour's rows in whole batches, the last one padded.
   // Every lane has its own slot, so the workers can fill them in any split.

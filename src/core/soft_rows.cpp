@@ -1,12 +1,9 @@
-// The soft step's rows in colours (soft_rows.h): greedy colouring, packing
-// into batches, the passes in colour order and the scalar lane path (the
-// choice of path is soft_rows_dispatch.cpp).
+// The soft step's rows in colours (soft_rows.h): the coloured manifolds
+// (soft_rows_colour.cpp) packed into batches, the passes in colour order and
+// the scalar lane path (the choice of path is soft_rows_dispatch.cpp).
 #include "soft_rows.h"
 
 #include <algorithm>
-#include <array>
-#include <cstring>
-#include <utility>
 
 #include "soft_rows_kernel.h"
 
@@ -16,13 +13,6 @@ namespace detail
 {
 namespace
 {
-/// Colours tried before a manifold goes to the overflow: a box in a stack
-/// touches at most six others, so greedy colouring needs far fewer.
-constexpr std::size_t kMaxColours = 24;
-/// Fewer manifolds than this are ordered by a comparison sort (sort_by_height).
-constexpr std::size_t kRadixSortFrom = 256;
-/// A bit per colour, for the colours a body is in.
-constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kMaxColours) - 1;
 /// Row manifolds (lanes) below which filling or emptying the batches stays on
 /// the calling thread: a lane is a few dozen copies.
 constexpr std::size_t kMinSharedLanes = 512;
@@ -49,67 +39,6 @@ struct ScalarOps
   }
 };
 
-bool row_manifold(const ContactPoint& p) { return p.count == 2 && p.pair_block; }
-
-/// A key whose unsigned order is the descending order of h. A float is fine
-/// enough to order contacts by height; equal heights keep point order.
-std::uint32_t descending_key(float h)
-{
-  std::uint32_t bits = 0;
-  h = h == 0.0F ? 0.0F : h;  // -0 sorts with +0
-  std::memcpy(&bits, &h, sizeof bits);
-  const std::uint32_t ascending = (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
-  return ~ascending;
-}
-
-/// Sorts keys by their high half, keeping the order of equal ones: a least
-/// significant digit radix sort, linear where a comparison sort cost more
-/// than the colouring it orders. One pass counts every digit. The low halves
-/// are distinct and ascending, so a comparison sort of the whole keys gives
-/// the same order: below kRadixSortFrom keys it is cheaper than clearing and
-/// summing the digit counts.
-void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& scratch)
-{
-  if (keys.size() < kRadixSortFrom)
-  {
-    std::sort(keys.begin(), keys.end());
-    return;
-  }
-  constexpr int kDigitBits = 8;
-  constexpr int kKeyDigits = 4;  // the high 32 bits
-  constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
-  const auto digit = [](std::uint64_t key, int d) {
-    return static_cast<std::size_t>(key >> (32 + kDigitBits * d)) & (kDigits - 1);
-  };
-  std::array<std::array<std::size_t, kDigits>, kKeyDigits> start{};
-  for (const std::uint64_t key : keys)
-  {
-    for (int d = 0; d < kKeyDigits; ++d)
-    {
-      ++start[d][digit(key, d)];
-    }
-  }
-  scratch.reserve(keys.capacity());
-  scratch.resize(keys.size());
-  for (int d = 0; d < kKeyDigits; ++d)
-  {
-    if (keys.empty() || start[d][digit(keys.front(), d)] == keys.size())
-    {
-      continue;  // one value of this digit for all: nothing moves
-    }
-    std::size_t sum = 0;
-    for (std::size_t& s : start[d])
-    {
-      sum += std::exchange(s, sum);
-    }
-    for (const std::uint64_t key : keys)
-    {
-      scratch[start[d][digit(key, d)]++] = key;
-    }
-    keys.swap(scratch);
-  }
-}
-
 }  // namespace
 
 void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
@@ -128,120 +57,12 @@ void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& v
   }
 }
 
-std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
-{
-  // a and b are the bodies the manifold moves (kFixed for one that cannot
-  // move); the lowest colour neither is in yet.
-  const auto colours_of = [&](std::uint32_t i) { return i == kFixed ? 0U : colours_of_[i]; };
-  const std::uint32_t free = ~(colours_of(a) | colours_of(b)) & kAllColours;
-  if (free == 0)
-  {
-    return kMaxColours;
-  }
-  const std::size_t colour = static_cast<std::size_t>(__builtin_ctz(free));
-  for (std::uint32_t i : {a, b})
-  {
-    if (i != kFixed)
-    {
-      colours_of_[i] |= std::uint32_t{1} << colour;
-    }
-  }
-  return colour;
-}
-
-void SoftRows::expect_points(std::size_t points) { notes_.resize(points); }
-
-void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
-{
-  const Vec2 at = second != nullptr ? 0.5 * (p.point + second->point) : p.point;
-  notes_[k] = Note{descending_key(static_cast<float>(dot(at, up))), p.inv_mass_a != 0.0 ? p.a : kFixed,
-                   p.inv_mass_b != 0.0 ? p.b : kFixed, 0, true, row_manifold(p)};
-}
-
-void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
-
-void SoftRows::order_manifolds()
-{
-  // At most one manifold per point: reserved so, the keys never grow by
-  // copying, and the pages past the last manifold are never touched.
-  order_.clear();
-  order_.reserve(notes_.size());
-  for (std::size_t k = 0; k < notes_.size(); ++k)
-  {
-    if (notes_[k].first)
-    {
-      order_.push_back(std::uint64_t{notes_[k].key} << 32 | k);
-    }
-  }
-  sort_by_height(order_, sort_scratch_);
-}
-
 void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
                     WorkerPool& workers)
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
-  colours_of_.assign(velocity.size(), 0);
-  colours_.resize(kMaxColours);
-  for (RowColour& c : colours_)
-  {
-    c.others.clear();
-    c.lanes = 0;
-  }
-  overflow_.clear();
-  coloured_ = 0;
-  used_colours_ = 0;
-  // First pass: colour every manifold from the top of the scene down; rows
-  // are counted, then placed. Colouring in point (body index) order made the
-  // colours lopsided across a stack, and a pyramid swayed to one side as it
-  // settled; from the top down, each level is coloured alike.
-  order_manifolds();
-  for (const std::uint64_t key : order_)
-  {
-    const std::size_t first = key & 0xffffffffU;
-    Note& m = notes_[first];
-    const std::size_t colour = take_colour(m.a, m.b);
-    if (colour == kMaxColours)
-    {
-      overflow_.push_back(first);
-      m.row = false;
-      continue;
-    }
-    ++coloured_;
-    used_colours_ = std::max(used_colours_, colour + 1);
-    if (m.row)
-    {
-      m.colour = static_cast<std::uint8_t>(colour);
-      ++colours_[colour].lanes;
-    }
-    else
-    {
-      colours_[colour].others.push_back(first);
-    }
-  }
-  // Within a colour the rows share no body, so their places are free: in
-  // point order, as the points lie in memory. A colour's only row goes to
-  // the point verbs: the same bits, without a batch's padding lanes.
-  row_slots_.clear();
-  row_slots_.reserve(order_.size());
-  std::array<std::uint32_t, kMaxColours> placed{};
-  for (std::size_t k = 0; k < notes_.size(); ++k)
-  {
-    Note& m = notes_[k];
-    if (m.first && m.row && colours_[m.colour].lanes == 1)
-    {
-      m.row = false;
-      colours_[m.colour].others.push_back(k);
-    }
-    else if (m.first && m.row)
-    {
-      row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, placed[m.colour]++});
-    }
-  }
-  for (std::size_t colour = 0; colour < used_colours_; ++colour)
-  {
-    colours_[colour].lanes = placed[colour];
-  }
+  colour_manifolds(velocity.size());
   // Second pass: each colour's rows in whole batches, the last one padded.
   // Every lane has its own slot, so the workers can fill them in any split.
   std::size_t batches = 0;

@@ -107,6 +107,9 @@ public:
   void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, WorkerPool& workers) const;
 
 private:
+  /// Colours tried before a manifold goes to the overflow: a box in a stack
+  /// touches at most six others, so greedy colouring needs far fewer.
+  static constexpr std::size_t kMaxColours = 24;
   /// A manifold's body that cannot move, for take_colour.
   static constexpr std::uint32_t kFixed = UINT32_MAX;
   /// Per point, from prepare: what colouring reads of the manifold that
@@ -123,6 +126,9 @@ private:
 
   /// The noted manifolds' keys in order_, from the highest down.
   void order_manifolds();
+  /// Colours every noted manifold from the highest down (soft_rows_colour.cpp)
+  /// and gives each colour's rows their places; `bodies` counts the spare one.
+  void colour_manifolds(std::size_t bodies);
   /// The first colour free of bodies a and b (kFixed: one that cannot
   /// move), now taken by them; kMaxColours when none is free.
   std::size_t take_colour(std::uint32_t a, std::uint32_t b);

@@ -57,9 +57,10 @@ namespace
 /// a few microseconds behind, short enough not to starve a busy machine.
 constexpr int kSpinsBeforeYield = 64;
 /// Yields before a thread waiting for a job (or for the workers to finish
-/// one) sleeps: the step's stages follow each other closely, and waking a
-/// sleeping thread costs more than a short wait.
-constexpr int kYieldsBeforeSleep = 32;
+/// one) sleeps: enough to stay awake through a frame's serial stages (about
+/// a millisecond), since a worker woken from sleep starts its share late and
+/// the others wait for it at the next sync. Between frames it sleeps.
+constexpr int kYieldsBeforeSleep = 1024;
 
 void pause()
 {

@@ -62,9 +62,9 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
-  colour_manifolds(velocity.size());
-  // Second pass: each colour's rows in whole batches, the last one padded.
-  // Every lane has its own slot, so the workers can fill them in any split.
+  colour_manifolds(velocity.size());                      // soft_rows_colour.cpp
+  // Each colour's rows in whole batches, the last one padded. Every lane
+  // has its own slot, so the workers can fill them in any split.
   std::size_t batches = 0;
   for (std::size_t colour = 0; colour < used_colours_; ++colour)
   {

@@ -87,8 +87,14 @@ def median_runs(rows):
     picked = []
     for runs in groups.values():
         runs = sorted(runs, key=lambda r: number(r["ms_per_step"]))
-        picked.append(runs[(len(runs) - 1) // 2])
+        picked.append(dict(runs[(len(runs) - 1) // 2], rounds=len(runs)))
     return picked
+
+
+def throughput_rounds(scaling):
+    """How many rounds ours ran at each throughput size (the script alternates 1 and 2 workers)."""
+    return max((r["rounds"] for r in scaling if r["engine"] == "collision2d" and r.get("workers", "1") == "2"),
+               default=1)
 
 
 def finite(x):
@@ -372,10 +378,6 @@ MEMORY_TARGET_KIB_PER_BODY = 1.0
 # one where a single body moves, cost at most this fraction of the same world
 # awake.
 RESTING_FRACTION_TARGET = 0.01
-
-
-# Rounds of our 1- and 2-worker throughput runs (scripts/performance_report.sh).
-THROUGHPUT_ROUNDS = 3
 
 
 def throughput_rows(scaling, scene, engine, workers="1"):
@@ -1394,12 +1396,13 @@ pyramid of at most n boxes, and a rain of n disks and boxes falling onto the
 ground (timed after its first second, when the lowest rows have landed).
 Ours with 1 and 2 workers (`WorldSettings::workers`), Box2D v3 on one
 thread when it is in the run; one process per size, so the peak memory is
-that size's alone. Ours runs {THROUGHPUT_ROUNDS} rounds alternating 1 and 2
+that size's alone. Ours runs {throughput_rounds(scaling)} rounds alternating 1 and 2
 workers, and each row is the round of median time: a second core busy for
-a moment slows only the runs that need it. Two more scenes, with each engine's own sleeping on and
-timed after 10 s: `resting`, the pyramid fallen asleep, and `stirred`, the
-same with one kinematic disk sliding along the ground far from it, so some
-body moves every frame and the rest of the world sleeps.
+a moment slows only the runs that need it. Two more scenes, with each
+engine's own sleeping on and timed after 10 s: `resting`, the pyramid
+fallen asleep, and `stirred`, the same with one kinematic disk sliding
+along the ground far from it, so some body moves every frame and the rest
+of the world sleeps.
 
 {chr(10).join(plots_extra)}
 

@@ -179,19 +179,19 @@ void SoftRows::colour_manifolds(std::size_t bodies)
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     Note& m = notes_[k];
-    if (m.first && m.row && colours_[m.colour].lanes == 1)
+    if (!m.first || !m.row)
+    {
+      continue;
+    }
+    RowColour& c = colours_[m.colour];
+    if (c.lanes == 1)
     {
       m.row = false;
-      colours_[m.colour].others.push_back(k);
+      c.lanes = 0;
+      c.others.push_back(k);
+      continue;
     }
-    else if (m.first && m.row)
-    {
-      row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, placed[m.colour]++});
-    }
-  }
-  for (std::size_t colour = 0; colour < used_colours_; ++colour)
-  {
-    colours_[colour].lanes = placed[colour];
+    row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, placed[m.colour]++});
   }
 }
 

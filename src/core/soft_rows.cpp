@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "scratch_buffer.h"
 #include "soft_rows_kernel.h"
 
 namespace collision2d
@@ -73,7 +74,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     batches += (c.lanes + kRowLanes - 1) / kRowLanes;
     c.end = batches;
   }
-  rows_.resize(batches);
+  resize_to_overwrite(rows_, batches);  // fill_lane writes every lane
   workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
     for (std::size_t r = begin; r < end; ++r)
     {

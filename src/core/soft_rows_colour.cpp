@@ -8,6 +8,8 @@
 #include <cstring>
 #include <utility>
 
+#include "scratch_buffer.h"
+
 namespace collision2d
 {
 namespace detail
@@ -103,7 +105,7 @@ std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
   return colour;
 }
 
-void SoftRows::expect_points(std::size_t points) { notes_.resize(points); }
+void SoftRows::expect_points(std::size_t points) { resize_to_overwrite(notes_, points); }
 
 void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
 {

@@ -5,6 +5,7 @@
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
+#include "scratch_buffer.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -66,11 +67,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   const double warm_scale = ctx.warm ? ctx.h / cache_h_ : 0.0;
   const bool friction = ctx.effects.friction;
   const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
-  if (rows > points_.capacity())
-  {
-    points_.reserve(2 * rows);  // geometric: a count that creeps up allocates rarely
-  }
-  points_.resize(rows);
+  resize_to_overwrite(points_, rows);  // add_manifold writes every row
   std::atomic<double> deepest{report.max_detected_penetration};
   workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
     double range_deepest = deepest.load();
@@ -149,8 +146,8 @@ void WorldImpl::find_mover_pairs()
   // workers (each writes its own pairs' slots); then, in pair order, what
   // each pair adds and where; then the points, split across the workers
   // again. The result is the same for any number of workers.
-  manifolds_.resize(pairs_.size());
-  collided_.resize(pairs_.size());
+  resize_to_overwrite(manifolds_, pairs_.size());  // collide_range writes every slot
+  resize_to_overwrite(collided_, pairs_.size());
   workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
 }
 
@@ -295,7 +292,7 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
 void WorldImpl::publish_contacts(bool soft_frame)
 {
   // One pass for all: the points are read once while they are in cache.
-  contacts_.resize(points_.size());
+  resize_to_overwrite(contacts_, points_.size());
   std::atomic<double> deepest{0.0};
   workers_.parallel_for(points_.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
     double range_deepest = 0.0;

@@ -23,6 +23,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "scratch_buffer.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -287,11 +288,7 @@ namespace
 template <typename T>
 void keep_copy(const std::vector<T>& from, std::vector<T>& to, WorkerPool& workers)
 {
-  if (to.capacity() < from.size())
-  {
-    to.reserve(2 * from.size());
-  }
-  to.resize(from.size());
+  resize_to_overwrite(to, from.size());
   workers.parallel_for(from.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
     std::copy(from.begin() + static_cast<std::ptrdiff_t>(begin), from.begin() + static_cast<std::ptrdiff_t>(end),
               to.begin() + static_cast<std::ptrdiff_t>(begin));

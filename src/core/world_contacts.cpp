@@ -51,7 +51,7 @@ double WorldImpl::frame_reach(const Body& b) const
   return along + std::abs(b.omega()) * b.radius() * dt;
 }
 
-void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report)
+void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report, const PointPreparation* prepare)
 {
   pose_bodies();
   margin_ = margin;
@@ -68,19 +68,34 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   const bool friction = ctx.effects.friction;
   const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
   resize_to_overwrite(points_, rows);  // add_manifold writes every row
+  if (prepare != nullptr)
+  {
+    soft_rows_.expect_points(rows);
+  }
   std::atomic<double> deepest{report.max_detected_penetration};
+  std::atomic<bool> bounces{false};
   workers_.parallel_for(pairs_.size(), kMinSharedPairs, [&](std::size_t begin, std::size_t end) {
     double range_deepest = deepest.load();
+    bool range_bounces = false;
     for (std::size_t k = begin; k < end; ++k)
     {
       if (collided_[k] == Collided::Hit)
       {
         range_deepest = std::max(range_deepest, add_manifold(k, warm_scale, friction));
+        if (prepare != nullptr)
+        {
+          range_bounces = prepare_pair_points(*prepare, k) || range_bounces;  // world_soft_step.cpp
+        }
       }
     }
     raise_to(deepest, range_deepest);
+    if (range_bounces)
+    {
+      bounces.store(true, std::memory_order_relaxed);
+    }
   });
   report.max_detected_penetration = deepest.load();
+  bounces_ = bounces.load();
   // Contacts kept aside still count (world_sleeping_contacts.cpp).
   if (!sleeping_contacts_.empty())
   {

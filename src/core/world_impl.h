@@ -25,6 +25,15 @@ namespace collision2d
 {
 namespace detail
 {
+/// Soft step: what a pair's points are prepared with (masses, friction and
+/// restitution from the effects; the contact's spring by whether both bodies move).
+struct PointPreparation
+{
+  ActiveEffects effects;
+  Softness moving;  ///< both bodies can move
+  Softness fixed;   ///< one cannot
+};
+
 struct WorldImpl
 {
   explicit WorldImpl(const WorldSettings& settings) : settings_(settings) {}
@@ -132,10 +141,15 @@ struct WorldImpl
 
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
-  void prepare_soft_points(const StepContext& ctx);
-  /// prepare_soft_points' per-point work on points [begin, end) (whole
-  /// pairs); returns whether any of them can bounce (e > 0).
+  /// The frame's masses and softness, for detect to prepare each pair's
+  /// points as it adds them.
+  PointPreparation point_preparation(const StepContext& ctx) const;
+  /// Pair k's points (added by add_manifold) prepared; whether any can bounce (e > 0).
+  bool prepare_pair_points(const PointPreparation& how, std::size_t k);
+  /// prepare_pair_points' soft terms on points [begin, end) (whole pairs).
   bool prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
+  /// The bodies' side of the preparation: poses at prepare and which bodies touch.
+  void prepare_soft_bodies();
   /// Body i's pose at prepare, no pose change yet, not stopped or touching.
   void reset_body_motion(std::size_t i);
   /// After move_body: a stopped body held, a free one on its parabola,
@@ -215,7 +229,9 @@ struct WorldImpl
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;
   /// Contacts at the current poses; pairs within `margin` (m) are kept too.
-  void detect(const StepContext& ctx, double margin, StepReport& report);
+  /// With `prepare` (the soft step), each pair's points are prepared as they
+  /// are added, while they are in cache, and bounces_ says whether any can bounce.
+  void detect(const StepContext& ctx, double margin, StepReport& report, const PointPreparation* prepare = nullptr);
   /// Broad and narrow phase of the pairs with a mover, within margin_.
   void find_mover_pairs();
   /// pairs_: the movers' pairs merged with the resting grid's, in (i, j) order.

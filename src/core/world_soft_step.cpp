@@ -39,9 +39,6 @@ constexpr double kStaticStiffnessFactor = 2.0;
 /// contacts follow its pose from lever arms fixed at prepare, which a faster
 /// spin would swing through the surface it touches.
 constexpr double kMaxTurnPerSubstep = 0.25 * 3.14159265358979323846;
-/// Points prepared together: a block's points (several cache lines each) stay
-/// in cache between the two preparations.
-constexpr std::size_t kPrepareBlockPoints = 64;
 
 }  // namespace
 
@@ -49,12 +46,14 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
 {
   ctx.first = true;
   ctx.warm = ctx.warm_available;
-  // 1. Collide once: contacts within the margin, impulses from the last frame.
+  // 1. Collide once: contacts within the margin, impulses from the last
+  // frame, each pair's points prepared (masses, softness) as they are added.
   swap_contact_buffers();                                 // world_step.cpp
-  detect(ctx, settings_.speculative_margin, report);      // world_contacts.cpp
-  // 2. Prepare: masses and Newton targets from the velocities before the frame.
+  const PointPreparation preparation = point_preparation(ctx);
+  detect(ctx, settings_.speculative_margin, report, &preparation);  // world_contacts.cpp
+  // 2. Prepare the bodies; the rows from the prepared points.
   load_velocities();                                      // world_solve.cpp
-  prepare_soft_points(ctx);
+  prepare_soft_bodies();
   if (rows_on())
   {
     soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
@@ -84,29 +83,23 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   cache_h_ = ctx.h;
 }
 
-void WorldImpl::prepare_soft_points(const StepContext& ctx)
+PointPreparation WorldImpl::point_preparation(const StepContext& ctx) const
 {
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
-  const Softness moving = make_softness(hertz, settings_.contact_damping_ratio, ctx.h);
-  const Softness fixed = make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h);
-  // Both preparations of a block of points run while it is in cache.
-  soft_rows_.expect_points(points_.size());
-  std::atomic<bool> bounces{false};
-  for_point_ranges([&](std::size_t begin, std::size_t end) {
-    bool range_bounces = false;
-    for (std::size_t block = begin; block < end;)
-    {
-      const std::size_t block_end = std::min(end, pair_boundary(block + kPrepareBlockPoints));
-      prepare_point_range(ctx.effects, block, block_end, false);  // world_solve.cpp: restitution aims per substep
-      range_bounces = prepare_soft_range(moving, fixed, block, block_end) || range_bounces;
-      block = block_end;
-    }
-    if (range_bounces)
-    {
-      bounces.store(true, std::memory_order_relaxed);
-    }
-  });
-  bounces_ = bounces.load();
+  return PointPreparation{ctx.effects, make_softness(hertz, settings_.contact_damping_ratio, ctx.h),
+                          make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h)};
+}
+
+bool WorldImpl::prepare_pair_points(const PointPreparation& how, std::size_t k)
+{
+  const std::size_t begin = pair_rows_[k];
+  const std::size_t end = pair_rows_[k + 1];
+  prepare_point_range(how.effects, begin, end, false);  // world_solve.cpp: restitution aims per substep
+  return prepare_soft_range(how.moving, how.fixed, begin, end);
+}
+
+void WorldImpl::prepare_soft_bodies()
+{
   stopped_.resize(bodies_.size());
   touching_.resize(bodies_.size());
   held_position_.resize(bodies_.size());

@@ -90,7 +90,7 @@ void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)
   const std::size_t parts = detail::runner_parts(runner, boxes.size());
   corners_.assign(parts, LowCorner{});
   const auto lowest = [&](std::size_t part) {
-    LowCorner& c = corners_[part];
+    LowCorner c;  // a local: the parts' corners share a cache line
     for (std::size_t i = detail::part_begin(boxes.size(), part, parts);
          i < detail::part_begin(boxes.size(), part + 1, parts); ++i)
     {
@@ -99,6 +99,7 @@ void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)
         c.lower(boxes[i].lo.x, boxes[i].lo.y);
       }
     }
+    corners_[part] = c;
   };
   if (parts == 1)
   {

@@ -95,7 +95,10 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     }
   });
   report.max_detected_penetration = deepest.load();
-  bounces_ = bounces.load();
+  if (prepare != nullptr)
+  {
+    bounces_ = bounces.load();
+  }
   // Contacts kept aside still count (world_sleeping_contacts.cpp).
   if (!sleeping_contacts_.empty())
   {

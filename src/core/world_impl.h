@@ -25,15 +25,6 @@ namespace collision2d
 {
 namespace detail
 {
-/// Soft step: what a pair's points are prepared with (masses, friction and
-/// restitution from the effects; the contact's spring by whether both bodies move).
-struct PointPreparation
-{
-  ActiveEffects effects;
-  Softness moving;  ///< both bodies can move
-  Softness fixed;   ///< one cannot
-};
-
 struct WorldImpl
 {
   explicit WorldImpl(const WorldSettings& settings) : settings_(settings) {}

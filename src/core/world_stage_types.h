@@ -1,7 +1,7 @@
 // Internal to the core: what the World's stages hand each other besides the
-// World's own state (world_impl.h): the step's context, the body census, the
-// motion a rollback puts back, the thresholds for sharing a stage among the
-// workers, and the test hooks.
+// World's own state (world_impl.h): the step's context, the soft step's point
+// preparation, the body census, the motion a rollback puts back, the
+// thresholds for sharing a stage among the workers, and the test hooks.
 #pragma once
 
 #include <atomic>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "collision2d/world.h"
+#include "contact_kernel.h"
 
 namespace collision2d
 {
@@ -24,6 +25,15 @@ struct StepContext
   bool warm_available = false; ///< warm starting on and a cache to start from
   bool first = false;          ///< first substep of the frame
   bool warm = false;           ///< this substep starts from cached impulses
+};
+
+/// Soft step: what a pair's points are prepared with (masses, friction and
+/// restitution from the effects; the contact's spring by whether both bodies move).
+struct PointPreparation
+{
+  ActiveEffects effects;
+  Softness moving;  ///< both bodies can move
+  Softness fixed;   ///< one cannot
 };
 
 /// One soft pass's parameters (world_soft_solve.cpp).

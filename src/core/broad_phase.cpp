@@ -10,6 +10,7 @@
 // cells they cover instead (broad_phase_grid.cpp).
 #include "collision2d/broad_phase.h"
 #include "broad_phase_parts.h"
+#include "scratch_buffer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -260,11 +261,8 @@ void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs)
     end += start;
     start = end;  // one past the group's end, decremented while scattering
   }
-  if (sorted_pairs_.capacity() < pairs.size())
-  {
-    sorted_pairs_.reserve(2 * pairs.size());  // both buffers grow geometrically: a creeping count allocates rarely
-  }
-  sorted_pairs_.resize(pairs.size());
+  // Both buffers grow geometrically (they are swapped): a creeping count allocates rarely.
+  detail::resize_to_overwrite(sorted_pairs_, pairs.size());  // the scatter writes every slot
   for (const BodyPair& p : pairs)
   {
     sorted_pairs_[--pair_start_[p.first]] = p;

@@ -175,11 +175,7 @@ void WorldImpl::merge_pairs()
 {
   std::sort(resting_pairs_.begin(), resting_pairs_.end());
   const std::size_t count = mover_pairs_.size() + resting_pairs_.size();
-  if (count > pairs_.capacity())
-  {
-    pairs_.reserve(2 * count);  // geometric: a count that creeps up allocates rarely
-  }
-  pairs_.resize(count);
+  resize_to_overwrite(pairs_, count);  // std::merge writes every pair
   std::merge(mover_pairs_.begin(), mover_pairs_.end(), resting_pairs_.begin(), resting_pairs_.end(), pairs_.begin());
 }
 

@@ -11,6 +11,14 @@ namespace collision2d
 {
 namespace detail
 {
+namespace
+{
+/// Rest time is a sum of frames, and such sums fall short by rounding:
+/// thirty frames of 1/60 s add up to 0.49999999999999994 s. A body has
+/// rested sleep_time once it is within this fraction of a frame of it.
+constexpr double kRestRoundingFrames = 1e-6;
+}  // namespace
+
 void WorldImpl::update_sleep()
 {
   // Only the bodies this frame visits can change: the others sleep, or do
@@ -39,10 +47,11 @@ void WorldImpl::update_sleep()
     }
   }
   bool fell_asleep = false;
+  const double rested_enough = settings_.sleep_time - kRestRoundingFrames * settings_.dt;
   for (std::size_t k = 0; k < visits; ++k)
   {
     const std::size_t i = visited(k);
-    if (bodies_[i].type() == BodyType::Dynamic && rest_time_[i] < settings_.sleep_time)
+    if (bodies_[i].type() == BodyType::Dynamic && rest_time_[i] < rested_enough)
     {
       island_awake_[island_root(island_, i)] = true;
     }

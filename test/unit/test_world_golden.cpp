@@ -134,14 +134,14 @@ const Golden kGolden[] = {
        s.sleeping = Toggle::On;
        s.sleep_time = 0.1;
      },
-     150, 0xdbd82c17df00f5aaULL},
+     150, 0x825a6730d85f8f72ULL},
     {"pyramid_soft_step", Pipeline::Soft, [] { return scenes::pyramid(10); }, defaults, 120, 0xd46cbcbee67a9a1cULL},
     {"pyramid_soft_step_sleeping", Pipeline::Soft, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.sleeping = Toggle::On;
        s.sleep_time = 0.1;
      },
-     150, 0x6ecd31a7f8bf5bb2ULL},
+     150, 0xa0cf7cd9de15670bULL},
     {"pyramid_exact_soft_step", Pipeline::Soft, [] { return scenes::pyramid(5); },
      [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0xe6ab7e42849db9e2ULL},
     {"heavy_on_light_exact_soft_step", Pipeline::Soft, [] { return scenes::heavy_on_light(1e6); },

@@ -3,6 +3,7 @@
 // the island, which then wakes whole in that frame. A refused step and a
 // snapshot round trip must carry the kept contacts exactly.
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -109,6 +110,39 @@ TEST(WorldSleeping, KeptContactsAreReportedUnchanged)
     const StepReport report = world.step(30);
     EXPECT_TRUE(same_contacts(world.contacts(), kept)) << "soft " << soft;
     EXPECT_EQ(report.contact_count, kept.size()) << "soft " << soft;
+  }
+}
+
+TEST(WorldSleeping, AnIslandSleepsOnTheFrameThatCompletesItsRest)
+{
+  // Rest is counted from the outputs: a frame whose end speeds are under the
+  // thresholds rests. The island must fall asleep on the frame that brings
+  // its rest to sleep_time, although sums of dt round below it (thirty
+  // frames of 1/60 s add up to 0.49999999999999994 s).
+  for (const bool soft : {true, false})
+  {
+    for (const double sleep_time : {0.1, 0.2, 0.5, 1.5})
+    {
+      Scene scene = scenes::column(1);
+      scene.settings.sleeping = Toggle::On;
+      scene.settings.sleep_time = sleep_time;
+      scene.settings.soft_step = soft;
+      World world = make_world(scene);
+      const BodyId box = dynamic_ids(world).front();
+      const WorldSettings& s = world.settings();
+      int rested = 0;  // frames of rest before the one it falls asleep in
+      int frame = 0;
+      for (; frame < kSettleFrames && !world.is_sleeping(box); ++frame)
+      {
+        world.step(1);
+        const Body& b = world.body(box);
+        const bool still = length_sq(b.velocity()) <= s.sleep_linear_speed * s.sleep_linear_speed &&
+                           b.omega() * b.omega() <= s.sleep_angular_speed * s.sleep_angular_speed;
+        rested = world.is_sleeping(box) ? rested : (still ? rested + 1 : 0);
+      }
+      ASSERT_TRUE(world.is_sleeping(box)) << "soft " << soft << ", sleep_time " << sleep_time;
+      EXPECT_EQ(rested + 1, std::lround(sleep_time / s.dt)) << "soft " << soft << ", sleep_time " << sleep_time;
+    }
   }
 }
 

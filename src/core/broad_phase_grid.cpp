@@ -219,9 +219,13 @@ void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyP
   }
   part_pairs_.resize(parts);
   detail::run_parts(*runner, parts, [&](std::size_t part) {
-    std::vector<BodyPair>& found = part_pairs_[part];
+    // A local list, its storage kept from the last call: the parts' list
+    // headers share a cache line, which every pair found would write.
+    std::vector<BodyPair> found;
+    found.swap(part_pairs_[part]);
     found.clear();
     pairs_in_buckets(boxes, buckets * part / parts, buckets * (part + 1) / parts, found);
+    found.swap(part_pairs_[part]);
   });
   for (const std::vector<BodyPair>& found : part_pairs_)
   {

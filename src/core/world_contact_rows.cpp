@@ -75,8 +75,9 @@ bool WorldImpl::place_pairs_in_parts(bool cached)
 
 void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cached)
 {
-  PairPlacement& placed = placements_[part];
-  placed = PairPlacement{};
+  // A local, stored at the end: the parts' placements share a cache line,
+  // which each check and lookup below would otherwise write.
+  PairPlacement placed;
   const std::size_t c = cache_.size();
   for (std::size_t m = std::max<std::size_t>(1, c * part / parts); m < c * (part + 1) / parts; ++m)
   {
@@ -96,6 +97,7 @@ void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cache
       placed.last_lookup = pair_cache_[k];
     }
   }
+  placements_[part] = placed;
 }
 
 void WorldImpl::place_pairs_in_order(bool cached)

@@ -260,11 +260,13 @@ void WorldImpl::require_finite_state()
   workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
     for (std::size_t part = begin; part < end; ++part)
     {
-      for (std::size_t k = visits * part / parts; k < visits * (part + 1) / parts && first_bad_[part] == n; ++k)
+      std::size_t bad = n;  // a local: the parts' answers share a cache line
+      for (std::size_t k = visits * part / parts; k < visits * (part + 1) / parts && bad == n; ++k)
       {
         const std::size_t i = visited(k);
-        first_bad_[part] = non_finite_state_field(bodies_[i]) == nullptr ? n : i;
+        bad = non_finite_state_field(bodies_[i]) == nullptr ? n : i;
       }
+      first_bad_[part] = bad;
     }
   });
   for (std::size_t i : first_bad_)

@@ -758,6 +758,19 @@ def guidance_scene(runs, default, scene, title, unit, threshold, advice):
     return line + (". " + advice if advice else "") + "."
 
 
+def incline_substep_advice(runs):
+    """The soft step's substep counts at which the held box slides, if any."""
+    slid = sorted((r for r in ours(runs, "incline", pipeline="soft")
+                   if r["part"] == "world" and r["knob"] == "substeps" and finite(r["err"])
+                   and r["err"] > INCLINE_TARGET), key=lambda r: r["substeps"])
+    if not slid:
+        return None
+    counts = " and ".join(str(r["substeps"]) for r in slid)
+    return (f"On a slope that friction must hold, give the soft step more than {slid[-1]['substeps']} substeps: "
+            f"at {counts} the box slid ({fmt(slid[0]['err'])} m/s^2), because its first frame rocks it on its "
+            f"corners, its friction reaches the static bound and the kinetic coefficient then applies")
+
+
 def guidance_mass_ratio(runs, default):
     scenes = [s for s in scene_names(runs) if s.startswith("heavy_on_light_")]
     if not scenes:
@@ -812,7 +825,7 @@ def guidance_section(runs, stacks, default):
                             "", GAS_TARGET, None),
              guidance_scene(runs, default, "newtons_cradle", "Newton's cradle", "", GAS_TARGET, None),
              guidance_scene(runs, default, "incline", "Resting on an incline (friction holds)", " m/s^2",
-                            INCLINE_TARGET, None),
+                            INCLINE_TARGET, incline_substep_advice(runs)),
              guidance_scene(runs, default, "incline_slide", "Sliding down an incline", " m/s^2", INCLINE_TARGET,
                             None),
              guidance_mass_ratio(runs, default), guidance_realtime(runs, default)]

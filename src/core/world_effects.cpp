@@ -37,18 +37,13 @@ BodyCensus WorldImpl::take_census()
   // with their grid and only the movers are counted again.
   const bool movers_only = movers_current();
   const std::size_t n = movers_only ? movers_.size() : bodies_.size();
-  const std::size_t parts = n < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
-  census_parts_.assign(parts, BodyCensus{});
-  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t part = begin; part < end; ++part)
+  answer_in_parts(n, kMinSharedBodies, census_parts_, [&](std::size_t begin, std::size_t end) {
+    BodyCensus counted;
+    for (std::size_t k = begin; k < end; ++k)
     {
-      BodyCensus counted;  // a local: the parts' counts share a cache line
-      for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
-      {
-        count_body(movers_only ? movers_[k] : k, counted);
-      }
-      census_parts_[part] = counted;
+      count_body(movers_only ? movers_[k] : k, counted);
     }
+    return counted;
   });
   BodyCensus census = movers_only ? resting_census_ : BodyCensus{};
   for (const BodyCensus& part : census_parts_)

@@ -73,6 +73,22 @@ struct WorldImpl
     workers_.parallel_for(points_.size(), kMinSharedPoints,
                           [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
   }
+  /// Splits [0, count) into parts, one per worker (one part when count <
+  /// min_shared), and stores answer(begin, end) of each part in `answers`, in
+  /// part order. A part works in locals and stores once: the parts' slots
+  /// share a cache line, which writing them item by item would bounce.
+  template <class T, class F>
+  void answer_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, F answer)
+  {
+    const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
+    answers.resize(parts);
+    workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t part = begin; part < end; ++part)
+      {
+        answers[part] = answer(count * part / parts, count * (part + 1) / parts);
+      }
+    });
+  }
   /// The fold best = std::max(best, value(k)) over k in [0, count) from
   /// `start`, in parts on the workers when count >= min_shared. std::max keeps
   /// the earlier of equal values and skips a NaN value, so the parts' results
@@ -80,18 +96,13 @@ struct WorldImpl
   template <class F>
   double max_over(std::size_t count, std::size_t min_shared, double start, F value)
   {
-    const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
-    partial_max_.resize(parts);
-    workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t w = begin; w < end; ++w)
+    answer_in_parts(count, min_shared, partial_max_, [&](std::size_t begin, std::size_t end) {
+      double best = start;
+      for (std::size_t k = begin; k < end; ++k)
       {
-        double best = start;
-        for (std::size_t k = count * w / parts; k < count * (w + 1) / parts; ++k)
-        {
-          best = std::max(best, value(k));
-        }
-        partial_max_[w] = best;
+        best = std::max(best, value(k));
       }
+      return best;
     });
     double best = start;
     for (double part : partial_max_)

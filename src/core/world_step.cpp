@@ -255,19 +255,16 @@ void WorldImpl::require_finite_state()
   // Only the bodies the frame visited can have changed (for_each_body).
   const std::size_t n = bodies_.size();
   const std::size_t visits = visited_count();
-  const std::size_t parts = visits < kMinSharedBodies ? 1 : static_cast<std::size_t>(workers_.workers());
-  first_bad_.assign(parts, n);
-  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t part = begin; part < end; ++part)
+  answer_in_parts(visits, kMinSharedBodies, first_bad_, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      std::size_t bad = n;  // a local: the parts' answers share a cache line
-      for (std::size_t k = visits * part / parts; k < visits * (part + 1) / parts && bad == n; ++k)
+      const std::size_t i = visited(k);
+      if (non_finite_state_field(bodies_[i]) != nullptr)
       {
-        const std::size_t i = visited(k);
-        bad = non_finite_state_field(bodies_[i]) == nullptr ? n : i;
+        return i;
       }
-      first_bad_[part] = bad;
     }
+    return n;
   });
   for (std::size_t i : first_bad_)
   {

@@ -14,8 +14,8 @@ namespace detail
 {
 namespace
 {
-/// Row manifolds (lanes) below which filling or emptying the batches stays on
-/// the calling thread: a lane is a few dozen copies.
+/// Row manifolds (lanes) below which filling the batches stays on the
+/// calling thread: a lane is a few dozen copies.
 constexpr std::size_t kMinSharedLanes = 512;
 
 struct ScalarOps
@@ -75,12 +75,15 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     c.end = batches;
   }
   resize_to_overwrite(rows_, batches);  // fill_lane writes every lane
+  lane_of_.assign(points.size(), kNoLane);
   workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
     for (std::size_t r = begin; r < end; ++r)
     {
       const RowSlot& row = row_slots_[r];
-      const std::size_t batch = colours_[row.colour].begin + row.slot / kRowLanes;
-      fill_lane(rows_[batch], static_cast<int>(row.slot % kRowLanes), points, row.first, friction);
+      const std::size_t lane = (colours_[row.colour].begin * kRowLanes + row.slot);
+      fill_lane(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction);
+      lane_of_[row.first] = static_cast<std::uint32_t>(2 * lane);
+      lane_of_[row.first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
     }
   });
   for (std::size_t colour = 0; colour < used_colours_; ++colour)
@@ -157,22 +160,13 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
 
 RowPoint* SoftRows::row_point_of(std::size_t k, int& lane)
 {
-  // row_slots_ is in point order: the last manifold starting at or before k
-  // holds k if it starts there or k is its second point.
-  const auto after = std::upper_bound(row_slots_.begin(), row_slots_.end(), k,
-                                      [](std::size_t point, const RowSlot& row) { return point < row.first; });
-  if (after == row_slots_.begin())
+  const std::uint32_t at = k < lane_of_.size() ? lane_of_[k] : kNoLane;
+  if (at == kNoLane)
   {
     return nullptr;
   }
-  const RowSlot& row = *(after - 1);
-  const std::size_t which = k - row.first;
-  if (which > 1)
-  {
-    return nullptr;
-  }
-  lane = static_cast<int>(row.slot % kRowLanes);
-  return &rows_[colours_[row.colour].begin + row.slot / kRowLanes].point[which];
+  lane = static_cast<int>(at / 2 % kRowLanes);
+  return &rows_[at / (2 * kRowLanes)].point[at % 2];
 }
 
 double* SoftRows::normal_impulse_of(std::size_t k)
@@ -212,33 +206,7 @@ void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocit
              [&](RowBatch& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); });
 }
 
-void SoftRows::unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity,
-                      WorkerPool& workers) const
-{
-  velocity.pop_back();
-  // In point order, so the points are written in turn and the lanes read
-  // where they lie; each manifold's points are written by one worker.
-  workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t r = begin; r < end; ++r)
-    {
-      const RowSlot& row = row_slots_[r];
-      const std::size_t batch = colours_[row.colour].begin + row.slot / kRowLanes;
-      unpack_lane(rows_[batch], static_cast<int>(row.slot % kRowLanes), points, row.first);
-    }
-  });
-}
-
-void SoftRows::unpack_lane(const RowBatch& r, int j, std::vector<ContactPoint>& points, std::size_t first)
-{
-  for (int k = 0; k < 2; ++k)
-  {
-    ContactPoint& c = points[first + k];
-    const RowPoint& q = r.point[k];
-    c.lambda_n = q.normal[j];
-    c.lambda_t = q.tangent[j];
-    c.sliding = q.sliding[j] != 0.0;
-  }
-}
+void SoftRows::finish(std::vector<BodyVelocity>& velocity) const { velocity.pop_back(); }
 
 }  // namespace detail
 }  // namespace collision2d

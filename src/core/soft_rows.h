@@ -102,9 +102,23 @@ public:
   /// packed: its lane of a row, or nullptr when its manifold is solved on
   /// the point verbs (the point's own field is then current).
   double* normal_impulse_of(std::size_t k);
-  /// The rows' impulses and friction state back into their points, batches
-  /// shared among the workers; drops the spare body.
-  void unpack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, WorkerPool& workers) const;
+  /// After the passes: drops the spare body from `velocity`. The rows stay
+  /// packed until unpack_point has read each point back.
+  void finish(std::vector<BodyVelocity>& velocity) const;
+  /// Point k's impulses and friction state from its row, if it has one: the
+  /// caller visits each point once, so each is read and written in one pass.
+  void unpack_point(std::size_t k, ContactPoint& p) const
+  {
+    const std::uint32_t at = lane_of_[k];
+    if (at != kNoLane)
+    {
+      const RowPoint& q = rows_[at / (2 * kRowLanes)].point[at % 2];
+      const std::size_t lane = at / 2 % kRowLanes;
+      p.lambda_n = q.normal[lane];
+      p.lambda_t = q.tangent[lane];
+      p.sliding = q.sliding[lane] != 0.0;
+    }
+  }
 
 private:
   /// Colours tried before a manifold goes to the overflow: a box in a stack
@@ -134,7 +148,6 @@ private:
   std::size_t take_colour(std::uint32_t a, std::uint32_t b);
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
-  static void unpack_lane(const RowBatch& batch, int lane, std::vector<ContactPoint>& points, std::size_t first);
   /// Point k's row point and lane, or nullptr when its manifold has no row.
   RowPoint* row_point_of(std::size_t k, int& lane);
 
@@ -151,6 +164,10 @@ private:
     std::uint32_t slot = 0;
   };
   std::vector<RowSlot> row_slots_;  ///< scratch, in point order
+  /// Per point: where its row keeps it, (batch * kRowLanes + lane) * 2 + its
+  /// place in the manifold; kNoLane for a point without a row.
+  std::vector<std::uint32_t> lane_of_;
+  static constexpr std::uint32_t kNoLane = UINT32_MAX;
   std::vector<Note> notes_;  ///< per point, written at prepare
   /// Scratch: per manifold, its height key (high half) and its first point
   /// (low half), sorted.

@@ -305,14 +305,19 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
 
 void WorldImpl::publish_contacts(bool soft_frame)
 {
-  // One pass for all: the points are read once while they are in cache.
+  // One pass for all: each point is read (and written) once while in cache.
   resize_to_overwrite(contacts_, points_.size());
   std::atomic<double> deepest{0.0};
+  const bool packed = soft_frame && rows_on();
   workers_.parallel_for(points_.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
     double range_deepest = 0.0;
     for (std::size_t k = begin; k < end; ++k)
     {
       ContactPoint& row = points_[k];
+      if (packed)
+      {
+        soft_rows_.unpack_point(k, row);
+      }
       if (soft_frame && row.active)
       {
         const Vec2 offset = anchor_offset(row, velocity_);  // read once for both

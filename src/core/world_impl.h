@@ -284,8 +284,9 @@ struct WorldImpl
   /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
   /// The frame's points become contacts_ (the next frame's warm-start cache).
-  /// After a soft frame each active point's slip is carried first
-  /// (carry_slip) and the deepest followed gap kept for the report.
+  /// After a soft frame each point first takes its impulses back from its
+  /// row, an active point's slip is carried (carry_slip) and the deepest
+  /// followed gap kept for the report.
   void publish_contacts(bool soft_frame = false);
   double measure_penetration() const;
 

@@ -72,10 +72,11 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     ++report.substeps;
   }
   turn_bodies();
-  // 4. The impulses kept for next frame.
+  // 4. The impulses kept for next frame: publishing reads each point's back
+  // from its row.
   if (rows_on())
   {
-    soft_rows_.unpack(points_, velocity_, workers_);
+    soft_rows_.finish(velocity_);
   }
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();

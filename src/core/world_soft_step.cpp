@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "turn.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -306,12 +307,7 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
   }
   BodyVelocity& state = velocity_[i];
   state.moved = b.position() - prepared_position_[i];
-  // A body that has not turned (static, asleep, not spinning) needs no
-  // trigonometry: cos(+0) and sin(+0) are exactly 1 and +0 (sin(-0) is -0).
-  const double turned = frame_theta_[i] - prepared_theta_[i];
-  const bool still = turned == 0.0 && !std::signbit(turned);
-  state.turned_cos = still ? 1.0 : std::cos(turned);
-  state.turned_sin = still ? 0.0 : std::sin(turned);
+  turn_of(frame_theta_[i] - prepared_theta_[i], state.turned_cos, state.turned_sin);
 }
 
 double WorldImpl::followed_penetration()

@@ -44,11 +44,12 @@ inline BodyVelocity body_velocity(Vec2 v, double omega, double inv_mass, double 
 /// Soft-constraint coefficients of a contact, from a stiffness (Hz), a
 /// damping ratio and the substep: a contact acts as a damped spring, so a
 /// resting stack neither sinks nor is kicked apart by its corrections.
+/// The update scales the whole rigid impulse by mass_scale, so the part of
+/// the accumulated impulse a spring lets go (1 - mass_scale) needs no field.
 struct Softness
 {
-  double bias_rate = 0.0;      ///< 1/s: push-out speed per metre of penetration
-  double mass_scale = 1.0;     ///< dimensionless
-  double impulse_scale = 0.0;  ///< dimensionless
+  double bias_rate = 0.0;   ///< 1/s: push-out speed per metre of penetration
+  double mass_scale = 1.0;  ///< dimensionless
 };
 Softness make_softness(double hertz, double damping_ratio, double h);
 

@@ -19,13 +19,12 @@ Softness make_softness(double hertz, double damping_ratio, double h)
 {
   if (hertz == 0.0)
   {
-    return Softness{0.0, 1.0, 0.0};  // rigid
+    return Softness{0.0, 1.0};  // rigid
   }
   const double omega = 2.0 * kPi * hertz;
   const double a1 = 2.0 * damping_ratio + h * omega;
   const double a2 = h * omega * a1;
-  const double a3 = 1.0 / (1.0 + a2);
-  return Softness{omega / a1, a2 * a3, a3};
+  return Softness{omega / a1, a2 * (1.0 / (1.0 + a2))};
 }
 
 Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state)

@@ -17,6 +17,7 @@ import datetime
 import math
 import os
 import platform
+import statistics
 import subprocess
 import tempfile
 
@@ -86,8 +87,9 @@ def median_runs(rows):
         groups.setdefault((r["engine"], r.get("scene"), r["bodies"], r.get("workers", "1")), []).append(r)
     picked = []
     for runs in groups.values():
+        in_order = [number(r["ms_per_step"]) for r in runs]  # one per round, as the script ran them
         runs = sorted(runs, key=lambda r: number(r["ms_per_step"]))
-        picked.append(dict(runs[(len(runs) - 1) // 2], rounds=len(runs)))
+        picked.append(dict(runs[(len(runs) - 1) // 2], rounds=len(runs), round_times=in_order))
     return picked
 
 
@@ -406,10 +408,24 @@ def plot_throughput(scaling, png, workdir):
 
 
 def worker_speedups(scaling, scene):
-    """(bodies, time with 1 worker / time with 2) for each size run both ways, ascending."""
-    one = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "1")}
-    two = {r["bodies"]: number(r["ms_per_step"]) for r in throughput_rows(scaling, scene, "collision2d", "2")}
-    return sorted((number(b), one[b] / two[b]) for b in one if b in two and two[b] > 0)
+    """(bodies, time with 1 worker / time with 2) for each size run both ways, ascending: the
+    median over the rounds of each round's own ratio (its 1-worker run and the 2-worker run right
+    after it), so a machine that slows down between rounds does not skew it."""
+    one = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "1")}
+    two = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "2")}
+    speedups = []
+    for b in one:
+        if b not in two:
+            continue
+        pairs = list(zip(one[b].get("round_times", []), two[b].get("round_times", [])))
+        if pairs and len(one[b]["round_times"]) == len(two[b]["round_times"]):
+            ratios = sorted(t1 / t2 for t1, t2 in pairs if t2 > 0)
+            if ratios:
+                speedups.append((number(b), statistics.median(ratios)))
+            continue
+        if number(two[b]["ms_per_step"]) > 0:
+            speedups.append((number(b), number(one[b]["ms_per_step"]) / number(two[b]["ms_per_step"])))
+    return sorted(speedups)
 
 
 def plot_workers(scaling, png, workdir):
@@ -1424,7 +1440,10 @@ Ours with 1 and 2 workers (`WorldSettings::workers`), Box2D v3 on one
 thread when it is in the run; one process per size, so the peak memory is
 that size's alone. Ours runs {throughput_rounds(scaling)} rounds alternating 1 and 2
 workers, and each row is the round of median time: a second core busy for
-a moment slows only the runs that need it. Two more scenes, with each
+a moment slows only the runs that need it. A speed-up of 2 workers over 1
+is the median over the rounds of each round's own ratio (its 1-worker run
+and the 2-worker run right after it): this machine's speed drifts within
+minutes, and a ratio of two medians taken at different times can carry it. Two more scenes, with each
 engine's own sleeping on and timed after 10 s: `resting`, the pyramid
 fallen asleep, and `stirred`, the same with one kinematic disk sliding
 along the ground far from it, so some body moves every frame and the rest

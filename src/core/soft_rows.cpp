@@ -80,7 +80,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
     for (std::size_t r = begin; r < end; ++r)
     {
       const RowSlot& row = row_slots_[r];
-      const std::size_t lane = (colours_[row.colour].begin * kRowLanes + row.slot);
+      const std::size_t lane = colours_[row.colour].begin * kRowLanes + row.slot;  // over all batches
       fill_lane(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction);
       lane_of_[row.first] = static_cast<std::uint32_t>(2 * lane);
       lane_of_[row.first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
@@ -206,7 +206,7 @@ void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocit
              [&](RowBatch& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); });
 }
 
-void SoftRows::finish(std::vector<BodyVelocity>& velocity) const { velocity.pop_back(); }
+void SoftRows::drop_spare_body(std::vector<BodyVelocity>& velocity) const { velocity.pop_back(); }
 
 }  // namespace detail
 }  // namespace collision2d

@@ -102,9 +102,9 @@ public:
   /// packed: its lane of a row, or nullptr when its manifold is solved on
   /// the point verbs (the point's own field is then current).
   double* normal_impulse_of(std::size_t k);
-  /// After the passes: drops the spare body from `velocity`. The rows stay
-  /// packed until unpack_point has read each point back.
-  void finish(std::vector<BodyVelocity>& velocity) const;
+  /// After the passes: the spare body that pack added leaves `velocity`.
+  /// The rows stay packed until unpack_point has read each point back.
+  void drop_spare_body(std::vector<BodyVelocity>& velocity) const;
   /// Point k's impulses and friction state from its row, if it has one: the
   /// caller visits each point once, so each is read and written in one pass.
   void unpack_point(std::size_t k, ContactPoint& p) const

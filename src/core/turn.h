@@ -9,7 +9,7 @@ namespace collision2d
 namespace detail
 {
 /// Below this angle (rad) turn_of sums the Taylor series to the x^10 term:
-/// the first term left out is under 1e-40 of the result, so the sum is
+/// the first term left out is under 1e-37 of the result, so the sum is
 /// within an ulp of the library's (test_turn.cpp). A resting body turns far
 /// less than this in a frame, and the library call cost more than the rest
 /// of its move.

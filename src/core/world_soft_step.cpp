@@ -77,7 +77,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // from its row.
   if (rows_on())
   {
-    soft_rows_.finish(velocity_);
+    soft_rows_.drop_spare_body(velocity_);
   }
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();

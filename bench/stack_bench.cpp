@@ -12,11 +12,13 @@
 // the default; soft_step is always set, whichever pipeline is the default),
 // each peer with its own defaults but 4 substeps and sleeping off
 // (PeerVariant::Substepped). Per scene and engine it prints ms/frame (median
-// of N fresh runs of T simulated seconds, wall and thread CPU), then one run
-// to the longest S: drift from 1 s to each S (largest displacement of any
-// dynamic body between the two instants) and the largest penetration up to
-// each S (our detection on the engine's poses, as every benchmark measures
-// it), and each engine's time over Box2D v3's. A table goes to stdout (the
+// of N fresh runs of T simulated seconds, wall and thread CPU; the engines
+// take turns, one run each per round), then one run to the longest S: drift
+// from 1 s to each S (largest displacement of any dynamic body between the
+// two instants) and the largest penetration up to each S (our detection on
+// the engine's poses, as every benchmark measures it), and each engine's time
+// over Box2D v3's: the median over the rounds of that round's ratio, so a
+// machine whose speed drifts between rounds does not skew it. A table goes to stdout (the
 // packaged Chipmunk prints a banner there too), CSV rows to FILE; the
 // pipeline column says which pipeline a row of ours ran (soft, fx2d) and
 // default_pipeline which one a default WorldSettings uses in this build.
@@ -67,9 +69,14 @@ struct Checkpoint
 struct EngineResult
 {
   EngineKind kind = EngineKind::Collision2d;
+  Pipeline pipeline_asked = Pipeline::Fx2d;
   std::string pipeline;  ///< ours: "soft" or "fx2d"; peers: empty
+  std::vector<double> wall_rounds;  ///< ms/frame of each round's run
+  std::vector<double> cpu_rounds;
   double ms_per_frame = 0.0;
   double cpu_ms_per_frame = 0.0;
+  double wall_over_v3 = NAN;  ///< median over the rounds of this run's time over Box2D v3's
+  double cpu_over_v3 = NAN;
   std::vector<Checkpoint> checkpoints;
 };
 
@@ -242,25 +249,74 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
   return out;
 }
 
-EngineResult measure(const BenchScene& scene, EngineKind kind, Pipeline pipeline, const Arguments& args)
+/// One fresh run of each engine per round, the engines in turn; then each
+/// one's medians and its ratios to Box2D v3's run of the same round.
+void time_in_rounds(const BenchScene& scene, std::vector<EngineResult>& results, const Arguments& args)
 {
-  const EngineConfig config = config_for(kind, scene, pipeline);
-  EngineResult r;
-  r.kind = kind;
-  r.pipeline = kind == EngineKind::Collision2d ? pipeline_name(config.settings) : "";
-  std::vector<double> wall;
-  std::vector<double> cpu;
-  for (int i = 0; i < args.repetitions; ++i)
+  for (int round = 0; round < args.repetitions; ++round)
   {
-    std::unique_ptr<Engine> engine = make_engine(scene.scene, config);
-    const FrameTime t = time_frames(*engine, frames_for(args.timing_seconds, scene.scene.settings.dt));
-    wall.push_back(t.wall_ms);
-    cpu.push_back(t.cpu_ms);
+    for (EngineResult& r : results)
+    {
+      std::unique_ptr<Engine> engine = make_engine(scene.scene, config_for(r.kind, scene, r.pipeline_asked));
+      const FrameTime t = time_frames(*engine, frames_for(args.timing_seconds, scene.scene.settings.dt));
+      r.wall_rounds.push_back(t.wall_ms);
+      r.cpu_rounds.push_back(t.cpu_ms);
+    }
   }
-  r.ms_per_frame = median(wall);
-  r.cpu_ms_per_frame = median(cpu);
-  r.checkpoints = accuracy_run(scene, config, args.seconds);
-  return r;
+  const EngineResult* v3 = nullptr;
+  for (EngineResult& r : results)
+  {
+    r.ms_per_frame = median(r.wall_rounds);
+    r.cpu_ms_per_frame = median(r.cpu_rounds);
+    v3 = r.kind == EngineKind::Box2dV3 ? &r : v3;
+  }
+  const auto over = [&](const std::vector<double>& ours, const std::vector<double>& theirs) {
+    std::vector<double> ratios;
+    for (std::size_t i = 0; i < ours.size(); ++i)
+    {
+      if (theirs[i] > 0.0)
+      {
+        ratios.push_back(ours[i] / theirs[i]);
+      }
+    }
+    return ratios.empty() ? NAN : median(ratios);
+  };
+  for (EngineResult& r : results)
+  {
+    if (v3 != nullptr)
+    {
+      r.wall_over_v3 = over(r.wall_rounds, v3->wall_rounds);
+      r.cpu_over_v3 = over(r.cpu_rounds, v3->cpu_rounds);
+    }
+  }
+}
+
+std::vector<EngineResult> measure(const BenchScene& scene, const Arguments& args)
+{
+  // Ours once per pipeline asked for; a peer once.
+  std::vector<EngineResult> results;
+  for (EngineKind kind : args.engines)
+  {
+    const std::vector<Pipeline> pipelines =
+        kind == EngineKind::Collision2d ? args.pipelines : std::vector<Pipeline>{Pipeline::Fx2d};
+    for (Pipeline pipeline : pipelines)
+    {
+      EngineResult r;
+      r.kind = kind;
+      r.pipeline_asked = pipeline;
+      r.pipeline = kind == EngineKind::Collision2d ? pipeline_name(config_for(kind, scene, pipeline).settings) : "";
+      results.push_back(r);
+    }
+  }
+  std::fprintf(stderr, "stack %s: timing, %d rounds\n", scene.name.c_str(), args.repetitions);
+  time_in_rounds(scene, results, args);
+  for (EngineResult& r : results)
+  {
+    std::fprintf(stderr, "stack %s %s%s\n", scene.name.c_str(), engine_name(r.kind).c_str(),
+                 r.pipeline.empty() ? "" : (" " + r.pipeline).c_str());
+    r.checkpoints = accuracy_run(scene, config_for(r.kind, scene, r.pipeline_asked), args.seconds);
+  }
+  return results;
 }
 
 std::size_t dynamic_bodies(const Scene& scene)
@@ -270,26 +326,13 @@ std::size_t dynamic_bodies(const Scene& scene)
   }));
 }
 
-/// This engine's time over Box2D v3's (NAN without v3 in this run).
-double ratio_to_v3(const std::vector<EngineResult>& results, double EngineResult::*field, const EngineResult& r)
-{
-  for (const EngineResult& v3 : results)
-  {
-    if (v3.kind == EngineKind::Box2dV3 && v3.*field > 0.0)
-    {
-      return r.*field / v3.*field;
-    }
-  }
-  return NAN;
-}
-
 void print_scene(const BenchScene& scene, const std::vector<EngineResult>& results, FILE* csv)
 {
   const std::size_t boxes = dynamic_bodies(scene.scene);
   for (const EngineResult& r : results)
   {
-    const double ratio = ratio_to_v3(results, &EngineResult::ms_per_frame, r);
-    const double cpu_ratio = ratio_to_v3(results, &EngineResult::cpu_ms_per_frame, r);
+    const double ratio = r.wall_over_v3;
+    const double cpu_ratio = r.cpu_over_v3;
     for (const Checkpoint& c : r.checkpoints)
     {
       const std::string engine = engine_name(r.kind) + (r.pipeline.empty() ? "" : " " + r.pipeline);
@@ -346,20 +389,7 @@ int main(int argc, char** argv)
     for (const std::string& name : names)
     {
       const BenchScene scene = make_bench_scene(name);
-      std::vector<EngineResult> results;
-      for (EngineKind kind : args.engines)
-      {
-        // Ours once per pipeline asked for; a peer once.
-        const std::vector<Pipeline> pipelines =
-            kind == EngineKind::Collision2d ? args.pipelines : std::vector<Pipeline>{Pipeline::Fx2d};
-        for (Pipeline pipeline : pipelines)
-        {
-          std::fprintf(stderr, "stack %s %s%s\n", name.c_str(), engine_name(kind).c_str(),
-                       kind == EngineKind::Collision2d ? (pipeline == Pipeline::Soft ? " soft" : " fx2d") : "");
-          results.push_back(measure(scene, kind, pipeline, args));
-        }
-      }
-      print_scene(scene, results, csv);
+      print_scene(scene, measure(scene, args), csv);
     }
   }
   catch (const std::exception& error)

@@ -1301,8 +1301,10 @@ friction 0.6, restitution 0, a static ground 200 m x 1 m with its top at
 y = 0, exactly touching boxes, gravity -10 m/s^2, dt 1/60 s, 4 substeps, one
 thread, sleeping off, every other setting the engine's default (ours: the
 World's defaults, once per pipeline). Time: median of fresh runs of the first
-second; drift: largest displacement of any dynamic body between 1 s and the
-checkpoint; penetration: our detection on each engine's poses at every frame
+second, the engines taking turns (one run each per round); a ratio to
+Box2D v3 is the median over the rounds of that round's ratio, so the
+machine's drift between rounds does not skew it; drift: largest
+displacement of any dynamic body between 1 s and the checkpoint; penetration: our detection on each engine's poses at every frame
 end. All rows come from one run of `collision2d_stack_bench`.
 
 The drift targets count from 1 s, and in both engines the tall pyramids are

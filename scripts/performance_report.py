@@ -419,7 +419,7 @@ def worker_speedups(scaling, scene):
             continue
         pairs = list(zip(one[b].get("round_times", []), two[b].get("round_times", [])))
         if pairs and len(one[b]["round_times"]) == len(two[b]["round_times"]):
-            ratios = sorted(t1 / t2 for t1, t2 in pairs if t2 > 0)
+            ratios = [t1 / t2 for t1, t2 in pairs if t2 > 0]
             if ratios:
                 speedups.append((number(b), statistics.median(ratios)))
             continue

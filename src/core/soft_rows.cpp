@@ -158,21 +158,11 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   }
 }
 
-RowPoint* SoftRows::row_point_of(std::size_t k, int& lane)
-{
-  const std::uint32_t at = k < lane_of_.size() ? lane_of_[k] : kNoLane;
-  if (at == kNoLane)
-  {
-    return nullptr;
-  }
-  lane = static_cast<int>(at / 2 % kRowLanes);
-  return &rows_[at / (2 * kRowLanes)].point[at % 2];
-}
-
 double* SoftRows::normal_impulse_of(std::size_t k)
 {
   int lane = 0;
-  RowPoint* point = row_point_of(k, lane);
+  // The rows are this object's own and it is not const here: writable.
+  RowPoint* point = const_cast<RowPoint*>(row_point_of(k, lane));
   return point == nullptr ? nullptr : &point->normal[lane];
 }
 

@@ -109,14 +109,12 @@ public:
   /// caller visits each point once, so each is read and written in one pass.
   void unpack_point(std::size_t k, ContactPoint& p) const
   {
-    const std::uint32_t at = lane_of_[k];
-    if (at != kNoLane)
+    int lane = 0;
+    if (const RowPoint* q = row_point_of(k, lane))
     {
-      const RowPoint& q = rows_[at / (2 * kRowLanes)].point[at % 2];
-      const std::size_t lane = at / 2 % kRowLanes;
-      p.lambda_n = q.normal[lane];
-      p.lambda_t = q.tangent[lane];
-      p.sliding = q.sliding[lane] != 0.0;
+      p.lambda_n = q->normal[lane];
+      p.lambda_t = q->tangent[lane];
+      p.sliding = q->sliding[lane] != 0.0;
     }
   }
 
@@ -149,7 +147,16 @@ private:
   void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
                  bool friction) const;
   /// Point k's row point and lane, or nullptr when its manifold has no row.
-  RowPoint* row_point_of(std::size_t k, int& lane);
+  const RowPoint* row_point_of(std::size_t k, int& lane) const
+  {
+    const std::uint32_t at = k < lane_of_.size() ? lane_of_[k] : kNoLane;
+    if (at == kNoLane)
+    {
+      return nullptr;
+    }
+    lane = static_cast<int>(at / 2 % kRowLanes);
+    return &rows_[at / (2 * kRowLanes)].point[at % 2];
+  }
 
   std::vector<RowBatch> rows_;
   std::vector<RowColour> colours_;

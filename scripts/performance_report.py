@@ -414,16 +414,13 @@ def worker_speedups(scaling, scene):
     one = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "1")}
     two = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "2")}
     speedups = []
-    for b in one:
-        if b not in two:
-            continue
-        pairs = list(zip(one[b].get("round_times", []), two[b].get("round_times", [])))
-        if pairs and len(one[b]["round_times"]) == len(two[b]["round_times"]):
-            ratios = [t1 / t2 for t1, t2 in pairs if t2 > 0]
-            if ratios:
-                speedups.append((number(b), statistics.median(ratios)))
-            continue
-        if number(two[b]["ms_per_step"]) > 0:
+    for b in one.keys() & two.keys():
+        # median_runs keeps each size's times in round order; a round that failed leaves them unpaired.
+        t1, t2 = one[b]["round_times"], two[b]["round_times"]
+        ratios = [x / y for x, y in zip(t1, t2) if y > 0] if len(t1) == len(t2) else []
+        if ratios:
+            speedups.append((number(b), statistics.median(ratios)))
+        elif number(two[b]["ms_per_step"]) > 0:
             speedups.append((number(b), number(one[b]["ms_per_step"]) / number(two[b]["ms_per_step"])))
     return sorted(speedups)
 

@@ -19,6 +19,7 @@
 #include "resting_grid.h"
 #include "soft_rows.h"
 #include "worker_pool.h"
+#include "world_rollback.h"
 #include "world_stage_types.h"
 
 namespace collision2d
@@ -68,72 +69,21 @@ struct WorldImpl
   /// Calls f(begin, end) over the contact points split across the workers
   /// at body-pair boundaries, so each manifold's points stay on one worker.
   template <class F>
-  void for_point_ranges(F f)
-  {
-    workers_.parallel_for(points_.size(), kMinSharedPoints,
-                          [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
-  }
+  void for_point_ranges(F f);
   /// Splits [0, count) into parts, one per worker (one part when count <
   /// min_shared), and stores answer(begin, end) of each part in `answers`, in
-  /// part order. A part works in locals and stores once: the parts' slots
-  /// share a cache line, which writing them item by item would bounce.
+  /// part order.
   template <class T, class F>
-  void answer_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, F answer)
-  {
-    const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
-    answers.resize(parts);
-    workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t part = begin; part < end; ++part)
-      {
-        answers[part] = answer(count * part / parts, count * (part + 1) / parts);
-      }
-    });
-  }
+  void answer_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, F answer);
   /// The fold best = std::max(best, value(k)) over k in [0, count) from
-  /// `start`, in parts on the workers when count >= min_shared. std::max keeps
-  /// the earlier of equal values and skips a NaN value, so the parts' results
-  /// folded in order give the one-thread bits.
+  /// `start`, in parts on the workers when count >= min_shared.
   template <class F>
-  double max_over(std::size_t count, std::size_t min_shared, double start, F value)
-  {
-    answer_in_parts(count, min_shared, partial_max_, [&](std::size_t begin, std::size_t end) {
-      double best = start;
-      for (std::size_t k = begin; k < end; ++k)
-      {
-        best = std::max(best, value(k));
-      }
-      return best;
-    });
-    double best = start;
-    for (double part : partial_max_)
-    {
-      best = std::max(best, part);
-    }
-    return best;
-  }
+  double max_over(std::size_t count, std::size_t min_shared, double start, F value);
   /// Calls f(i) on the workers for every body the frame's per-body stages
   /// visit: all of them in a frame that changed which bodies rest, else only
   /// the movers (a resting body's state and scratch stay as that frame left them).
   template <class F>
-  void for_each_body(F f)
-  {
-    if (body_pass_full_)
-    {
-      workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i)
-        {
-          f(i);
-        }
-      });
-      return;
-    }
-    workers_.parallel_for(movers_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k)
-      {
-        f(movers_[k]);
-      }
-    });
-  }
+  void for_each_body(F f);
   /// A dynamic body that is awake: gravity and contacts move it.
   bool awake_dynamic(std::size_t i) const { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; }
   /// How many bodies sleep now (counted again after a sleep, wake or edit).
@@ -273,7 +223,6 @@ struct WorldImpl
   bool place_pairs_in_parts(bool cached);
   void place_pairs_part(std::size_t part, std::size_t parts, bool cached);
   void place_pairs_in_order(bool cached);
-  /// Pair k's rows, where place_pair_rows put them (a WorkerPool range's item).
   /// Pair k's manifold into its rows, impulses matched from the cache;
   /// returns its deepest penetration (m).
   double add_manifold(std::size_t k, double warm_scale, bool friction);
@@ -404,15 +353,8 @@ struct WorldImpl
   std::vector<Aabb> boxes_;
   std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)
   double margin_ = 0.0;               ///< this detection's speculative margin (m)
-  /// Narrow-phase outcome of each pair, computed by the workers.
-  enum class Collided : unsigned char
-  {
-    NotTried,
-    Miss,
-    Hit
-  };
   std::vector<Manifold> manifolds_;
-  std::vector<Collided> collided_;
+  std::vector<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
   /// Polygon i's world vertices, then its face normals, from posed_offset_[i]
   /// in posed_vertices_ (2 vertex_count() entries).
   std::vector<std::size_t> posed_offset_;
@@ -420,13 +362,6 @@ struct WorldImpl
   std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
   std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in cache_
   std::vector<double> partial_max_;      ///< max_over's result of each part
-  /// What one part of place_awake_pairs found.
-  struct PairPlacement
-  {
-    bool cache_in_order = true;  ///< its share of the cache is in (a, b) order
-    bool looked_up = false;      ///< it looked a pair up in the cache ...
-    std::size_t last_lookup = 0; ///< ... and its last lookup's answer
-  };
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
   std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
@@ -488,25 +423,10 @@ struct WorldImpl
   std::uint64_t asleep_counted_stamp_ = ~std::uint64_t{0};
   std::uint64_t asleep_counted_version_ = 0;
 
-  // What a failed step puts back (kept across steps: no allocation per step).
-  std::vector<BodyMotion> saved_motion_;
-  std::vector<WorldContact> saved_contacts_;  ///< unless contacts_in_cache_
-  bool contacts_in_cache_ = false;  ///< the step's contacts before it are in cache_ after its one swap
-  int contact_swaps_ = 0;           ///< swaps of the contact buffers since save_motion
-  std::vector<bool> saved_asleep_;
-  bool saving_motion_ = false;  ///< inside a step that keeps what it changes for a rollback
-  bool saved_movers_only_ = false;  ///< only the movers' motion is kept so far
-  bool sleeping_kept_ = false;  ///< the step changed what sleeps; the state before is kept below
-  std::vector<WorldContact> saved_sleeping_contacts_;
-  double saved_sleeping_penetration_ = 0.0;
-  std::vector<std::uint32_t> saved_island_label_;
-  std::uint32_t saved_next_island_label_ = 0;
-  std::vector<double> saved_rest_time_;
-  std::vector<ContactPoint> saved_points_;  ///< only when a prediction reads them next step
-  double saved_cache_h_ = 0.0;
-  double saved_time_ = 0.0;
-  std::uint64_t saved_frame_count_ = 0;
+  Rollback rollback_;  ///< what a failed step puts back (world_rollback.h)
 };
 
 }  // namespace detail
 }  // namespace collision2d
+
+#include "world_parallel.h"

@@ -176,31 +176,31 @@ void WorldImpl::keep_sleeping_for_rollback(bool starting_contacts)
 {
   // Woken contacts join the cache, which may hold the step's starting
   // contacts: those are kept too.
-  if (saving_motion_ && starting_contacts && contacts_in_cache_)
+  if (rollback_.active && starting_contacts && rollback_.contacts_in_cache)
   {
-    saved_contacts_ = contact_swaps_ == 1 ? cache_ : contacts_;
-    contacts_in_cache_ = false;
+    rollback_.contacts = rollback_.contact_swaps == 1 ? cache_ : contacts_;
+    rollback_.contacts_in_cache = false;
   }
-  if (!saving_motion_ || sleeping_kept_)
+  if (!rollback_.active || rollback_.sleeping_kept)
   {
     return;
   }
-  sleeping_kept_ = true;
+  rollback_.sleeping_kept = true;
   // The resting bodies are about to change too: they are still as the step
   // found them (the step after they came to rest kept every body, so their
   // entries are normally fresh already; this does not rely on it).
-  if (saved_movers_only_)
+  if (rollback_.movers_only)
   {
-    saved_movers_only_ = false;
+    rollback_.movers_only = false;
     for (std::size_t i : resting_)
     {
       keep_body(i);
     }
   }
-  saved_sleeping_contacts_ = sleeping_contacts_;
-  saved_sleeping_penetration_ = sleeping_penetration_;
-  saved_island_label_ = island_label_;
-  saved_next_island_label_ = next_island_label_;
+  rollback_.sleeping_contacts = sleeping_contacts_;
+  rollback_.sleeping_penetration = sleeping_penetration_;
+  rollback_.island_label = island_label_;
+  rollback_.next_island_label = next_island_label_;
 }
 
 void WorldImpl::sort_out_sleeping()

@@ -1,7 +1,7 @@
 // Internal to the core: what the World's stages hand each other besides the
 // World's own state (world_impl.h): the step's context, the soft step's point
-// preparation, the body census, the motion a rollback puts back, the
-// thresholds for sharing a stage among the workers, and the test hooks.
+// preparation, the body census, the thresholds for sharing a stage among the
+// workers, and the test hooks.
 #pragma once
 
 #include <atomic>
@@ -70,16 +70,22 @@ struct BodyCensus
   void add(const BodyCensus& other);
 };
 
-/// Each body's pose and velocity, what a failed step puts back.
-struct BodyMotion
+/// Narrow-phase outcome of a pair.
+enum class Collided : unsigned char
 {
-  Vec2 position;
-  double theta = 0.0;
-  Vec2 velocity;
-  double omega = 0.0;
+  NotTried,
+  Miss,
+  Hit
 };
 
-/// The root of island i in a union-find forest, halving the path on the way.
+/// What one part of place_pairs_in_parts found (world_contact_rows.cpp).
+struct PairPlacement
+{
+  bool cache_in_order = true;   ///< its share of the cache is in (a, b) order
+  bool looked_up = false;       ///< it looked a pair up in the cache ...
+  std::size_t last_lookup = 0;  ///< ... and its last lookup's answer
+};
+
 /// best = std::max(best, value) from several workers. A max is the same in
 /// any order (std::max skips a NaN value), so the result does not depend on
 /// how the work was split.
@@ -91,6 +97,7 @@ inline void raise_to(std::atomic<double>& best, double value)
   }
 }
 
+/// The root of island i in a union-find forest, halving the path on the way.
 inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
 {
   while (parent[i] != i)

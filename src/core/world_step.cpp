@@ -60,7 +60,7 @@ StepReport WorldImpl::step(int frames)
     restore_motion();
     throw;
   }
-  saving_motion_ = false;
+  rollback_.active = false;
   finish_report(report);
   note_finish(report);
   return report;
@@ -298,7 +298,7 @@ void keep_copy(const std::vector<T>& from, std::vector<T>& to, WorkerPool& worke
 void WorldImpl::swap_contact_buffers()
 {
   cache_.swap(contacts_);
-  ++contact_swaps_;
+  ++rollback_.contact_swaps;
 }
 
 void WorldImpl::save_motion(int frames)
@@ -307,84 +307,84 @@ void WorldImpl::save_motion(int frames)
   // buffers that keep their capacity from step to step.
   // While the movers stay the movers only they change; the first change of
   // what sleeps keeps the others too (keep_sleeping_for_rollback).
-  saved_movers_only_ = movers_current();
-  saved_motion_.resize(bodies_.size());
-  saved_rest_time_.resize(bodies_.size());
-  const std::size_t count = saved_movers_only_ ? movers_.size() : bodies_.size();
+  rollback_.movers_only = movers_current();
+  rollback_.motion.resize(bodies_.size());
+  rollback_.rest_time.resize(bodies_.size());
+  const std::size_t count = rollback_.movers_only ? movers_.size() : bodies_.size();
   workers_.parallel_for(count, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
-      keep_body(saved_movers_only_ ? movers_[k] : k);
+      keep_body(rollback_.movers_only ? movers_[k] : k);
     }
   });
   // A step that swaps the contact buffers once leaves the contacts it started
   // from untouched in cache_ (detection only reads it): no copy is needed.
   const int swaps = frames * (settings_.soft_step ? 1 : settings_.substeps);
-  contacts_in_cache_ = swaps == 1;
-  contact_swaps_ = 0;
-  if (!contacts_in_cache_)
+  rollback_.contacts_in_cache = swaps == 1;
+  rollback_.contact_swaps = 0;
+  if (!rollback_.contacts_in_cache)
   {
-    keep_copy(contacts_, saved_contacts_, workers_);
+    keep_copy(contacts_, rollback_.contacts, workers_);
   }
-  saved_asleep_ = asleep_;
-  saving_motion_ = true;
-  sleeping_kept_ = false;
-  saved_time_ = time_;
-  saved_frame_count_ = frame_count_;
-  saved_cache_h_ = cache_h_;
+  rollback_.asleep = asleep_;
+  rollback_.active = true;
+  rollback_.sleeping_kept = false;
+  rollback_.time = time_;
+  rollback_.frame_count = frame_count_;
+  rollback_.cache_h = cache_h_;
   // A prediction reads the previous substep's points (world_warm_integration.cpp).
   if (settings_.warm_start_before_integration)
   {
-    keep_copy(points_, saved_points_, workers_);
+    keep_copy(points_, rollback_.points, workers_);
   }
 }
 
 void WorldImpl::keep_body(std::size_t i)
 {
   const Body& b = bodies_[i];
-  saved_motion_[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
-  saved_rest_time_[i] = rest_time_[i];
+  rollback_.motion[i] = {b.position(), b.theta(), b.velocity(), b.omega()};
+  rollback_.rest_time[i] = rest_time_[i];
 }
 
 void WorldImpl::restore_motion()
 {
   rest_known_ = false;  // the rest frame remembered may be one this step made
-  const std::size_t count = saved_movers_only_ ? movers_.size() : bodies_.size();
+  const std::size_t count = rollback_.movers_only ? movers_.size() : bodies_.size();
   for (std::size_t k = 0; k < count; ++k)
   {
-    const std::size_t i = saved_movers_only_ ? movers_[k] : k;
+    const std::size_t i = rollback_.movers_only ? movers_[k] : k;
     Body& b = bodies_[i];
-    const BodyMotion& m = saved_motion_[i];
+    const BodyMotion& m = rollback_.motion[i];
     b.set_position(m.position);
     b.set_theta(m.theta);
     b.set_velocity(m.velocity);
     b.set_omega(m.omega);
-    rest_time_[i] = saved_rest_time_[i];
+    rest_time_[i] = rollback_.rest_time[i];
   }
-  if (!contacts_in_cache_)
+  if (!rollback_.contacts_in_cache)
   {
-    contacts_.swap(saved_contacts_);
+    contacts_.swap(rollback_.contacts);
   }
-  else if (contact_swaps_ == 1)
+  else if (rollback_.contact_swaps == 1)
   {
     contacts_.swap(cache_);
   }
-  asleep_.swap(saved_asleep_);
+  asleep_.swap(rollback_.asleep);
   ++sleep_stamp_;
-  saving_motion_ = false;
-  if (sleeping_kept_)
+  rollback_.active = false;
+  if (rollback_.sleeping_kept)
   {
-    sleeping_contacts_.swap(saved_sleeping_contacts_);
-    sleeping_penetration_ = saved_sleeping_penetration_;
-    island_label_.swap(saved_island_label_);
-    next_island_label_ = saved_next_island_label_;
+    sleeping_contacts_.swap(rollback_.sleeping_contacts);
+    sleeping_penetration_ = rollback_.sleeping_penetration;
+    island_label_.swap(rollback_.island_label);
+    next_island_label_ = rollback_.next_island_label;
   }
-  time_ = saved_time_;
-  frame_count_ = saved_frame_count_;
-  cache_h_ = saved_cache_h_;
+  time_ = rollback_.time;
+  frame_count_ = rollback_.frame_count;
+  cache_h_ = rollback_.cache_h;
   if (settings_.warm_start_before_integration)
   {
-    points_.swap(saved_points_);
+    points_.swap(rollback_.points);
   }
 }
 

@@ -1,0 +1,79 @@
+// Internal to the core: how the World shares a stage among its workers
+// (worker_pool.h), declared in world_impl.h, which includes this at its end.
+// Results are the same for any number of workers.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace collision2d
+{
+namespace detail
+{
+template <class F>
+void WorldImpl::for_point_ranges(F f)
+{
+  workers_.parallel_for(points_.size(), kMinSharedPoints,
+                        [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
+}
+
+template <class T, class F>
+void WorldImpl::answer_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, F answer)
+{
+  // A part works in locals and stores once: the parts' slots share a cache
+  // line, which writing them item by item would bounce.
+  const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
+  answers.resize(parts);
+  workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t part = begin; part < end; ++part)
+    {
+      answers[part] = answer(count * part / parts, count * (part + 1) / parts);
+    }
+  });
+}
+
+template <class F>
+double WorldImpl::max_over(std::size_t count, std::size_t min_shared, double start, F value)
+{
+  // std::max keeps the earlier of equal values and skips a NaN value, so the
+  // parts' results folded in order give the one-thread bits.
+  answer_in_parts(count, min_shared, partial_max_, [&](std::size_t begin, std::size_t end) {
+    double best = start;
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      best = std::max(best, value(k));
+    }
+    return best;
+  });
+  double best = start;
+  for (double part : partial_max_)
+  {
+    best = std::max(best, part);
+  }
+  return best;
+}
+
+template <class F>
+void WorldImpl::for_each_body(F f)
+{
+  if (body_pass_full_)
+  {
+    workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        f(i);
+      }
+    });
+    return;
+  }
+  workers_.parallel_for(movers_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      f(movers_[k]);
+    }
+  });
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -1,0 +1,49 @@
+// Internal to the core: what a step keeps aside so that a failed step puts
+// the World back exactly as it was (world_step.cpp keeps and restores it;
+// world_sleeping_contacts.cpp keeps what sleeping changes). Kept across
+// steps: no allocation per step once warmed up.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "collision2d/world.h"
+#include "contact_kernel.h"
+
+namespace collision2d
+{
+namespace detail
+{
+/// Each body's pose and velocity, what a failed step puts back.
+struct BodyMotion
+{
+  Vec2 position;
+  double theta = 0.0;
+  Vec2 velocity;
+  double omega = 0.0;
+};
+
+/// The World's state before the step, as far as the step has changed it.
+struct Rollback
+{
+  bool active = false;       ///< inside a step that keeps what it changes
+  bool movers_only = false;  ///< only the movers' motion is kept so far
+  std::vector<BodyMotion> motion;
+  std::vector<bool> asleep;
+  std::vector<double> rest_time;
+  std::vector<WorldContact> contacts;  ///< unless contacts_in_cache
+  bool contacts_in_cache = false;      ///< the step's contacts before it are in cache_ after its one swap
+  int contact_swaps = 0;               ///< swaps of the contact buffers since save_motion
+  bool sleeping_kept = false;          ///< the step changed what sleeps; the state before is kept below
+  std::vector<WorldContact> sleeping_contacts;
+  double sleeping_penetration = 0.0;
+  std::vector<std::uint32_t> island_label;
+  std::uint32_t next_island_label = 0;
+  std::vector<ContactPoint> points;  ///< only when a prediction reads them next step
+  double cache_h = 0.0;
+  double time = 0.0;
+  std::uint64_t frame_count = 0;
+};
+
+}  // namespace detail
+}  // namespace collision2d

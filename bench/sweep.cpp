@@ -1,10 +1,10 @@
-// Sweep grids (see sweep.h).
+// Sweep grids (see sweep.h); their building blocks are sweep_runs.h.
 #include "sweep.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <type_traits>
 #include <utility>
+
+#include "sweep_runs.h"
 
 namespace collision2d
 {
@@ -12,6 +12,8 @@ namespace bench
 {
 namespace
 {
+using namespace sweep;
+
 constexpr double kStandSeconds = 60.0;       // the target: stacks stand for a minute (s)
 // The most accurate stacking setting found for the World: many substeps and
 // position passes with a slop of 10 um.
@@ -21,193 +23,10 @@ constexpr int kPrecisePositionIterations = 16;
 constexpr double kPreciseSlop = 1e-5;  // m
 constexpr double kQuickStandSeconds = 20.0;  // s
 constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an exact failure falls back to
-// The second setting warm_start_before_integration is swept at (see add_warm_before_integration).
-constexpr int kWarmIntegrationSubsteps = 8;
-constexpr int kWarmIntegrationIterations = 4;
 // The soft step's stiffer stand setting: 120 Hz contacts need 8 substeps
 // (the stiffness is capped at a quarter of the substep rate).
 constexpr int kSoftStiffSubsteps = 8;
 constexpr double kSoftStiffHertz = 120.0;
-
-/// SFINAE: true when WorldSettings has a `solver_mode` field; the benchmark
-/// then sweeps it without needing a code change.
-template <typename S, typename = void>
-struct HasSolverMode : std::false_type
-{
-};
-template <typename S>
-struct HasSolverMode<S, std::void_t<decltype(std::declval<S&>().solver_mode = SolverMode::Exact)>> : std::true_type
-{
-};
-
-template <typename S>
-bool set_solver_mode(S& settings, SolverMode mode)
-{
-  if constexpr (HasSolverMode<S>::value)
-  {
-    settings.solver_mode = mode;
-    return true;
-  }
-  else
-  {
-    (void)settings;
-    (void)mode;
-    return false;
-  }
-}
-
-/// A template so that the branch naming the missing field is never compiled.
-template <typename S>
-std::string solver_mode_of(const S& settings)
-{
-  if constexpr (HasSolverMode<S>::value)
-  {
-    return settings.solver_mode == SolverMode::Exact ? "exact" : "iterative";
-  }
-  else
-  {
-    (void)settings;
-    return "iterative";
-  }
-}
-
-bool is_headline(const BenchScene& s)
-{
-  return s.name == "pyramid" || s.name == "column" || s.name == "elastic_gas";
-}
-
-bool is_stack(const BenchScene& s)
-{
-  return s.name == "pyramid" || s.name == "column";
-}
-
-bool is_mass_ratio(const BenchScene& s)
-{
-  return s.name.compare(0, 15, "heavy_on_light_") == 0;
-}
-
-/// Scenes whose bodies come to rest: a world that sleeps then holds them
-/// still at little cost (the peers sleep at their defaults too).
-bool comes_to_rest(const BenchScene& s) { return s.kind == SceneKind::Resting || s.kind == SceneKind::Incline; }
-
-std::string text(double value)
-{
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
-
-EngineConfig ours(const WorldSettings& settings)
-{
-  return EngineConfig{EngineKind::Collision2d, PeerVariant::Matched, settings};
-}
-
-WorldSettings with_steps(WorldSettings s, int substeps, int iterations)
-{
-  s.substeps = substeps;
-  s.velocity_iterations = iterations;
-  return s;
-}
-
-std::string steps_text(int substeps, int iterations)
-{
-  return std::to_string(substeps) + "x" + std::to_string(iterations);
-}
-
-/// The same run list whatever the pipeline: runs.push_back(knob, value, settings).
-struct Runs
-{
-  std::vector<RunSpec>& out;
-  void add(const std::string& knob, const std::string& value, const WorldSettings& settings)
-  {
-    out.push_back(RunSpec{knob, value, ours(settings)});
-  }
-};
-
-void add_iterations(const WorldSettings& base, const std::vector<int>& values, Runs runs)
-{
-  for (int it : values)
-  {
-    runs.add("iterations", std::to_string(it), with_steps(base, base.substeps, it));
-  }
-}
-
-void add_substeps(const WorldSettings& base, const std::vector<int>& values, Runs runs)
-{
-  for (int n : values)
-  {
-    runs.add("substeps", std::to_string(n), with_steps(base, n, base.velocity_iterations));
-  }
-}
-
-void add_toggles(const WorldSettings& base, Toggle WorldSettings::*field, const char* knob,
-                 const std::vector<Toggle>& values, Runs runs)
-{
-  for (Toggle t : values)
-  {
-    WorldSettings s = base;
-    s.*field = t;
-    runs.add(knob, toggle_name(t), s);
-  }
-}
-
-/// One double-valued knob of the settings at each value.
-void add_values(const WorldSettings& base, double WorldSettings::*field, const char* knob,
-                const std::vector<double>& values, Runs runs)
-{
-  for (double v : values)
-  {
-    WorldSettings s = base;
-    s.*field = v;
-    runs.add(knob, text(v), s);
-  }
-}
-
-/// One bool knob set to the opposite of its value in `base`.
-void add_flip(const WorldSettings& base, bool WorldSettings::*field, const char* knob, Runs runs)
-{
-  WorldSettings s = base;
-  s.*field = !(base.*field);
-  runs.add(knob, s.*field ? "on" : "off", s);
-}
-
-/// Poses advanced with predicted velocities, on and off, at the scene's
-/// setting and at 8x4 (where its gain on stacks shows without its 4x2
-/// failure on the pyramid).
-void add_warm_before_integration(const WorldSettings& base, Runs runs)
-{
-  for (const WorldSettings& steps : {base, with_steps(base, kWarmIntegrationSubsteps, kWarmIntegrationIterations)})
-  {
-    for (bool on : {false, true})
-    {
-      WorldSettings s = steps;
-      s.warm_start_before_integration = on;
-      runs.add("warm_before_integration", steps_text(s.substeps, s.velocity_iterations) + (on ? " on" : " off"), s);
-    }
-  }
-}
-
-/// The exact solver mode (the iterative one is the baseline).
-void add_exact(const WorldSettings& base, Runs runs)
-{
-  WorldSettings s = base;
-  if (set_solver_mode(s, SolverMode::Exact))
-  {
-    runs.add("solver_mode", mode_name(SolverMode::Exact), s);
-  }
-}
-
-void add_grid(const WorldSettings& base, const std::vector<int>& substeps, const std::vector<int>& iterations,
-              Runs runs)
-{
-  for (int n : substeps)
-  {
-    for (int it : iterations)
-    {
-      runs.add("grid", steps_text(n, it), with_steps(base, n, it));
-    }
-  }
-}
 
 /// The Fx2D pipeline's runs (`base` has soft_step off).
 void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
@@ -237,14 +56,12 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
     // (~0.1 m) by design; a rigid contact shows what the exact mode holds.
     WorldSettings rigid = base;
     rigid.compliance = 0.0;
-    if (set_solver_mode(rigid, SolverMode::Exact))
-    {
-      runs.add("compliance", "compliance 0", rigid);
-      WorldSettings loose = rigid;
-      loose.exact_position_correction = !rigid.exact_position_correction;
-      runs.add("exact_position_correction",
-               std::string(loose.exact_position_correction ? "on" : "off") + " (compliance 0)", loose);
-    }
+    rigid.solver_mode = SolverMode::Exact;
+    runs.add("compliance", "compliance 0", rigid);
+    WorldSettings loose = rigid;
+    loose.exact_position_correction = !rigid.exact_position_correction;
+    runs.add("exact_position_correction",
+             std::string(loose.exact_position_correction ? "on" : "off") + " (compliance 0)", loose);
     return;
   }
   // Every pass over the pyramid's ~800 contact points costs: 64 iterations
@@ -362,11 +179,6 @@ RunSpec long_run(const std::string& knob, const std::string& value, const WorldS
 
 }  // namespace
 
-bool world_has_solver_mode()
-{
-  return HasSolverMode<WorldSettings>::value;
-}
-
 WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline)
 {
   settings.soft_step = pipeline == Pipeline::Soft;
@@ -448,9 +260,10 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   stiff.contact_hertz = kSoftStiffHertz;
   runs.push_back(long_run("contact_hertz", text(kSoftStiffHertz), stiff, seconds));
   // The exact mode on the column (one cluster of 20 boxes), as in Fx2D below.
-  WorldSettings soft_exact = soft;
-  if (!pyramid && set_solver_mode(soft_exact, SolverMode::Exact))
+  if (!pyramid)
   {
+    WorldSettings soft_exact = soft;
+    soft_exact.solver_mode = SolverMode::Exact;
     runs.push_back(long_run("stand", "exact", soft_exact, seconds));
   }
 
@@ -474,9 +287,10 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   runs.push_back(long_run("precise", "16 position passes slop 1e-5", precise, seconds));
   // The exact mode on the column (one cluster of 20 boxes); the pyramid's
   // 210-box cluster is too costly to pivot for a minute within the budget.
-  WorldSettings exact = fx2d;
-  if (!pyramid && set_solver_mode(exact, SolverMode::Exact))
+  if (!pyramid)
   {
+    WorldSettings exact = fx2d;
+    exact.solver_mode = SolverMode::Exact;
     runs.push_back(long_run("stand", "exact", exact, seconds));
   }
   return runs;
@@ -528,7 +342,7 @@ std::string mode_name(SolverMode mode)
 
 std::string world_mode_name(const WorldSettings& settings)
 {
-  return solver_mode_of(settings);
+  return mode_name(settings.solver_mode);
 }
 
 }  // namespace bench

@@ -48,9 +48,6 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick);
 /// Mode x iterations x tolerance x mass ratio for the ContactSolver.
 std::vector<SolverSweepPoint> solver_points(bool quick);
 
-/// Whether WorldSettings has a solver mode in this build (it is swept if so).
-bool world_has_solver_mode();
-
 /// `settings` with soft_step set for `pipeline`.
 WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline);
 /// The pipeline these settings step with: "soft" or "fx2d" (the exact solver
@@ -61,7 +58,7 @@ std::string default_pipeline_name();
 
 std::string toggle_name(Toggle toggle);
 std::string mode_name(SolverMode mode);
-/// The world's solver mode as text ("iterative" when the world has none).
+/// The world's solver mode as text.
 std::string world_mode_name(const WorldSettings& settings);
 
 }  // namespace bench

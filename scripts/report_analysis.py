@@ -1,0 +1,144 @@
+"""Selections and comparisons over the benchmark rows, shared by the plots,
+targets, guidance and sections of the performance report: our runs and the
+peers' per scene, baselines, Pareto fronts, time-target pairs, stack rows,
+throughput rows, worker speed-ups and scaling slopes."""
+import math
+import statistics
+
+from report_data import PEERS, SCENE_ORDER, is_ours, number
+from report_format import finite, label, setting
+
+
+def ours(runs, scene, include_stand=False, pipeline=None):
+    return [r for r in runs if r["scene"] == scene and is_ours(r) and (include_stand or r["part"] != "stand")
+            and (pipeline is None or r["pipeline"] == pipeline)]
+
+
+def peers(runs, scene):
+    return [r for r in runs if r["scene"] == scene and not is_ours(r)]
+
+
+def find(runs, scene, knob, value=None, pipeline=None):
+    for r in ours(runs, scene, pipeline=pipeline):
+        if r["part"] == "world" and r["knob"] == knob and (value is None or r["value"] == value):
+            return r
+    return None
+
+
+def baseline(runs, scene, pipeline):
+    return find(runs, scene, "baseline", pipeline=pipeline)
+
+
+def other(pipeline):
+    return "fx2d" if pipeline == "soft" else "soft"
+
+
+def default_pipeline(*tables):
+    for rows in tables:
+        for r in rows:
+            if r.get("default_pipeline"):
+                return r["default_pipeline"]
+    return "fx2d"  # reports made before the soft step existed
+
+
+def pareto(points):
+    """Cheapest-first points whose error beats every cheaper point."""
+    front, best = [], float("inf")
+    for p in sorted(points, key=lambda r: r["ms"]):
+        if finite(p["err"]) and p["err"] < best:
+            front.append(p)
+            best = p["err"]
+    return front
+
+
+def cheapest_at(our_runs, error, key="ms"):
+    ok = [r for r in our_runs if finite(r["err"]) and r["err"] <= error]
+    return min(ok, key=lambda r: r[key]) if ok else None
+
+
+def time_target_rows(runs, scene):
+    """Per peer run: our cheapest run (either pipeline) at equal or better error, and the ratio."""
+    rows = []
+    mine = ours(runs, scene)
+    for p in [r for r in peers(runs, scene) if r["engine"] in PEERS]:
+        best = cheapest_at(mine, p["err"])
+        best_cpu = cheapest_at(mine, p["err"], "cpu")
+        ratio = best["ms"] / p["ms"] if best else float("inf")
+        ratio_cpu = best_cpu["cpu"] / p["cpu"] if best_cpu else float("inf")
+        rows.append({"peer": label(p), "peer_ms": p["ms"], "peer_err": p["err"],
+                     "ours": setting(best) if best else "not reached",
+                     "ours_ms": best["ms"] if best else float("nan"),
+                     "ours_err": best["err"] if best else float("nan"), "ratio": ratio, "ratio_cpu": ratio_cpu})
+    return rows
+
+
+def time_target_scenes(runs):
+    return [s for s in scene_names(runs) if ours(runs, s) and any(r["engine"] in PEERS for r in peers(runs, s))]
+
+
+def scene_order(name):
+    return (SCENE_ORDER.index(name) if name in SCENE_ORDER else len(SCENE_ORDER), name)
+
+
+def scene_names(runs):
+    return sorted({r["scene"] for r in runs}, key=scene_order)
+
+
+def least_squares_slope(points):
+    xs = [math.log(n) for n, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx > 0 else float("nan")
+
+
+def ratio(a, b):
+    if not (finite(a) and finite(b)):
+        return float("nan")
+    if b == 0:
+        return 1.0 if a == 0 else float("inf")
+    return a / b
+
+
+def gas_rows(scaling):
+    """The elastic-gas scaling runs (files written before the scene column are all gas)."""
+    return [r for r in scaling if r.get("scene", "gas") in ("gas", "", None)]
+
+
+def throughput_rows(scaling, scene, engine, workers="1"):
+    rows = [r for r in scaling if r.get("scene") == scene and r["engine"] == engine and r.get("workers", "1") == workers]
+    return sorted(rows, key=lambda r: number(r["bodies"]))
+
+
+def worker_speedups(scaling, scene):
+    """(bodies, time with 1 worker / time with 2) for each size run both ways, ascending: the
+    median over the rounds of each round's own ratio (its 1-worker run and the 2-worker run right
+    after it), so a machine that slows down between rounds does not skew it."""
+    one = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "1")}
+    two = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "2")}
+    speedups = []
+    for b in one.keys() & two.keys():
+        # median_runs keeps each size's times in round order; a round that failed leaves them unpaired.
+        t1, t2 = one[b]["round_times"], two[b]["round_times"]
+        ratios = [x / y for x, y in zip(t1, t2) if y > 0] if len(t1) == len(t2) else []
+        if ratios:
+            speedups.append((number(b), statistics.median(ratios)))
+        elif number(two[b]["ms_per_step"]) > 0:
+            speedups.append((number(b), number(one[b]["ms_per_step"]) / number(two[b]["ms_per_step"])))
+    return sorted(speedups)
+
+
+def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None):
+    rows = [r for r in stacks if r["scene"] == scene and r["engine"] == engine
+            and (pipeline is None or r["pipeline"] == pipeline)]
+    if seconds is None and rows:
+        seconds = max(r["seconds"] for r in rows)
+    rows = [r for r in rows if r["seconds"] == seconds]
+    return rows[0] if rows else None
+
+
+def scaling_slope(scaling, engine, scenes=("gas",), workers="1"):
+    pts = [(number(r["bodies"]), number(r["ms_per_step"])) for r in scaling if r["engine"] == engine
+           and r.get("scene", "gas") in scenes and r.get("workers", "1") == workers]
+    pts = [p for p in pts if finite(p[1]) and p[1] > 0]
+    return least_squares_slope(pts) if len(pts) >= 2 else float("nan")

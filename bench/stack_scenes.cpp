@@ -29,6 +29,11 @@ constexpr double kGroundMargin = 1.5;      // ground width / widest row of a thr
 
 const char* const kPyramidPrefix = "stack_pyramid_";
 const char* const kColumnName = "stack_column_20";
+// The same column with its top box this far off centre (m, +x): the exact
+// column stays symmetric to the last bit, so it cannot show whether a column
+// tips once anything breaks the symmetry.
+const char* const kNudgedColumnName = "stack_column_20_nudged";
+constexpr double kColumnNudge = 1e-6;
 
 Material stack_material()
 {
@@ -56,7 +61,7 @@ Scene stack_base(const std::string& name, double ground_width = kGroundWidth)
 
 std::vector<std::string> stack_scene_names()
 {
-  return {"stack_pyramid_20", kColumnName, "stack_pyramid_60", "stack_pyramid_100"};
+  return {"stack_pyramid_20", kColumnName, kNudgedColumnName, "stack_pyramid_60", "stack_pyramid_100"};
 }
 
 bool is_stack_scene(const std::string& name)
@@ -78,7 +83,7 @@ BenchScene make_stack_scene(const std::string& name)
     throw std::invalid_argument("unknown stack scene '" + name + "'");
   }
   Scene scene = stack_base(name);
-  if (name == kColumnName)
+  if (name == kColumnName || name == kNudgedColumnName)
   {
     scenes::ColumnParams column;
     column.count = kColumnBoxes;
@@ -87,6 +92,11 @@ BenchScene make_stack_scene(const std::string& name)
     column.at = Vec2{0.0, 0.5 * kBox};
     column.material = stack_material();
     scenes::add_column(scene, column);
+    if (name == kNudgedColumnName)
+    {
+      Body& top = scene.bodies.back().body;
+      top.set_position(top.position() + Vec2{kColumnNudge, 0.0});
+    }
   }
   else
   {

@@ -18,7 +18,8 @@ namespace bench
 /// Stack drift is measured from this time on (s).
 constexpr double kStackSettleSeconds = 1.0;
 
-/// stack_pyramid_20, stack_column_20, stack_pyramid_60, stack_pyramid_100.
+/// stack_pyramid_20, stack_column_20, stack_column_20_nudged (its top box
+/// 1 um off centre), stack_pyramid_60, stack_pyramid_100.
 std::vector<std::string> stack_scene_names();
 /// Whether `name` is one of stack_scene_names().
 bool is_stack_scene(const std::string& name);

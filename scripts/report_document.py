@@ -176,6 +176,23 @@ frame and pumps energy into the flank boxes. Letting that stiffness reach
 half the substep rate, or the full rate, rings: the base-20 pyramid then
 drifts 34 and 88 mm.
 
+Why a nudged column (`stack_column_20_nudged`, the column with its top box
+1 um off centre): the exact column is symmetric to the last bit, so nothing
+can start it tipping, and its drift says nothing about a user's column. The
+soft step lets the nudged one fall at the defaults (the rows below). A soft
+contact resists tilt like a spring of stiffness m_eff (2 pi f)^2 at each
+corner, the same under every box, while the weight above a joint grows down
+the column; a column of 20 unit boxes at 40 Hz is past the height at which
+such a column buckles under its own weight (Greenhill's q L^3 = 7.84 EI,
+with EI the joints' tilt stiffness times the box height: about 50 Hz by
+that estimate). Measured at commit 974b0e2 (not this run) by stepping the
+column nudged by 1 um for 60 s: at 45 and 50 Hz it fell, at 55 and 60 Hz
+it stood (the top box stayed within a few um of where it was put), and at
+40 Hz a nudge of 1e-12 m grew tenfold every 4 s and the column lay on the
+ground by 60 s. At 55 Hz the base-60 pyramid drifted 21.2 mm (1 s -> 10 s)
+and at 60 Hz it fell (870 mm by 60 s), so a stiffer default is no answer; Box2D v3's column, on contacts of the same kind at 30 Hz, stands
+nudged. Open: a soft contact that holds a nudged column at the defaults.
+
 {stacks_section(stacks, default)}
 ## Stacks standing for a minute (base-20 pyramid and 20-box column of the sweep)
 

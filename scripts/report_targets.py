@@ -47,7 +47,7 @@ def stack_target_rows(stacks, default):
             cell += (f" ({PIPELINE_NAMES[other_p]}: " +
                      ", ".join(f"{mm(o['max_penetration_m'])}" for o in others) + ")")
         missed = [s for s, r in pens if not r["max_penetration_m"] <= STACK_PENETRATION_TARGET_M]
-        rows.append([f"largest penetration <= {mm(STACK_PENETRATION_TARGET_M)} on the four stacks", cell,
+        rows.append([f"largest penetration <= {mm(STACK_PENETRATION_TARGET_M)} on the {len(pens)} stacks", cell,
                      "met" if not missed else
                      f"missed on {len(missed)} of {len(pens)} (worst {worst[0]} by "
                      f"{fmt(worst[1]['max_penetration_m'] / STACK_PENETRATION_TARGET_M)}x)"])

@@ -1,8 +1,7 @@
 // rostest client of the world services: StepWorld on shipped scenes (a resting
 // stack stays, a dropped disk bounces, frames and time advance, the topic
-// publishes), the other world services, and every bad-input class, each
-// answered with success = false, a message naming the body and field, and the
-// world (GetWorld) left exactly as it was.
+// publishes) and the other world services. The refusals of bad input are
+// test_world_services_rejects.cpp, linked into the same binary.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,141 +18,13 @@
 #include "collision2d/scenes/standard_scenes.h"
 
 #include "ros_test_helpers.h"
+#include "world_services_test_support.h"
 
 namespace collision2d
 {
 namespace
 {
-using ros_test::box_msg;
-using ros_test::contains;
-using ros_test::disk_msg;
-using ros_test::same_world;
-
-constexpr double kServiceWait = 30.0;  // s
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-/// The test launch file's ~max_bodies and ~max_frames_per_call.
-constexpr std::size_t kMaxBodies = 64;
-constexpr std::uint32_t kMaxFrames = 2000;
-
-template <typename Service>
-Service call(const std::string& name, const typename Service::Request& request = typename Service::Request())
-{
-  Service srv;
-  srv.request = request;
-  EXPECT_TRUE(ros::service::call(name, srv)) << name << ": transport failed";
-  return srv;
-}
-
-WorldState get_world()
-{
-  const GetWorld srv = call<GetWorld>("get_world");
-  EXPECT_TRUE(srv.response.success);
-  return srv.response.state;
-}
-
-WorldState load(const std::string& scene)
-{
-  LoadScene::Request request;
-  request.scene = scene;
-  const LoadScene srv = call<LoadScene>("load_scene", request);
-  EXPECT_TRUE(srv.response.success) << srv.response.message;
-  return srv.response.state;
-}
-
-/// A step that asks for the full state in the answer (return_state).
-StepWorld::Response step(std::uint32_t frames, double dt = 0.0)
-{
-  StepWorld::Request request;
-  request.frames = frames;
-  request.dt = dt;
-  request.return_state = true;
-  const StepWorld srv = call<StepWorld>("step_world", request);
-  EXPECT_TRUE(srv.response.success) << srv.response.message;
-  return srv.response;
-}
-
-const BodyMsg* find_body(const WorldState& state, std::uint32_t id)
-{
-  for (const BodyMsg& body : state.bodies)
-  {
-    if (body.id == id)
-    {
-      return &body;
-    }
-  }
-  return nullptr;
-}
-
-/// Lowest and highest y of a polygon's outline, placed by its pose.
-struct VerticalExtent
-{
-  double low;
-  double high;
-};
-
-VerticalExtent vertical_extent(const BodyMsg& body)
-{
-  VerticalExtent extent{kInf, -kInf};
-  const double c = std::cos(body.pose.theta);
-  const double s = std::sin(body.pose.theta);
-  for (const geometry_msgs::Point& v : body.vertices)
-  {
-    const double y = body.pose.y + s * v.x + c * v.y;
-    extent.low = std::min(extent.low, y);
-    extent.high = std::max(extent.high, y);
-  }
-  return extent;
-}
-
-/// The dynamic body of largest (heaviest = true) or smallest mass.
-const BodyMsg* dynamic_by_mass(const WorldState& state, bool heaviest)
-{
-  const BodyMsg* found = nullptr;
-  for (const BodyMsg& body : state.bodies)
-  {
-    if (body.type == BodyMsg::DYNAMIC &&
-        (found == nullptr || (heaviest ? body.mass > found->mass : body.mass < found->mass)))
-    {
-      found = &body;
-    }
-  }
-  return found;
-}
-
-class WorldServices : public ::testing::Test
-{
-protected:
-  /// A known world to compare against after each failed request.
-  void SetUp() override
-  {
-    load("resting_box");
-    step(3);
-    before_ = get_world();
-    ASSERT_FALSE(before_.bodies.empty());
-  }
-
-  /// The failure message names what it must, and the world did not move.
-  template <typename Response>
-  void expect_rejected(const Response& response, const std::string& part)
-  {
-    EXPECT_FALSE(response.success);
-    EXPECT_TRUE(contains(response.message, part));
-    EXPECT_TRUE(same_world(before_, get_world()));
-  }
-
-  /// SetWorld with a valid first body and `bad` second (index 1, id 7).
-  SetWorld::Response set_with_bad_second(BodyMsg bad)
-  {
-    bad.id = 7;
-    SetWorld::Request request;
-    request.keep_settings = true;
-    request.bodies = {disk_msg(3, {-10.0, 5.0}), bad};
-    return call<SetWorld>("set_world", request).response;
-  }
-
-  WorldState before_;
-};
+using namespace world_services_test;  // NOLINT: the shared helpers and fixture
 
 TEST_F(WorldServices, StepAdvancesFramesAndTime)
 {
@@ -378,151 +249,6 @@ TEST_F(WorldServices, ExactSolverCarriesAMillionToOneStack)
   }
 }
 
-TEST_F(WorldServices, OverflowingStepIsRefusedAndTheWorldKept)
-{
-  // Gravity 1e308 m/s^2 with one-second frames: the second frame's velocity
-  // passes the largest double. Finite, so validation lets it through; the
-  // step must refuse instead of publishing inf, and keep the world.
-  SetWorld::Request request;
-  request.bodies = before_.bodies;
-  request.settings = before_.settings;
-  request.settings.gravity.y = -1e308;
-  request.settings.dt = 1.0;
-  const SetWorld set = call<SetWorld>("set_world", request);
-  ASSERT_TRUE(set.response.success) << set.response.message;
-  before_ = get_world();
-
-  StepWorld::Request step_request;
-  step_request.frames = 3;
-  const StepWorld stepped = call<StepWorld>("step_world", step_request);
-  expect_rejected(stepped.response, "overflowed to a non-finite state");
-  EXPECT_TRUE(contains(stepped.response.message, "step_world failed")) << stepped.response.message;
-}
-
-TEST_F(WorldServices, NonFiniteNumbers)
-{
-  BodyMsg bad = disk_msg(0, {0.0, 0.0});
-  bad.pose.x = kNaN;
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): pose.x = nan is not finite");
-  bad = disk_msg(0, {0.0, 0.0});
-  bad.twist.linear.y = kInf;
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): twist.linear.y = inf is not finite");
-  AddBody::Request add;
-  add.body = disk_msg(0, {1.0, 1.0});
-  add.body.radius = kNaN;
-  expect_rejected(call<AddBody>("add_body", add).response, "body: radius = nan is not finite");
-}
-
-TEST_F(WorldServices, NonPositiveMassOrRadius)
-{
-  expect_rejected(set_with_bad_second(disk_msg(0, {0.0, 0.0}, {}, 0.5, 0.0)), "bodies[1] (id 7): mass = 0 must be > 0");
-  expect_rejected(set_with_bad_second(disk_msg(0, {0.0, 0.0}, {}, -0.1)),
-                  "bodies[1] (id 7): radius = -0.1 must be > 0");
-}
-
-TEST_F(WorldServices, BadOutlines)
-{
-  BodyMsg bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
-  bad.vertices.resize(2);
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices: 2 given, a POLYGON needs at least 3");
-  bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
-  std::reverse(bad.vertices.begin(), bad.vertices.end());
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices are clockwise");
-  bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
-  bad.vertices[2].x = 0.0;  // (0.5, 0.5) -> (0, -0.2): a dent at vertex 2
-  bad.vertices[2].y = -0.2;
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices[2]: the outline turns clockwise here");
-  bad = box_msg(0, 1.0, 1.0, {0.0, 0.0});
-  bad.vertices.resize(3);
-  for (std::size_t i = 0; i < 3; ++i)
-  {
-    bad.vertices[i].x = 0.5 * i;  // three distinct points on a line
-    bad.vertices[i].y = 0.0;
-  }
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): vertices enclose zero area");
-}
-
-TEST_F(WorldServices, UnknownShapeType)
-{
-  BodyMsg bad = disk_msg(0, {0.0, 0.0});
-  bad.shape = 2;
-  expect_rejected(set_with_bad_second(bad), "bodies[1] (id 7): shape = 2 is not DISK (0) or POLYGON (1)");
-}
-
-TEST_F(WorldServices, CoincidentCentres)
-{
-  expect_rejected(set_with_bad_second(disk_msg(0, {-10.0, 5.0})), "bodies[0] (id 3) and bodies[1] (id 7)");
-  AddBody::Request add;
-  add.body = disk_msg(0, {before_.bodies.back().pose.x, before_.bodies.back().pose.y}, {}, 0.1);
-  expect_rejected(call<AddBody>("add_body", add).response,
-                  "centre coincides with that of body id " + std::to_string(before_.bodies.back().id));
-}
-
-TEST_F(WorldServices, OutOfRangeSettings)
-{
-  SetWorld::Request request;
-  request.bodies = {disk_msg(0, {0.0, 0.0})};
-  request.settings = before_.settings;
-  request.settings.substeps = 0;
-  expect_rejected(call<SetWorld>("set_world", request).response, "substeps");
-  request.settings = before_.settings;
-  request.settings.friction = 9;
-  expect_rejected(call<SetWorld>("set_world", request).response, "settings: friction = 9 is not AUTO (0), ON (1) or OFF (2)");
-  request.settings = before_.settings;
-  request.settings.solver_mode = 7;
-  expect_rejected(call<SetWorld>("set_world", request).response,
-                  "settings: solver_mode = 7 is not SOLVER_ITERATIVE (0) or SOLVER_EXACT (1)");
-  request.settings = before_.settings;
-  request.settings.position_iterations = 0;
-  expect_rejected(call<SetWorld>("set_world", request).response, "position_iterations");
-
-  StepWorld::Request step_request;
-  step_request.frames = 0;
-  expect_rejected(call<StepWorld>("step_world", step_request).response, "frames = 0 must be in [1, 2000]");
-  step_request.frames = kMaxFrames + 1;
-  expect_rejected(call<StepWorld>("step_world", step_request).response, "frames = 2001");
-  step_request.frames = 1;
-  step_request.dt = kNaN;
-  expect_rejected(call<StepWorld>("step_world", step_request).response, "dt = nan is not finite");
-
-  ResolveContacts::Request resolve;
-  resolve.bodies = {disk_msg(0, {0.0, 0.0})};
-  resolve.settings = ros_test::solver_settings(-0.5, 0.0);
-  expect_rejected(call<ResolveContacts>("resolve_contacts", resolve).response,
-                  "settings: restitution = -0.5 must be in [0, 1]");
-}
-
-TEST_F(WorldServices, UnknownSceneOrBody)
-{
-  LoadScene::Request request;
-  request.scene = "no_such_scene";
-  const LoadScene srv = call<LoadScene>("load_scene", request);
-  expect_rejected(srv.response, "unknown scene 'no_such_scene' (known: ");
-  EXPECT_TRUE(std::find(srv.response.available.begin(), srv.response.available.end(), "pyramid") !=
-              srv.response.available.end());
-  request.scene = "/nonexistent/scene.yaml";
-  expect_rejected(call<LoadScene>("load_scene", request).response, "scene '/nonexistent/scene.yaml'");
-
-  RemoveBody::Request remove;
-  remove.id = 123456;
-  expect_rejected(call<RemoveBody>("remove_body", remove).response, "id 123456: no body with this id");
-}
-
-TEST_F(WorldServices, MoreBodiesThanTheLimit)
-{
-  SetWorld::Request request;
-  request.keep_settings = true;
-  for (std::uint32_t i = 0; i <= kMaxBodies; ++i)
-  {
-    request.bodies.push_back(disk_msg(i, {2.0 * i, 0.0}));
-  }
-  expect_rejected(call<SetWorld>("set_world", request).response, "65 given, more than the limit of 64");
-  // A shipped scene above the limit is refused the same way (pyramid: 210 boxes).
-  LoadScene::Request load_request;
-  load_request.scene = "pyramid";
-  expect_rejected(call<LoadScene>("load_scene", load_request).response, "more than the limit of 64");
-}
-
 }  // namespace
 }  // namespace collision2d
 
@@ -533,7 +259,7 @@ int main(int argc, char** argv)
   ros::NodeHandle handle;
   for (const char* service : {"get_world", "step_world", "load_scene", "set_world", "reset_world"})
   {
-    if (!ros::service::waitForService(service, ros::Duration(collision2d::kServiceWait)))
+    if (!ros::service::waitForService(service, ros::Duration(collision2d::world_services_test::kServiceWait)))
     {
       ADD_FAILURE() << service << " never came up";
     }

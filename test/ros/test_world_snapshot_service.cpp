@@ -1,0 +1,212 @@
+// The world service's snapshots without a master: SaveWorld then LoadWorld
+// brings back the saved frame, a loaded snapshot steps on like the saved
+// world, failed loads leave the world as it was, and autosave keeps the last
+// completed period and every edit.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <ros/time.h>
+
+#include "collision2d/ros/world_service.h"
+#include "collision2d/ros/world_snapshot.h"
+#include "collision2d/scenes/scene_file.h"
+
+#include "snapshot_test_support.h"
+
+namespace collision2d
+{
+namespace ros_interface
+{
+namespace
+{
+using namespace snapshot_test;  // NOLINT: the temporary folder and file helpers
+
+class WorldServiceSnapshotTest : public ::testing::Test
+{
+protected:
+  static void SetUpTestCase() { ::ros::Time::init(); }
+
+  WorldServiceOptions options(std::uint32_t autosave_period) const
+  {
+    WorldServiceOptions out;
+    out.scenes_dir = kScenesDir;
+    out.snapshot_path = folder_.file("world.snapshot.yaml");
+    out.autosave_period = autosave_period;
+    return out;
+  }
+
+  static void load_demo(WorldService& service)
+  {
+    LoadScene::Request request;
+    request.scene = "bouncing_disks";
+    LoadScene::Response response;
+    service.load_scene(request, response);
+    ASSERT_TRUE(response.success) << response.message;
+  }
+
+  static WorldState step(WorldService& service, std::uint32_t frames)
+  {
+    StepWorld::Request request;
+    request.frames = frames;
+    request.return_state = true;
+    StepWorld::Response response;
+    service.step(request, response);
+    EXPECT_TRUE(response.success) << response.message;
+    return response.state.empty() ? WorldState() : response.state.front();
+  }
+
+  /// A restored world has not stepped yet, so no contacts or effects: the
+  /// rest of the state must be exactly the saved one.
+  static void expect_restored(const WorldState& saved, const WorldState& restored)
+  {
+    EXPECT_EQ(restored.frame_count, saved.frame_count);
+    EXPECT_EQ(restored.sim_time, saved.sim_time);
+    EXPECT_EQ(restored.scene, saved.scene);
+    EXPECT_EQ(restored.settings, saved.settings);
+    ASSERT_EQ(restored.bodies.size(), saved.bodies.size());
+    for (std::size_t i = 0; i < saved.bodies.size(); ++i)
+    {
+      EXPECT_TRUE(restored.bodies[i] == saved.bodies[i]) << "body " << saved.bodies[i].id << " differs";
+    }
+  }
+
+  TempFolder folder_;
+};
+
+TEST_F(WorldServiceSnapshotTest, SaveThenLoadBringsBackTheSavedFrame)
+{
+  WorldService service(options(0));
+  load_demo(service);
+  const WorldState saved = step(service, 10);
+  SaveWorld::Request save;
+  SaveWorld::Response saved_response;
+  service.save_world(save, saved_response);
+  ASSERT_TRUE(saved_response.success) << saved_response.message;
+  EXPECT_EQ(saved_response.frame_count, 10u);
+  EXPECT_EQ(saved_response.path, options(0).snapshot_path);
+
+  const WorldState later = step(service, 5);
+  ASSERT_EQ(later.frame_count, 15u);
+  LoadWorld::Request load;
+  LoadWorld::Response loaded;
+  service.load_world(load, loaded);
+  ASSERT_TRUE(loaded.success) << loaded.message;
+  expect_restored(saved, loaded.state);
+
+  // The clock runs on from the saved frame, and reset returns to it.
+  const WorldState resumed = step(service, 3);
+  EXPECT_EQ(resumed.frame_count, 13u);
+  EXPECT_NEAR(resumed.sim_time, saved.sim_time + 3 * saved.settings.dt, 1e-12);
+  std_srvs::Trigger::Response reset;
+  service.reset(reset);
+  expect_restored(saved, service.state());
+}
+
+TEST_F(WorldServiceSnapshotTest, ALoadedSnapshotStepsOnLikeTheSavedWorld)
+{
+  WorldService service(options(0));
+  load_demo(service);
+  step(service, 10);
+  SaveWorld::Request save;
+  SaveWorld::Response saved;
+  service.save_world(save, saved);
+  ASSERT_TRUE(saved.success) << saved.message;
+  const WorldState uninterrupted = step(service, 30);
+
+  LoadWorld::Request load;
+  LoadWorld::Response loaded;
+  service.load_world(load, loaded);
+  ASSERT_TRUE(loaded.success) << loaded.message;
+  const WorldState resumed = step(service, 30);
+  EXPECT_EQ(resumed.frame_count, uninterrupted.frame_count);
+  ASSERT_EQ(resumed.bodies.size(), uninterrupted.bodies.size());
+  for (std::size_t i = 0; i < resumed.bodies.size(); ++i)
+  {
+    EXPECT_TRUE(resumed.bodies[i] == uninterrupted.bodies[i]) << "body " << resumed.bodies[i].id << " differs";
+  }
+}
+
+TEST_F(WorldServiceSnapshotTest, FailedLoadsLeaveTheWorldAsItWas)
+{
+  WorldService service(options(0));
+  load_demo(service);
+  step(service, 4);
+  const WorldState before = service.state();
+
+  LoadWorld::Request load;
+  LoadWorld::Response response;
+  service.load_world(load, response);  // default path, nothing saved yet
+  EXPECT_FALSE(response.success);
+  EXPECT_NE(response.message.find("cannot open snapshot file"), std::string::npos) << response.message;
+
+  load.path = folder_.file("torn.yaml");
+  write_text(load.path, read_text(std::string(kScenesDir) + "/bouncing_disks.yaml") + "---\nframe_count: [");
+  service.load_world(load, response);
+  EXPECT_FALSE(response.success);
+  EXPECT_NE(response.message.find("torn.yaml"), std::string::npos) << response.message;
+
+  WorldService no_default(WorldServiceOptions{});
+  SaveWorld::Response save_response;
+  no_default.save_world(SaveWorld::Request(), save_response);
+  EXPECT_FALSE(save_response.success);
+  EXPECT_NE(save_response.message.find("~snapshot_path"), std::string::npos) << save_response.message;
+
+  WorldState after = service.state();
+  after.header = before.header;
+  EXPECT_TRUE(after == before) << "a failed load changed the world";
+}
+
+TEST_F(WorldServiceSnapshotTest, AutosaveKeepsTheLastCompletedPeriodAndEveryEdit)
+{
+  constexpr std::uint32_t kPeriod = 5;
+  WorldService service(options(kPeriod));
+  load_demo(service);
+  const std::string path = options(kPeriod).snapshot_path;
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 0u) << "a new world is saved at once";
+
+  WorldState at_five;
+  for (std::uint32_t frame = 1; frame <= 7; ++frame)
+  {
+    const WorldState state = step(service, 1);
+    if (frame == kPeriod)
+    {
+      at_five = state;
+    }
+  }
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 5u);
+  WorldService reader(options(0));
+  reader.load_snapshot(path);
+  expect_restored(at_five, reader.state());
+  step(service, 12);  // 7 -> 19 passes 10 and 15: saved at the end of the call
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 19u);
+
+  RemoveBody::Request remove;
+  remove.id = 0;
+  RemoveBody::Response removed;
+  service.remove_body(remove, removed);
+  ASSERT_TRUE(removed.success) << removed.message;
+  const WorldState edited = service.state();
+  EXPECT_EQ(load_snapshot_file(path).ids.front(), 1u) << "an edit is saved at once";
+
+  // A new node on the same file (a respawn) restores the last save.
+  WorldService respawned(options(kPeriod));
+  respawned.load_snapshot("");
+  expect_restored(edited, respawned.state());
+  step(respawned, 1);
+  EXPECT_EQ(load_snapshot_file(path).clock.frames, 20u) << "the period counts on from the restored frame";
+}
+
+}  // namespace
+}  // namespace ros_interface
+}  // namespace collision2d

@@ -15,6 +15,8 @@
 #include "collision2d/ros/conversions.h"
 #include "collision2d/ros/world_service.h"
 
+#include "ros_test_helpers.h"
+
 namespace collision2d
 {
 namespace ros_interface
@@ -25,17 +27,10 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::size_t kManyBodies = 1000;
 
+/// A dynamic disk at rest (ros_test::disk_msg with the position as x, y).
 inline BodyMsg disk(std::uint32_t id, double x, double y, double radius = 0.5, double mass = 1.0)
 {
-  BodyMsg msg;
-  msg.id = id;
-  msg.shape = BodyMsg::DISK;
-  msg.type = BodyMsg::DYNAMIC;
-  msg.mass = mass;
-  msg.radius = radius;
-  msg.pose.x = x;
-  msg.pose.y = y;
-  return msg;
+  return ros_test::disk_msg(id, Vec2{x, y}, Vec2{}, radius, mass);
 }
 
 inline BodyMsg polygon(std::uint32_t id, const std::vector<Vec2>& outline, double x = 0.0, double y = 0.0)

@@ -75,6 +75,20 @@ struct StepReport
 
 using BodyId = std::uint32_t;
 
+/// Soft step: the frame that detected a contact point's manifold. While the
+/// pair's relative pose stays within WorldSettings::contact_reuse_distance of
+/// it, later frames keep that manifold (normal, lever arms, features) and
+/// follow its gaps from the bodies' pose changes instead of detecting again.
+struct ContactOrigin
+{
+  Vec2 r_a;                      ///< lever arm from a's centre to the point then (m)
+  Vec2 r_b;                      ///< from b's centre (m)
+  double separation = 0.0;       ///< the gap then (m), > 0 apart
+  double theta_a = 0.0;          ///< a's angle then (rad)
+  double theta_b = 0.0;          ///< b's angle then (rad)
+  bool known = false;            ///< false: not recorded (detect again)
+};
+
 /// A contact point of the last substep with the impulses it carried.
 struct WorldContact
 {
@@ -86,6 +100,7 @@ struct WorldContact
   /// Soft step: how far b has slipped along the tangent relative to a at the
   /// point since the contact last stuck (m); static friction pulls it back.
   double anchor_drift = 0.0;
+  ContactOrigin origin;  ///< soft step: where its manifold was detected
 };
 
 /// What a step carries into the next besides the bodies, settings and clock:

@@ -97,6 +97,7 @@ struct ContactPoint
   bool active = true;            ///< World: false for a point the velocity prediction leaves out
   bool exact = false;            ///< World: solved by its island's LCP this substep
   bool position_solved = false;  ///< World: penetration corrected by its island's LCP
+  bool kept = false;             ///< World, soft step: its manifold kept from an earlier frame (lever arms set)
   std::uint32_t feature = 0;     ///< detection's feature id (beside the flags: no padding)
 
   // Detection.

@@ -216,7 +216,9 @@ void World::set_step_state(const StepState& state)
                                   " and " + std::to_string(c.b) + " (known ids, a < b)");
     }
     if (!is_finite(c.contact.normal) || !is_finite(c.contact.point) || !std::isfinite(c.contact.penetration) ||
-        !std::isfinite(c.impulse.normal) || !std::isfinite(c.impulse.tangent) || !std::isfinite(c.anchor_drift))
+        !std::isfinite(c.impulse.normal) || !std::isfinite(c.impulse.tangent) || !std::isfinite(c.anchor_drift) ||
+        !is_finite(c.origin.r_a) || !is_finite(c.origin.r_b) || !std::isfinite(c.origin.separation) ||
+        !std::isfinite(c.origin.theta_a) || !std::isfinite(c.origin.theta_b))
     {
       throw std::invalid_argument(where + "contacts[" + std::to_string(k) + "] is not finite");
     }

@@ -140,6 +140,17 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     row.separation = m.points[c].separation;
     row.feature = m.points[c].feature;
     row.count = m.count;
+    if (reuse_distance_ > 0.0)
+    {
+      const std::size_t at = pair_rows_[k] + static_cast<std::size_t>(c);
+      origins_[at] = point_origin(k, c);
+      row.kept = kept_from_[k] != std::numeric_limits<std::size_t>::max();
+      if (row.kept)
+      {
+        row.r_a = origins_[at].r_a;
+        row.r_b = origins_[at].r_b;
+      }
+    }
     deepest = std::max(deepest, row.penetration);
     const WorldContact* cached =
         warm_scale > 0.0 || friction ? find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature) : nullptr;

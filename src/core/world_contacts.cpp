@@ -2,6 +2,7 @@
 // published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
 #include <atomic>
+#include <limits>
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
@@ -55,6 +56,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 {
   pose_bodies();
   margin_ = margin;
+  reuse_distance_ = prepare != nullptr ? settings_.contact_reuse_distance : 0.0;
   // A mover that reaches a sleeping island wakes all of it, and the woken
   // bodies are movers for a second look: the island's contacts are solved in
   // the frame it wakes.
@@ -68,6 +70,10 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   const bool friction = ctx.effects.friction;
   const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
   resize_to_overwrite(points_, rows);  // add_manifold writes every row
+  if (reuse_distance_ > 0.0)
+  {
+    origins_.resize(rows);
+  }
   if (prepare != nullptr)
   {
     soft_rows_.expect_points(rows);
@@ -166,6 +172,7 @@ void WorldImpl::find_mover_pairs()
   // again. The result is the same for any number of workers.
   resize_to_overwrite(manifolds_, pairs_.size());  // collide_range writes every slot
   resize_to_overwrite(collided_, pairs_.size());
+  kept_from_.assign(pairs_.size(), std::numeric_limits<std::size_t>::max());
   workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
 }
 
@@ -282,7 +289,11 @@ void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
     const std::size_t j = w.pairs_[k].second;
     Collided& result = w.collided_[k];
     result = Collided::NotTried;
-    if (w.dynamic_pair(i, j))  // every pair found has a mover (find_mover_pairs)
+    if (w.dynamic_pair(i, j) && w.keep_manifold(k, i, j))
+    {
+      result = Collided::Hit;
+    }
+    else if (w.dynamic_pair(i, j))  // every pair found has a mover (find_mover_pairs)
     {
       result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k], true) ? Collided::Hit : Collided::Miss;
     }
@@ -331,6 +342,7 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
+      c.origin = soft_frame && reuse_distance_ > 0.0 ? origins_[k] : ContactOrigin{};
     }
     raise_to(deepest, range_deepest);
   });

@@ -53,8 +53,11 @@ void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t be
     }
     const Body& a = bodies_[p.a];
     const Body& b = bodies_[p.b];
-    p.r_a = p.point - a.position();
-    p.r_b = p.point - b.position();
+    if (!p.kept)
+    {
+      p.r_a = p.point - a.position();
+      p.r_b = p.point - b.position();
+    }
     p.inv_mass_a = a.inv_mass();
     p.inv_mass_b = b.inv_mass();
     const Material& ma = materials_[p.a];

@@ -47,6 +47,16 @@ WorldContact read_contact(const YAML::Node& node)
   c.sliding = node["sliding"].as<bool>();
   // Snapshots written before anchors existed have none: the contact restarts from where it is.
   c.anchor_drift = node["anchor"] ? node["anchor"].as<double>() : 0.0;
+  // ... nor origins: the next frame finds the contact's points again.
+  if (const YAML::Node origin = node["origin"])
+  {
+    c.origin.r_a = read_vec(origin["r_a"]);
+    c.origin.r_b = read_vec(origin["r_b"]);
+    c.origin.separation = origin["gap"].as<double>();
+    c.origin.theta_a = origin["theta_a"].as<double>();
+    c.origin.theta_b = origin["theta_b"].as<double>();
+    c.origin.known = true;
+  }
   return c;
 }
 
@@ -75,7 +85,17 @@ void write_step_state(std::ostream& out, const StepState& state)
     write_vec(out, c.contact.point);
     out << ", depth: " << format_number(c.contact.penetration) << ", impulse: ";
     write_vec(out, Vec2{c.impulse.normal, c.impulse.tangent});
-    out << ", sliding: " << (c.sliding ? "true" : "false") << ", anchor: " << format_number(c.anchor_drift) << "}\n";
+    out << ", sliding: " << (c.sliding ? "true" : "false") << ", anchor: " << format_number(c.anchor_drift);
+    if (c.origin.known)
+    {
+      out << ", origin: {r_a: ";
+      write_vec(out, c.origin.r_a);
+      out << ", r_b: ";
+      write_vec(out, c.origin.r_b);
+      out << ", gap: " << format_number(c.origin.separation) << ", theta_a: " << format_number(c.origin.theta_a)
+          << ", theta_b: " << format_number(c.origin.theta_b) << "}";
+    }
+    out << "}\n";
   }
 }
 

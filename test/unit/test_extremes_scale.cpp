@@ -126,6 +126,7 @@ World column_world(double L, bool scale_settings, bool with_disk)
     s.sleep_linear_speed *= L;
     s.contact_push_speed *= L;
     s.speculative_margin *= L;
+    s.contact_reuse_distance *= L;
   }
   return make_world(scene);
 }

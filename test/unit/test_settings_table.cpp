@@ -100,9 +100,9 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
   // gravity, dt, substeps, velocity_iterations, slop, compliance,
   // restitution_threshold, toi_displacement_fraction, three sleep thresholds,
   // position_iterations, the soft step's contact_hertz,
-  // contact_damping_ratio, contact_push_speed and speculative_margin, and
-  // workers have bounds or must be finite.
-  EXPECT_EQ(refused, 17u);
+  // contact_damping_ratio, contact_push_speed, speculative_margin and
+  // contact_reuse_distance, and workers have bounds or must be finite.
+  EXPECT_EQ(refused, 18u);
 }
 
 TEST(SettingsTable, ValidationMessagesKeepTheirWording)

@@ -41,7 +41,9 @@ std::vector<unsigned char> state_bytes(const World& world, const StepReport& rep
     for (double v : {static_cast<double>(c.a), static_cast<double>(c.b), c.contact.normal.x, c.contact.normal.y,
                      c.contact.point.x, c.contact.point.y, c.contact.penetration,
                      static_cast<double>(c.contact.feature), c.impulse.normal, c.impulse.tangent,
-                     c.sliding ? 1.0 : 0.0, c.anchor_drift})
+                     c.sliding ? 1.0 : 0.0, c.anchor_drift, c.origin.r_a.x, c.origin.r_a.y, c.origin.r_b.x,
+                     c.origin.r_b.y, c.origin.separation, c.origin.theta_a, c.origin.theta_b,
+                     c.origin.known ? 1.0 : 0.0})
     {
       add(v);
     }

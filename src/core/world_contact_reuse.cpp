@@ -1,0 +1,111 @@
+// Soft step: a pair's manifold kept across frames. While the pair's relative
+// pose stays close to the one its manifold was detected at, the frame keeps
+// that manifold's normal, lever arms and features and follows each point's
+// gap from the bodies' pose changes, as the substeps do within a frame. A
+// resting stack then keeps the contact geometry it settled with: detecting
+// again each frame re-aims each normal along its lower box's tilt and moves
+// its points with the tilt, which lets a tall column buckle under its load
+// (docs/performance.md, the nudged column).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "turn.h"
+#include "world_impl.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// A kept manifold's bodies may each turn this much at most (cosine of about
+/// 11 degrees): past it, its lever arms point too far from the bodies' corners.
+constexpr double kMinKeptCos = 0.98;
+
+bool same_pair(const WorldContact& c, BodyId a, BodyId b) { return c.a == a && c.b == b; }
+
+}  // namespace
+
+bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j)
+{
+  const Body& a = bodies_[i];
+  const Body& b = bodies_[j];
+  // A disk's contact point moves around it as it rolls: detect again.
+  if (reuse_distance_ <= 0.0 || a.shape() == Shape::Disk || b.shape() == Shape::Disk)
+  {
+    return false;
+  }
+  const BodyId id_a = ids_[i];
+  const BodyId id_b = ids_[j];
+  const auto first = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(id_a, id_b),
+                                      [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
+                                        return c.a < key.first || (c.a == key.first && c.b < key.second);
+                                      });
+  if (first == cache_.end() || !same_pair(*first, id_a, id_b) || !first->origin.known)
+  {
+    return false;
+  }
+  const ContactOrigin& o = first->origin;
+  const double turn_a = a.theta() - o.theta_a;
+  const double turn_b = b.theta() - o.theta_b;
+  double cos_a = 1.0;
+  double sin_a = 0.0;
+  double cos_b = 1.0;
+  double sin_b = 0.0;
+  turn_of(turn_a, cos_a, sin_a);
+  turn_of(turn_b, cos_b, sin_b);
+  if (cos_a <= kMinKeptCos || cos_b <= kMinKeptCos)
+  {
+    return false;
+  }
+  // How far the pair has moved relative to each other since (in a's frame):
+  // the centres' offset, and any point turning about b's centre.
+  double cos_a0 = 1.0;
+  double sin_a0 = 0.0;
+  turn_of(o.theta_a, cos_a0, sin_a0);
+  const Vec2 offset_then = rotate_inv(o.r_a - o.r_b, cos_a0, sin_a0);
+  const Vec2 offset_now = rotate_inv(b.position() - a.position(), a.cos_theta(), a.sin_theta());
+  const double extent = std::max(a.type() == BodyType::Static ? 0.0 : a.radius(),
+                                 b.type() == BodyType::Static ? 0.0 : b.radius());
+  const double moved = length(offset_now - offset_then) + extent * std::abs(std::sin(turn_b - turn_a));
+  if (!(moved < reuse_distance_))
+  {
+    return false;
+  }
+  Manifold& m = manifolds_[k];
+  m.normal = first->contact.normal;
+  m.count = first + 1 != cache_.end() && same_pair(first[1], id_a, id_b) ? 2 : 1;
+  for (int c = 0; c < m.count; ++c)
+  {
+    const WorldContact& cached = first[c];
+    const Vec2 r_a = rotate(cached.origin.r_a, cos_a, sin_a);
+    const Vec2 r_b = rotate(cached.origin.r_b, cos_b, sin_b);
+    const double s = cached.origin.separation + dot(b.position() - a.position() + r_b - r_a, m.normal);
+    m.points[c] = ManifoldPoint{a.position() + r_a, std::max(0.0, -s), s, cached.contact.feature};
+  }
+  kept_from_[k] = static_cast<std::size_t>(first - cache_.begin());
+  return true;
+}
+
+ContactOrigin WorldImpl::point_origin(std::size_t k, int c) const
+{
+  if (kept_from_[k] != std::numeric_limits<std::size_t>::max())
+  {
+    return cache_[kept_from_[k] + static_cast<std::size_t>(c)].origin;
+  }
+  const Body& a = bodies_[pairs_[k].first];
+  const Body& b = bodies_[pairs_[k].second];
+  const Manifold& m = manifolds_[k];
+  ContactOrigin o;
+  o.r_a = m.points[c].point - a.position();
+  o.r_b = m.points[c].point - b.position();
+  o.separation = m.points[c].separation;
+  o.theta_a = a.theta();
+  o.theta_b = b.theta();
+  o.known = true;
+  return o;
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -84,7 +84,7 @@ struct Material
   X(contact_damping_ratio, double, 10.0, kNonNegative, "", "Soft step: damping ratio of the contact spring") \
   X(contact_push_speed, double, 3.0, kPositive, "m/s", "Soft step: fastest a penetration is pushed out") \
   X(speculative_margin, double, 0.02, kNonNegative, "m", "Soft step: pairs within this gap get contacts before they touch") \
-  X(contact_reuse_distance, double, 0.0, kNonNegative, "m", "Soft step: a pair keeps its contact points while it moves less than this since they were found (0: find them every frame)") \
+  X(contact_reuse_distance, double, 0.05, kNonNegative, "m", "Soft step: a pair keeps its contact points while it moves less than this since they were found (0: find them every frame)") \
   X(workers, int, 1, kWorkerCount, "", "Threads stepping the world (narrow phase, soft contact passes); trajectories are the same for any count")
 // clang-format on
 

@@ -42,7 +42,8 @@ KNOB_LABELS = {"warm_starting": "warm {}", "time_of_impact": "TOI {}", "position
                "position_block": "position block {}", "warm_start_every_substep": "warm every substep {}",
                "warm_start_factor": "warm factor {}", "exact_position_correction": "exact position correction {}",
                "contact_hertz": "{} Hz", "contact_damping_ratio": "damping ratio {}",
-               "contact_push_speed": "push {} m/s", "speculative_margin": "margin {} m", "sleeping": "sleeping {}"}
+               "contact_push_speed": "push {} m/s", "speculative_margin": "margin {} m",
+               "contact_reuse_distance": "reuse {} m", "sleeping": "sleeping {}"}
 # Plot colours: ours per pipeline (all points, front), the peers.
 COLOURS = {"soft": ("#f1b6da", "#c51b7d"), "fx2d": ("#9ecae1", "#08519c"), "box2d": "#ff7f00",
            "chipmunk": "#238b45", "box2d_v3": "#6a3d9a"}

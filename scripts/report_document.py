@@ -89,7 +89,8 @@ Box2D v3*; the time ratio is CPU time per frame, wall in the table).
   ratios `exact_position_correction`. Soft step only: `contact_hertz` 10 and
   60 Hz (and 120 Hz at 8 substeps, 240 Hz at 16 on the headline scenes),
   `contact_damping_ratio` 1 and 100, `contact_push_speed` 1 and 10 m/s,
-  `speculative_margin` 5 mm and 10 cm (0 on the bullets). --quick thins
+  `speculative_margin` 5 mm and 10 cm (0 on the bullets),
+  `contact_reuse_distance` 0 and 20 cm. --quick thins
   these lists. {mode_note}
 - **Peers.** Box2D 2.4.1 and Chipmunk 7.0.3 as packaged by Debian (the Chipmunk
   package is built with its debug checks on), and Box2D v3 when the script is
@@ -178,28 +179,25 @@ drifts 34 and 88 mm.
 
 Why a nudged column (`stack_column_20_nudged`, the column with its top box
 1 um off centre): the exact column is symmetric to the last bit, so nothing
-can start it tipping, and its drift says nothing about a user's column. The
-soft step lets the nudged one fall at the defaults (the rows below). A soft
-contact resists tilt like a spring of stiffness m_eff (2 pi f)^2 at each
-corner, the same under every box, while the weight above a joint grows down
-the column; a column of 20 unit boxes at 40 Hz is past the height at which
-such a column buckles under its own weight (Greenhill's q L^3 = 7.84 EI,
-with EI the joints' tilt stiffness times the box height: 50 to 56 Hz by
-that estimate, as the joints' masses are counted). Measured at commit 974b0e2 (not this run) by stepping the
-column nudged by 1 um for 60 s: at 45 and 50 Hz it fell, at 55 and 60 Hz
-it stood (the top box stayed within a few um of where it was put), and at
-40 Hz a nudge of 1e-12 m grew tenfold every 4 s and the column lay on the
-ground by 60 s. At 55 Hz the base-60 pyramid drifted 21.2 mm (1 s -> 10 s)
-and at 60 Hz it fell (870 mm by 60 s), so a stiffer default is no answer.
-Box2D v3's contacts are springs of the same kind (its column rests 13.4 mm
-deep at 30 Hz, load over m_eff (2 pi f)^2 with its per-point m_eff), yet
-its nudged column stands at 30 Hz even under 4 g, and at 10 Hz, where its
-springs alone are far past the buckling height. In a scratch build of
-Box2D v3 (not committed) without its relax pass, the nudged column fell at
-10 Hz; with friction solved in the biased pass as well, it still stood. So
-what holds Box2D v3's column is its relax pass, not its springs; ours has a
-relax pass of the same kind and does not get that from it. Open: a soft
-contact that holds a nudged column at the defaults.
+can start it tipping, and its drift says nothing about a user's column.
+With its contact points found again every frame the soft step let the
+nudged column fall at the defaults: each normal was re-aimed along the tilt
+of the box below and the points moved with the tilt, so the contacts gave
+way to the column's own weight. Measured at commit 974b0e2 (not this run):
+a nudge of 1e-12 m grew tenfold every 4 s at 40 Hz and the column lay on
+the ground by 60 s; stiffer contacts held it only from 55 Hz, where the
+base-60 pyramid drifted 21.2 mm (1 s -> 10 s), and at 60 Hz that pyramid
+fell. Box2D v3 keeps a pair's manifold from frame to frame while the pair
+moves little (its contact recycling); in a scratch build of it (not
+committed) with that distance set to 0, its nudged column fell too (the top
+box on the ground by 20 s), and with its default it stood. The soft step
+now does the same (`contact_reuse_distance`, 5 cm by default: a pair keeps
+its normal, lever arms and features while it has moved less than that
+since they were found, and follows its gaps from the bodies' poses), and
+the nudged column stands like the exact one (the rows below;
+`test_world_contact_reuse` steps it 30 s: the top box travels 2.6e-7 m,
+and 5.06 m with the distance set to 0). Resting pairs then skip the narrow
+phase too, which is part of the stacks' time.
 
 {stacks_section(stacks, default)}
 ## Stacks standing for a minute (base-20 pyramid and 20-box column of the sweep)

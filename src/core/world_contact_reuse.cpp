@@ -27,7 +27,7 @@ bool same_pair(const WorldContact& c, BodyId a, BodyId b) { return c.a == a && c
 
 }  // namespace
 
-bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j)
+bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::size_t& cursor)
 {
   const Body& a = bodies_[i];
   const Body& b = bodies_[j];
@@ -38,14 +38,12 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j)
   }
   const BodyId id_a = ids_[i];
   const BodyId id_b = ids_[j];
-  const auto first = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(id_a, id_b),
-                                      [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
-                                        return c.a < key.first || (c.a == key.first && c.b < key.second);
-                                      });
-  if (first == cache_.end() || !same_pair(*first, id_a, id_b) || !first->origin.known)
+  const std::size_t at = cached_pair(cursor, id_a, id_b);
+  if (at >= cache_.size() || !same_pair(cache_[at], id_a, id_b) || !cache_[at].origin.known)
   {
     return false;
   }
+  const auto first = cache_.begin() + static_cast<std::ptrdiff_t>(at);
   const ContactOrigin& o = first->origin;
   const double turn_a = a.theta() - o.theta_a;
   const double turn_b = b.theta() - o.theta_b;
@@ -68,12 +66,13 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j)
   const Vec2 offset_now = rotate_inv(b.position() - a.position(), a.cos_theta(), a.sin_theta());
   const double extent = std::max(a.type() == BodyType::Static ? 0.0 : a.radius(),
                                  b.type() == BodyType::Static ? 0.0 : b.radius());
-  const double moved = length(offset_now - offset_then) + extent * std::abs(std::sin(turn_b - turn_a));
+  const double moved = length(offset_now - offset_then) + extent * std::abs(sin_b * cos_a - cos_b * sin_a);
   if (!(moved < reuse_distance_))
   {
     return false;
   }
   Manifold& m = manifolds_[k];
+  kept_from_[k] = at;
   m.normal = first->contact.normal;
   m.count = first + 1 != cache_.end() && same_pair(first[1], id_a, id_b) ? 2 : 1;
   for (int c = 0; c < m.count; ++c)
@@ -84,13 +83,12 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j)
     const double s = cached.origin.separation + dot(b.position() - a.position() + r_b - r_a, m.normal);
     m.points[c] = ManifoldPoint{a.position() + r_a, std::max(0.0, -s), s, cached.contact.feature};
   }
-  kept_from_[k] = static_cast<std::size_t>(first - cache_.begin());
   return true;
 }
 
 ContactOrigin WorldImpl::point_origin(std::size_t k, int c) const
 {
-  if (kept_from_[k] != std::numeric_limits<std::size_t>::max())
+  if (kept(k))
   {
     return cache_[kept_from_[k] + static_cast<std::size_t>(c)].origin;
   }

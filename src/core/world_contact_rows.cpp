@@ -92,7 +92,7 @@ void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cache
     pair_cache_[k] = c;
     if (cached && count > 0)
     {
-      pair_cache_[k] = cached_pair(cursor, ids_[pairs_[k].first], ids_[pairs_[k].second]);
+      pair_cache_[k] = kept(k) ? (cursor = kept_from_[k]) : cached_pair(cursor, ids_[pairs_[k].first], ids_[pairs_[k].second]);
       placed.looked_up = true;
       placed.last_lookup = pair_cache_[k];
     }
@@ -113,7 +113,11 @@ void WorldImpl::place_pairs_in_order(bool cached)
       continue;
     }
     const int count = manifolds_[k].count;
-    pair_cache_[k] = cached && count > 0 ? cached_pair(ids_[pairs_[k].first], ids_[pairs_[k].second]) : cache_.size();
+    pair_cache_[k] = cache_.size();
+    if (cached && count > 0)
+    {
+      pair_cache_[k] = kept(k) ? (cache_cursor_ = kept_from_[k]) : cached_pair(ids_[pairs_[k].first], ids_[pairs_[k].second]);
+    }
     rows += static_cast<std::size_t>(count);
   }
   pair_rows_[pairs_.size()] = rows;
@@ -144,7 +148,7 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     {
       const std::size_t at = pair_rows_[k] + static_cast<std::size_t>(c);
       origins_[at] = point_origin(k, c);
-      row.kept = kept_from_[k] != std::numeric_limits<std::size_t>::max();
+      row.kept = kept(k);
       if (row.kept)
       {
         row.r_a = origins_[at].r_a;
@@ -152,8 +156,13 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
       }
     }
     deepest = std::max(deepest, row.penetration);
-    const WorldContact* cached =
-        warm_scale > 0.0 || friction ? find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature) : nullptr;
+    // A kept manifold's points are its cached contacts, in order.
+    const WorldContact* cached = nullptr;
+    if (warm_scale > 0.0 || friction)
+    {
+      cached = row.kept ? &cache_[kept_from_[k] + static_cast<std::size_t>(c)]
+                        : find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature);
+    }
     if (cached != nullptr)
     {
       row.lambda_n = warm_scale * cached->impulse.normal;

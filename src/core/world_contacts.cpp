@@ -172,7 +172,7 @@ void WorldImpl::find_mover_pairs()
   // again. The result is the same for any number of workers.
   resize_to_overwrite(manifolds_, pairs_.size());  // collide_range writes every slot
   resize_to_overwrite(collided_, pairs_.size());
-  kept_from_.assign(pairs_.size(), std::numeric_limits<std::size_t>::max());
+  kept_from_.assign(pairs_.size(), kNotKept);
   workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
 }
 
@@ -283,20 +283,23 @@ bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Man
 void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
 {
   WorldImpl& w = *static_cast<WorldImpl*>(world);
+  std::size_t cursor = w.cache_.size() + 1;  // the range's first lookup searches
   for (std::size_t k = begin; k < end; ++k)
   {
     const std::size_t i = w.pairs_[k].first;
     const std::size_t j = w.pairs_[k].second;
     Collided& result = w.collided_[k];
     result = Collided::NotTried;
-    if (w.dynamic_pair(i, j) && w.keep_manifold(k, i, j))
+    if (!w.dynamic_pair(i, j))
+    {
+      continue;  // every pair found has a mover (find_mover_pairs)
+    }
+    if (w.keep_manifold(k, i, j, cursor))                 // world_contact_reuse.cpp
     {
       result = Collided::Hit;
+      continue;
     }
-    else if (w.dynamic_pair(i, j))  // every pair found has a mover (find_mover_pairs)
-    {
-      result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k], true) ? Collided::Hit : Collided::Miss;
-    }
+    result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k], true) ? Collided::Hit : Collided::Miss;
   }
 }
 

@@ -213,10 +213,13 @@ struct WorldImpl
   static void collide_range(void* world, std::size_t begin, std::size_t end);
   bool dynamic_pair(std::size_t i, std::size_t j) const;
   /// Soft step: pair k's manifold from its cached contacts when the pair has
-  /// moved little since they were detected (world_contact_reuse.cpp).
-  bool keep_manifold(std::size_t k, std::size_t i, std::size_t j);
+  /// moved little since they were detected (world_contact_reuse.cpp);
+  /// `cursor` as cached_pair's.
+  bool keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::size_t& cursor);
   /// Where pair k's manifold point c was detected (world_contact_reuse.cpp).
   ContactOrigin point_origin(std::size_t k, int c) const;
+  /// Whether pair k's manifold was kept (its points are cache_ from kept_from_[k]).
+  bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
   /// Each pair's first row (pair_rows_) and cache entry (pair_cache_), as one
@@ -360,7 +363,7 @@ struct WorldImpl
   double margin_ = 0.0;               ///< this detection's speculative margin (m)
   std::vector<Manifold> manifolds_;
   std::vector<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
-  std::vector<std::size_t> kept_from_;  ///< soft step: each pair's first cached contact when its manifold is kept, else npos
+  std::vector<std::size_t> kept_from_;  ///< soft step: each pair's first cached contact when its manifold is kept, else kNotKept
   std::vector<ContactOrigin> origins_;  ///< soft step: each point's origin, published with it
   double reuse_distance_ = 0.0;         ///< this detection's contact_reuse_distance (m), 0: none
   /// Polygon i's world vertices, then its face normals, from posed_offset_[i]

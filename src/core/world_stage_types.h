@@ -57,6 +57,8 @@ constexpr std::size_t kMinSharedPoints = 1024;
 /// Broad-phase pairs below which filling their contact rows stays on the
 /// calling thread.
 constexpr std::size_t kMinSharedPairs = 1024;
+/// kept_from_ of a pair whose manifold was found by the narrow phase.
+constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);
 
 /// What select_effects needs to know of the bodies (world_effects.cpp).
 struct BodyCensus

@@ -8,7 +8,6 @@
 // (docs/performance.md, the nudged column).
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "turn.h"
 #include "world_impl.h"

@@ -92,7 +92,9 @@ void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cache
     pair_cache_[k] = c;
     if (cached && count > 0)
     {
-      pair_cache_[k] = kept(k) ? (cursor = kept_from_[k]) : cached_pair(cursor, ids_[pairs_[k].first], ids_[pairs_[k].second]);
+      const BodyId a = ids_[pairs_[k].first];
+      const BodyId b = ids_[pairs_[k].second];
+      pair_cache_[k] = kept(k) ? (cursor = kept_from_[k]) : cached_pair(cursor, a, b);
       placed.looked_up = true;
       placed.last_lookup = pair_cache_[k];
     }
@@ -116,7 +118,9 @@ void WorldImpl::place_pairs_in_order(bool cached)
     pair_cache_[k] = cache_.size();
     if (cached && count > 0)
     {
-      pair_cache_[k] = kept(k) ? (cache_cursor_ = kept_from_[k]) : cached_pair(ids_[pairs_[k].first], ids_[pairs_[k].second]);
+      const BodyId a = ids_[pairs_[k].first];
+      const BodyId b = ids_[pairs_[k].second];
+      pair_cache_[k] = kept(k) ? (cache_cursor_ = kept_from_[k]) : cached_pair(a, b);
     }
     rows += static_cast<std::size_t>(count);
   }

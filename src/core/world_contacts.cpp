@@ -2,7 +2,6 @@
 // published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
 #include <atomic>
-#include <limits>
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"

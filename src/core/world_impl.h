@@ -363,7 +363,8 @@ struct WorldImpl
   double margin_ = 0.0;               ///< this detection's speculative margin (m)
   std::vector<Manifold> manifolds_;
   std::vector<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
-  std::vector<std::size_t> kept_from_;  ///< soft step: each pair's first cached contact when its manifold is kept, else kNotKept
+  /// Soft step: each pair's first cached contact when its manifold is kept, else kNotKept.
+  std::vector<std::size_t> kept_from_;
   std::vector<ContactOrigin> origins_;  ///< soft step: each point's origin, published with it
   double reuse_distance_ = 0.0;         ///< this detection's contact_reuse_distance (m), 0: none
   /// Polygon i's world vertices, then its face normals, from posed_offset_[i]

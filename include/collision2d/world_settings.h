@@ -46,6 +46,8 @@ struct Material
 //    the frame that found them while the pair moves less than this relative to
 //    then; their gaps follow the bodies. A tall column stands on kept points
 //    (found again each frame, their normals tilt with it and it buckles).
+//    Capped at speculative_margin: a feature that was out of reach then cannot
+//    reach the other body before the pair is found again.
 
 // The one table of the world's settings. Adding a setting is
 // one line here; cfg/Collision2d.cfg reads these lines, so keep each entry
@@ -84,7 +86,7 @@ struct Material
   X(contact_damping_ratio, double, 10.0, kNonNegative, "", "Soft step: damping ratio of the contact spring") \
   X(contact_push_speed, double, 3.0, kPositive, "m/s", "Soft step: fastest a penetration is pushed out") \
   X(speculative_margin, double, 0.02, kNonNegative, "m", "Soft step: pairs within this gap get contacts before they touch") \
-  X(contact_reuse_distance, double, 0.05, kNonNegative, "m", "Soft step: a pair keeps its contact points while it moves less than this since they were found (0: find them every frame)") \
+  X(contact_reuse_distance, double, 0.02, kNonNegative, "m", "Soft step: a pair keeps its contact points while it moves less than this and speculative_margin since they were found (0: find them every frame)") \
   X(workers, int, 1, kWorkerCount, "", "Threads stepping the world (narrow phase, soft contact passes); trajectories are the same for any count")
 // clang-format on
 

@@ -55,7 +55,9 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
 {
   pose_bodies();
   margin_ = margin;
-  reuse_distance_ = prepare != nullptr ? settings_.contact_reuse_distance : 0.0;
+  // Kept within the margin: a feature out of reach when the points were found
+  // cannot reach the other body before the pair is found again.
+  reuse_distance_ = prepare != nullptr ? std::min(settings_.contact_reuse_distance, margin) : 0.0;
   // A mover that reaches a sleeping island wakes all of it, and the woken
   // bodies are movers for a second look: the island's contacts are solved in
   // the frame it wakes.

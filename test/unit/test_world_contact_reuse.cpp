@@ -20,8 +20,8 @@ constexpr double kNudge = 1e-6;
 /// Simulated time of the column runs (s): a buckling column grows tenfold
 /// in about 4 s, so the nudge reaches metres well within it.
 constexpr double kColumnSeconds = 30.0;
-/// The distance the tests keep points within (m): about a twentieth of a box.
-constexpr double kDistance = 0.05;
+/// The distance the tests keep points within (m): the default margin.
+constexpr double kDistance = 0.02;
 
 /// How far pair (a, b) has moved relative to each other since its origin (in
 /// a's frame), by the rule the step keeps points with (m).
@@ -74,7 +74,7 @@ TEST(ContactReuse, PointsAreKeptExactlyWhileThePairHasMovedLessThanTheDistance)
   World world = make_world(scene);
   const BodyId ground = world.body_ids().front();
   const BodyId box = world.body_ids().back();
-  const double distance = kDistance;
+  const double distance = std::min(kDistance, scene.settings.speculative_margin);
   world.step();
   int found = 0;
   int kept = 0;
@@ -94,6 +94,39 @@ TEST(ContactReuse, PointsAreKeptExactlyWhileThePairHasMovedLessThanTheDistance)
   std::printf("sliding box: points found again %d times, kept %d frames (distance %.3g m)\n", found, kept, distance);
   EXPECT_GT(found, 0);
   EXPECT_GT(kept, found);
+}
+
+TEST(ContactReuse, ACornerOutOfReachIsFoundBeforeItReachesTheGround)
+{
+  // A 1 m x 0.2 m plank tilted 2 degrees lands on its low corner; its high
+  // corner, 3.5 cm up, is beyond the margin, so the first points found have
+  // only the low corner. The plank turns down onto its face: the pair is found
+  // again before the high corner can reach the ground, even with a distance
+  // above the margin (points kept 5 cm let it sink 16 mm into the ground).
+  const double tilt = 2.0 * 3.14159265358979323846 / 180.0;
+  const double half_length = 0.5;
+  const double half_height = 0.1;
+  Scene scene = scenes::resting_box();
+  const std::vector<Vec2> outline = {
+      {-half_length, -half_height}, {half_length, -half_height}, {half_length, half_height}, {-half_length, half_height}};
+  const double lowest = half_height * std::cos(tilt) + half_length * std::sin(tilt);
+  scene.bodies.back().body = Body(1.0, outline, Vec2{0.0, lowest + 1e-4}, Vec2{0.0, 0.0}, tilt);
+  scene.settings.contact_reuse_distance = 0.05;
+  ASSERT_GT(2.0 * half_length * std::sin(tilt), scene.settings.speculative_margin);
+  World world = make_world(scene);
+  double deepest = 0.0;
+  for (int frame = 0; frame < 120; ++frame)
+  {
+    world.step();
+    for (const WorldContact& c : world.contacts())
+    {
+      deepest = std::max(deepest, c.contact.penetration);
+    }
+  }
+  std::printf("plank landing on a corner: deepest penetration %.3g mm, final angle %.3g rad\n", deepest * 1e3,
+              world.body(world.body_ids().back()).theta());
+  EXPECT_LT(deepest, 1e-3);
+  EXPECT_LT(std::abs(world.body(world.body_ids().back()).theta()), 1e-3);
 }
 
 TEST(ContactReuse, KeptGapsMatchTheNarrowPhase)

@@ -90,7 +90,7 @@ Box2D v3*; the time ratio is CPU time per frame, wall in the table).
   60 Hz (and 120 Hz at 8 substeps, 240 Hz at 16 on the headline scenes),
   `contact_damping_ratio` 1 and 100, `contact_push_speed` 1 and 10 m/s,
   `speculative_margin` 5 mm and 10 cm (0 on the bullets),
-  `contact_reuse_distance` 0 and 20 cm. --quick thins
+  `contact_reuse_distance` 0 and 5 mm. --quick thins
   these lists. {mode_note}
 - **Peers.** Box2D 2.4.1 and Chipmunk 7.0.3 as packaged by Debian (the Chipmunk
   package is built with its debug checks on), and Box2D v3 when the script is
@@ -200,7 +200,7 @@ fell. Box2D v3 keeps a pair's manifold from frame to frame while the pair
 moves little (its contact recycling); in a scratch build of it (not
 committed) with that distance set to 0, its nudged column fell too (the top
 box on the ground by 20 s), and with its default it stood. The soft step
-now does the same (`contact_reuse_distance`, 5 cm by default: a pair keeps
+now does the same (`contact_reuse_distance`, 2 cm by default: a pair keeps
 its normal, lever arms and features while it has moved less than that
 since they were found, and follows its gaps from the bodies' poses), and
 the nudged column stands like the exact one (the rows below;

@@ -197,9 +197,10 @@ a nudge of 1e-12 m grew tenfold every 4 s at 40 Hz and the column lay on
 the ground by 60 s; stiffer contacts held it only from 55 Hz, where the
 base-60 pyramid drifted 21.2 mm (1 s -> 10 s), and at 60 Hz that pyramid
 fell. Box2D v3 keeps a pair's manifold from frame to frame while the pair
-moves little (its contact recycling); in a scratch build of it (not
-committed) with that distance set to 0, its nudged column fell too (the top
-box on the ground by 20 s), and with its default it stood. The soft step
+moves little (its contact recycling); stepped by a scratch driver (not
+committed) with that distance set to 0 (b2World_SetContactRecycleDistance),
+its nudged column fell too (the top box on the ground by 20 s), and with
+its default it stood. The soft step
 now does the same (`contact_reuse_distance`, 2 cm by default: a pair keeps
 its normal, lever arms and features while it has moved less than that
 since they were found, and follows its gaps from the bodies' poses), and

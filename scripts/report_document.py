@@ -152,7 +152,7 @@ weight by compressing, the whole pyramid sinks into them and rebounds. At
 b7dfb95 the base-100 top box was 289 mm below its final height at 0.65 s
 and 107 mm above it at 1.25 s (Box2D v3: 204 mm below at 0.65 s, 53 mm
 above at 1.45 s), and the flank boxes slide a few millimetres while the
-load shifts. With kept contact points (commit 5c477a3, a scratch driver,
+load shifts. With kept contact points (commit 5979d8e, a scratch driver,
 not this run) the base-100 drift 1 s -> 6 s is a smooth field, not boxes
 sliding on each other: neighbours move together, the left flank bulges out
 by up to 17 mm around rows 21 to 30 and every row above 40 rises 10.5 mm.

@@ -96,7 +96,9 @@ struct WorldContact
   BodyId b = 0;
   Contact contact;  ///< indices a/b refer to positions in body_ids()
   ContactImpulse impulse;
-  bool sliding = false;  ///< friction was at its bound (the contact slips)
+  /// Friction was at its bound (the contact slips); in the soft step only
+  /// once it has also slipped WorldSettings::slop since it stuck.
+  bool sliding = false;
   /// Soft step: how far b has slipped along the tangent relative to a at the
   /// point since the contact last stuck (m); static friction pulls it back.
   double anchor_drift = 0.0;

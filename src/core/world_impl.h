@@ -130,7 +130,8 @@ struct WorldImpl
   /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
   double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
   /// After the frame: an active sticking point's slip, carried to the next
-  /// frame (publish_contacts does it on its way through the points).
+  /// frame, and whether it now slides: only past `slop` from where it stuck
+  /// (publish_contacts does it on its way through the points).
   void carry_slip(ContactPoint& p, Vec2 offset) const;
   /// `kick_free`: another substep follows, whose gravity kick a body no
   /// contact touches takes here (integrate_velocities then skips it).

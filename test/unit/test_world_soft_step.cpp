@@ -106,6 +106,70 @@ TEST(WorldSoftStep, InclineSticksBelowAndSlidesAboveTheFrictionAngle)
   EXPECT_NEAR(acceleration, expected, 1e-6);
 }
 
+TEST(WorldSoftStep, InclineHoldsUpToTheFrictionAngleAtAnySubsteps)
+{
+  // While its contacts first compress the box rocks on its corners, and its
+  // friction meets the static bound for a frame. That must not latch the
+  // kinetic cone (mu_k < tan(angle) could never stop it): at rest, the last
+  // substep's impulses carry exactly the box's weight, inside the static
+  // cone. The friction angle is atan(0.5) = 0.4636 rad; one substep holds to
+  // 0.45, two and more to 0.46, and 0.47 slides at g (sin - mu_k cos).
+  const double mu_s = 0.5;
+  const double mu_k = 0.3;
+  const struct
+  {
+    double angle;
+    int substeps;
+    bool holds;
+  } runs[] = {{0.4, 1, true}, {0.4, 2, true}, {0.4, 4, true}, {0.45, 1, true}, {0.46, 2, true},
+              {0.46, 4, true}, {0.47, 1, false}, {0.47, 2, false}, {0.47, 4, false}};
+  for (const auto& run : runs)
+  {
+    Scene scene = scenes::incline(run.angle, mu_s, mu_k);
+    scene.settings.substeps = run.substeps;
+    World world = soft_world(scene);
+    const BodyId box = world.body_ids().back();
+    const Vec2 start = world.body(box).position();
+    const Vec2 downhill{-std::cos(run.angle), -std::sin(run.angle)};
+    world.step(30);
+    const double v0 = dot(world.body(box).velocity(), downhill);
+    world.step(60);
+    const double acceleration = dot(world.body(box).velocity(), downhill) - v0;  // over 1 s
+    if (!run.holds)
+    {
+      const double expected = 9.81 * (std::sin(run.angle) - mu_k * std::cos(run.angle));
+      std::printf("angle %.2f, %d substeps: slides at %.9f m/s^2, g (sin - mu_k cos) = %.9f\n", run.angle,
+                  run.substeps, acceleration, expected);
+      EXPECT_NEAR(acceleration, expected, 1e-6) << run.angle;
+      continue;
+    }
+    world.step(210);
+    const Vec2 at_5s = world.body(box).position();
+    world.step(300);
+    const Body& b = world.body(box);
+    const double h = scene.settings.dt / run.substeps;
+    const double weight = b.mass() * length(scene.settings.gravity) * h;  // N s per substep
+    double normal = 0.0;
+    double tangent = 0.0;
+    for (const WorldContact& c : world.contacts())
+    {
+      normal += c.impulse.normal;
+      tangent += c.impulse.tangent;
+    }
+    const double moved = length(b.position() - start);
+    const double creep = length(b.position() - at_5s);
+    std::printf("angle %.2f, %d substeps: moved %.3g m in 10 s (%.3g m after 5 s), impulses n %.9f t %.9f "
+                "(weight cos %.9f, sin %.9f)\n",
+                run.angle, run.substeps, moved, creep, normal, tangent, weight * std::cos(run.angle),
+                weight * std::sin(run.angle));
+    EXPECT_LT(moved, 1e-3) << run.angle << " rad, " << run.substeps << " substeps: the box slid";
+    EXPECT_LT(creep, 1e-9) << run.angle << " rad, " << run.substeps << " substeps: the box creeps";
+    EXPECT_NEAR(normal, weight * std::cos(run.angle), 1e-6 * weight) << run.angle << ", " << run.substeps;
+    EXPECT_NEAR(std::abs(tangent), weight * std::sin(run.angle), 1e-6 * weight) << run.angle << ", " << run.substeps;
+    EXPECT_LE(std::abs(tangent), mu_s * normal) << "inside the static cone";
+  }
+}
+
 TEST(WorldSoftStep, TwentyBoxColumnStands)
 {
   World world = soft_world(scenes::column(20));

@@ -4,6 +4,8 @@
 #include "soft_rows.h"
 
 #include <algorithm>
+#include <iterator>
+#include <type_traits>
 
 #include "scratch_buffer.h"
 #include "soft_rows_kernel.h"
@@ -42,7 +44,8 @@ struct ScalarOps
 
 }  // namespace
 
-void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
+template <class Batch>
+void warm_start_batch_scalar(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity)
 {
   for (int j = 0; j < lanes; ++j)
   {
@@ -50,7 +53,8 @@ void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocit
   }
 }
 
-void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+template <class Batch>
+void solve_batch_scalar(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   for (int j = 0; j < lanes; ++j)
   {
@@ -58,80 +62,19 @@ void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& v
   }
 }
 
-void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
-                    WorkerPool& workers)
-{
-  spare_ = static_cast<std::uint32_t>(velocity.size());
-  velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
-  colour_manifolds(velocity.size());                      // soft_rows_colour.cpp
-  // Each colour's rows in whole batches, the last one padded. Every lane
-  // has its own slot, so the workers can fill them in any split.
-  std::size_t batches = 0;
-  for (std::size_t colour = 0; colour < used_colours_; ++colour)
-  {
-    RowColour& c = colours_[colour];
-    c.begin = batches;
-    batches += (c.lanes + kRowLanes - 1) / kRowLanes;
-    c.end = batches;
-  }
-  resize_to_overwrite(rows_, batches);  // fill_lane writes every lane
-  lane_of_.assign(points.size(), kNoLane);
-  workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t r = begin; r < end; ++r)
-    {
-      const RowSlot& row = row_slots_[r];
-      const std::size_t lane = colours_[row.colour].begin * kRowLanes + row.slot;  // over all batches
-      fill_lane(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction);
-      lane_of_[row.first] = static_cast<std::uint32_t>(2 * lane);
-      lane_of_[row.first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
-    }
-  });
-  for (std::size_t colour = 0; colour < used_colours_; ++colour)
-  {
-    const RowColour& c = colours_[colour];
-    for (std::size_t slot = c.lanes; slot < (c.end - c.begin) * kRowLanes; ++slot)
-    {
-      fill_lane(rows_[c.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), points, SIZE_MAX, friction);
-    }
-  }
-}
+COLLISION2D_ROW_BATCH_VERBS(warm_start_batch_scalar, int, std::vector<BodyVelocity>&);
+COLLISION2D_ROW_BATCH_VERBS(solve_batch_scalar, int, std::vector<BodyVelocity>&, const RowPass&);
 
-void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& points, std::size_t first,
-                         bool friction) const
+namespace
 {
-  if (first == SIZE_MAX)
-  {
-    // Padding: the spare body on both sides, nothing to push.
-    r.a[j] = spare_;
-    r.b[j] = spare_;
-    for (double* f : {r.nx, r.ny, r.k12, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b,
-                      r.bias_rate, r.mu_s, r.mu_k, r.rough})
-    {
-      f[j] = 0.0;
-    }
-    for (double* f : {r.k11, r.k22, r.pair_tangent_mass, r.mass_scale})
-    {
-      f[j] = 1.0;
-    }
-    for (RowPoint& q : r.point)
-    {
-      for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.kinetic, q.anchor, q.normal, q.tangent,
-                        q.sliding})
-      {
-        f[j] = 0.0;
-      }
-    }
-    return;
-  }
-  const ContactPoint& p = points[first];
+/// What both kinds of batch keep of a manifold, from its first point.
+template <class Batch>
+void fill_common(Batch& r, int j, const ContactPoint& p, bool friction)
+{
   r.a[j] = static_cast<std::uint32_t>(p.a);
   r.b[j] = static_cast<std::uint32_t>(p.b);
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
-  r.k11[j] = p.k_n;
-  r.k12[j] = p.pair_k12;
-  r.k22[j] = points[first + 1].k_n;
-  r.pair_tangent_mass[j] = p.pair_tangent_mass;
   r.inv_mass_a[j] = p.inv_mass_a;
   r.inv_mass_b[j] = p.inv_mass_b;
   r.inv_inertia_a[j] = p.inv_inertia_a;
@@ -141,20 +84,139 @@ void SoftRows::fill_lane(RowBatch& r, int j, const std::vector<ContactPoint>& po
   r.mu_s[j] = p.mu_s;
   r.mu_k[j] = p.mu_k;
   r.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1.0 : 0.0;
-  for (int k = 0; k < 2; ++k)
+}
+
+void fill_point(RowPoint& q, int j, const ContactPoint& c)
+{
+  q.ra_x[j] = c.r_a.x;
+  q.ra_y[j] = c.r_a.y;
+  q.rb_x[j] = c.r_b.x;
+  q.rb_y[j] = c.r_b.y;
+  q.base[j] = c.base_separation;
+  q.kinetic[j] = c.kinetic ? 1.0 : 0.0;
+  q.anchor[j] = c.anchor_drift;
+  q.normal[j] = c.lambda_n;
+  q.tangent[j] = c.lambda_t;
+  q.sliding[j] = c.sliding ? 1.0 : 0.0;
+}
+
+/// A padding lane: the spare body on both sides, nothing to push; its
+/// masses 1, so no division meets a zero.
+template <class Batch>
+void fill_padding(Batch& r, int j, std::uint32_t spare)
+{
+  r.a[j] = spare;
+  r.b[j] = spare;
+  for (double* f : {r.nx, r.ny, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b, r.bias_rate, r.mu_s,
+                    r.mu_k, r.rough})
   {
-    const ContactPoint& c = points[first + k];
-    RowPoint& q = r.point[k];
-    q.ra_x[j] = c.r_a.x;
-    q.ra_y[j] = c.r_a.y;
-    q.rb_x[j] = c.r_b.x;
-    q.rb_y[j] = c.r_b.y;
-    q.base[j] = c.base_separation;
-    q.kinetic[j] = c.kinetic ? 1.0 : 0.0;
-    q.anchor[j] = c.anchor_drift;
-    q.normal[j] = c.lambda_n;
-    q.tangent[j] = c.lambda_t;
-    q.sliding[j] = c.sliding ? 1.0 : 0.0;
+    f[j] = 0.0;
+  }
+  r.mass_scale[j] = 1.0;
+  for (RowPoint& q : r.point)
+  {
+    for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.kinetic, q.anchor, q.normal, q.tangent,
+                      q.sliding})
+    {
+      f[j] = 0.0;
+    }
+  }
+}
+
+/// A lane of either kind of batch: manifold `first`'s rows, or padding
+/// (SIZE_MAX) whose masses are 1, so no division meets a zero.
+template <class Batch>
+void fill_manifold(Batch& r, int j, const std::vector<ContactPoint>& points, std::size_t first, bool friction,
+                   std::uint32_t spare)
+{
+  constexpr bool pair = std::is_same_v<Batch, RowBatch>;
+  const bool padding = first == SIZE_MAX;
+  if (padding)
+  {
+    fill_padding(r, j, spare);
+  }
+  else
+  {
+    fill_common(r, j, points[first], friction);
+    for (std::size_t k = 0; k < std::size(r.point); ++k)
+    {
+      fill_point(r.point[k], j, points[first + k]);
+    }
+  }
+  if constexpr (pair)
+  {
+    r.k11[j] = padding ? 1.0 : points[first].k_n;
+    r.k12[j] = padding ? 0.0 : points[first].pair_k12;
+    r.k22[j] = padding ? 1.0 : points[first + 1].k_n;
+    r.pair_tangent_mass[j] = padding ? 1.0 : points[first].pair_tangent_mass;
+  }
+  else
+  {
+    r.normal_mass[j] = padding ? 1.0 : points[first].normal_mass;
+    r.tangent_mass[j] = padding ? 1.0 : points[first].tangent_mass;
+  }
+}
+
+/// The padding lanes of a colour's last batch of one kind.
+template <class Batch>
+void pad_batches(const RowRange& range, std::vector<Batch>& batches, std::uint32_t spare)
+{
+  for (std::size_t slot = range.lanes; slot < (range.end - range.begin) * kRowLanes; ++slot)
+  {
+    fill_manifold(batches[range.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), {}, SIZE_MAX, false,
+                  spare);
+  }
+}
+}  // namespace
+
+std::size_t SoftRows::place_batches(Kind kind)
+{
+  std::size_t batches = 0;
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
+  {
+    RowRange& range = range_of(colour, kind);
+    range.begin = batches;
+    batches += (range.lanes + kRowLanes - 1) / kRowLanes;
+    range.end = batches;
+  }
+  return batches;
+}
+
+void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+                    WorkerPool& workers)
+{
+  spare_ = static_cast<std::uint32_t>(velocity.size());
+  velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
+  colour_manifolds(velocity.size());                      // soft_rows_colour.cpp
+  // Each colour's rows of each kind in whole batches, the last one padded.
+  // Every lane has its own slot, so the workers can fill them in any split.
+  resize_to_overwrite(rows_, place_batches(Kind::Pair));  // the lanes below write every slot
+  resize_to_overwrite(singles_, place_batches(Kind::Single));
+  lane_of_.assign(points.size(), kNoLane);
+  workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r)
+    {
+      const RowSlot& row = row_slots_[r];
+      const RowColour& c = colours_[row.colour];
+      if (row.kind == Kind::Single)
+      {
+        const std::size_t lane = c.singles.begin * kRowLanes + row.slot;  // over all batches
+        fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction,
+                      spare_);
+        lane_of_[row.first] = kSingleLane | static_cast<std::uint32_t>(lane);
+        continue;
+      }
+      const std::size_t lane = c.pairs.begin * kRowLanes + row.slot;
+      fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction, spare_);
+      lane_of_[row.first] = static_cast<std::uint32_t>(2 * lane);
+      lane_of_[row.first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
+    }
+  });
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
+  {
+    const RowColour& c = colours_[colour];
+    pad_batches(c.pairs, rows_, spare_);
+    pad_batches(c.singles, singles_, spare_);
   }
 }
 
@@ -168,9 +230,9 @@ double* SoftRows::normal_impulse_of(std::size_t k)
 
 namespace
 {
-/// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches.
-template <class F>
-void each_batch(const RowColour& c, std::vector<RowBatch>& rows, std::size_t part, std::size_t parts, F f)
+/// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches of one kind.
+template <class Batch, class F>
+void each_batch(const RowRange& c, std::vector<Batch>& rows, std::size_t part, std::size_t parts, F f)
 {
   const std::size_t n = c.end - c.begin;
   for (std::size_t r = c.begin + n * part / parts; r < c.begin + n * (part + 1) / parts; ++r)
@@ -184,16 +246,18 @@ void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& ve
                                std::size_t parts)
 {
   const RowLanes path = row_lanes();
-  each_batch(colours_[colour], rows_, part, parts,
-             [&](RowBatch& batch, int lanes) { warm_start_batch(path, batch, lanes, velocity); });
+  const auto warm = [&](auto& batch, int lanes) { warm_start_batch(path, batch, lanes, velocity); };
+  each_batch(colours_[colour].pairs, rows_, part, parts, warm);
+  each_batch(colours_[colour].singles, singles_, part, parts, warm);
 }
 
 void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass,
                           std::size_t part, std::size_t parts)
 {
   const RowLanes path = row_lanes();
-  each_batch(colours_[colour], rows_, part, parts,
-             [&](RowBatch& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); });
+  const auto solve = [&](auto& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); };
+  each_batch(colours_[colour].pairs, rows_, part, parts, solve);
+  each_batch(colours_[colour].singles, singles_, part, parts, solve);
 }
 
 void SoftRows::drop_spare_body(std::vector<BodyVelocity>& velocity) const { velocity.pop_back(); }

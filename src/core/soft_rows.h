@@ -1,10 +1,12 @@
 // Internal to the core: the soft step's contact rows in colours. Each frame
-// the two-point manifolds whose normal block is solvable are packed four to a
-// batch (struct of arrays) and coloured so that no two manifolds of one colour
-// move the same body; a colour's batches can then be solved four or two lanes
-// at a time (chosen at run time) with exactly the bits of the scalar path,
-// since lanes never share a body. Single-point and nearly dependent manifolds,
-// and any that find no colour, stay on the kernel's point verbs.
+// the two-point manifolds whose normal block is solvable, and the one-point
+// manifolds, are packed four to a batch (struct of arrays, a batch type for
+// each) and coloured so that no two manifolds of one colour move the same
+// body; a colour's batches can then be solved four or two lanes at a time
+// (chosen at run time) with exactly the bits of the scalar path, since lanes
+// never share a body. Nearly dependent two-point manifolds, a colour's only
+// manifold of a kind, and any that find no colour stay on the kernel's point
+// verbs.
 #pragma once
 
 #include <cstddef>
@@ -48,6 +50,21 @@ struct alignas(32) RowBatch
   RowPoint point[2];
 };
 
+/// Four one-point manifolds, one per lane (a disk's contacts): the point
+/// verbs' normal and friction rows.
+struct alignas(32) RowSingle
+{
+  std::uint32_t a[kRowLanes];  ///< body indices; padding lanes name the spare body
+  std::uint32_t b[kRowLanes];
+  double nx[kRowLanes], ny[kRowLanes];
+  double normal_mass[kRowLanes], tangent_mass[kRowLanes];  ///< kg
+  double inv_mass_a[kRowLanes], inv_mass_b[kRowLanes], inv_inertia_a[kRowLanes], inv_inertia_b[kRowLanes];
+  double bias_rate[kRowLanes], mass_scale[kRowLanes];
+  double mu_s[kRowLanes], mu_k[kRowLanes];
+  double rough[kRowLanes];
+  RowPoint point[1];
+};
+
 /// What every row of one pass shares.
 struct RowPass
 {
@@ -56,13 +73,21 @@ struct RowPass
   bool use_bias = false;    ///< false: the relax pass
 };
 
-/// One colour: its batches (rows_[begin, end)) and the points it leaves to
-/// the point verbs (the index of each manifold's first point).
-struct RowColour
+/// A colour's batches of one kind: [begin, end) of their vector.
+struct RowRange
 {
   std::size_t begin = 0;
   std::size_t end = 0;
   std::size_t lanes = 0;  ///< manifolds in the batches; the last batch may be padded
+};
+
+/// One colour: its batches of two-point manifolds (in rows_) and of
+/// one-point ones (in singles_), and the points it leaves to the point verbs
+/// (the index of each manifold's first point).
+struct RowColour
+{
+  RowRange pairs;
+  RowRange singles;
   std::vector<std::size_t> others;
 };
 
@@ -93,7 +118,8 @@ public:
   const std::vector<std::size_t>& overflow() const { return overflow_; }
   /// Manifolds in colours (rows and others), not counting the overflow.
   std::size_t coloured() const { return coloured_; }
-  /// A colour's batches, or part `part` of `parts` of them (the parts share no body).
+  /// A colour's batches of both kinds, or part `part` of `parts` of them
+  /// (the parts share no body).
   void warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, std::size_t part = 0,
                        std::size_t parts = 1);
   void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
@@ -124,6 +150,13 @@ private:
   static constexpr std::size_t kMaxColours = 24;
   /// A manifold's body that cannot move, for take_colour.
   static constexpr std::uint32_t kFixed = UINT32_MAX;
+  /// How a manifold is solved.
+  enum class Kind : std::uint8_t
+  {
+    Other,  ///< on the point verbs
+    Pair,   ///< in a batch of two-point manifolds
+    Single  ///< in a batch of one-point manifolds
+  };
   /// Per point, from prepare: what colouring reads of the manifold that
   /// starts there, and the colour it took.
   struct Note
@@ -133,7 +166,7 @@ private:
     std::uint32_t b = kFixed;
     std::uint8_t colour = 0;   ///< below kMaxColours
     bool first = false;        ///< an active manifold starts at this point
-    bool row = false;          ///< solved in the batches (once coloured)
+    Kind kind = Kind::Other;   ///< how it is solved (once coloured)
   };
 
   /// The noted manifolds' keys in order_, from the highest down.
@@ -144,8 +177,11 @@ private:
   /// The first colour free of bodies a and b (kFixed: one that cannot
   /// move), now taken by them; kMaxColours when none is free.
   std::size_t take_colour(std::uint32_t a, std::uint32_t b);
-  void fill_lane(RowBatch& batch, int lane, const std::vector<ContactPoint>& points, std::size_t first,
-                 bool friction) const;
+  /// A colour's batches of a kind (Pair or Single).
+  RowRange& range_of(std::size_t colour, Kind kind);
+  /// Each colour's batches of `kind` in whole batches, the last one padded;
+  /// returns the batch count.
+  std::size_t place_batches(Kind kind);
   /// Point k's row point and lane, or nullptr when its manifold has no row.
   const RowPoint* row_point_of(std::size_t k, int& lane) const
   {
@@ -154,27 +190,38 @@ private:
     {
       return nullptr;
     }
+    if ((at & kSingleLane) != 0)
+    {
+      const std::uint32_t single = at & ~kSingleLane;
+      lane = static_cast<int>(single % kRowLanes);
+      return &singles_[single / kRowLanes].point[0];
+    }
     lane = static_cast<int>(at / 2 % kRowLanes);
     return &rows_[at / (2 * kRowLanes)].point[at % 2];
   }
 
   std::vector<RowBatch> rows_;
+  std::vector<RowSingle> singles_;
   std::vector<RowColour> colours_;
   std::size_t used_colours_ = 0;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
   std::vector<std::uint32_t> colours_of_;  ///< per body, a bit per colour that moves it
-  /// Where a row manifold goes: its colour and its place among the colour's rows.
+  /// Where a row manifold goes: its colour and its place among the colour's
+  /// rows of its kind.
   struct RowSlot
   {
     std::uint32_t first = 0;  ///< the manifold's first point
     std::uint32_t colour = 0;
     std::uint32_t slot = 0;
+    Kind kind = Kind::Pair;
   };
   std::vector<RowSlot> row_slots_;  ///< scratch, in point order
   /// Per point: where its row keeps it, (batch * kRowLanes + lane) * 2 + its
-  /// place in the manifold; kNoLane for a point without a row.
+  /// place in the manifold, or kSingleLane | (batch * kRowLanes + lane) for a
+  /// one-point manifold; kNoLane for a point without a row.
   std::vector<std::uint32_t> lane_of_;
   static constexpr std::uint32_t kNoLane = UINT32_MAX;
+  static constexpr std::uint32_t kSingleLane = 0x80000000U;
   std::vector<Note> notes_;  ///< per point, written at prepare
   /// Scratch: per manifold, its height key (high half) and its first point
   /// (low half), sorted.
@@ -201,22 +248,36 @@ bool set_row_lanes(RowLanes lanes);
 /// Back to the widest available path.
 void reset_row_lanes();
 
-/// One batch on the chosen path; `lanes` counts its manifolds (the rest are padding).
-void warm_start_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
-void solve_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity,
-                 const RowPass& pass);
+/// One batch of either kind (RowBatch or RowSingle) on the chosen path;
+/// `lanes` counts its manifolds (the rest are padding).
+template <class Batch>
+void warm_start_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVelocity>& velocity);
+template <class Batch>
+void solve_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 
-/// The kernel entry points over one batch (soft_rows_kernel.h). The four-lane
-/// ones live in soft_rows_avx2.cpp, the two-lane ones in soft_rows_lanes2.cpp;
-/// a build without their instructions makes them the scalar path, never chosen.
-void warm_start_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
-void solve_batch_scalar(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+/// The kernel entry points over one batch of either kind (soft_rows_kernel.h),
+/// each instantiated for both. The four-lane ones live in soft_rows_avx2.cpp,
+/// the two-lane ones in soft_rows_lanes2.cpp; a build without their
+/// instructions makes them the scalar path, never chosen.
+template <class Batch>
+void warm_start_batch_scalar(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity);
+template <class Batch>
+void solve_batch_scalar(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 bool four_lanes_compiled();
-void warm_start_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity);
-void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+template <class Batch>
+void warm_start_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity);
+template <class Batch>
+void solve_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 bool two_lanes_compiled();
-void warm_start_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity);
-void solve_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+template <class Batch>
+void warm_start_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity);
+template <class Batch>
+void solve_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+
+/// Instantiates a batch verb template for both kinds of batch.
+#define COLLISION2D_ROW_BATCH_VERBS(verb, ...)                                                                  \
+  template void verb<RowBatch>(RowBatch&, __VA_ARGS__);                                                          \
+  template void verb<RowSingle>(RowSingle&, __VA_ARGS__)
 
 }  // namespace detail
 }  // namespace collision2d

@@ -105,12 +105,14 @@ struct WideOps
 
 bool four_lanes_compiled() { return true; }
 
-void warm_start_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity)
+template <class Batch>
+void warm_start_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity)
 {
   rows::warm_start_rows<W4>(WideOps{}, batch, velocity);
 }
 
-void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+template <class Batch>
+void solve_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   rows::solve_rows<W4>(WideOps{}, batch, velocity, pass);
 }
@@ -125,11 +127,13 @@ namespace collision2d
 namespace detail
 {
 bool four_lanes_compiled() { return false; }
-void warm_start_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity)
+template <class Batch>
+void warm_start_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity)
 {
   warm_start_batch_scalar(batch, kRowLanes, velocity);
 }
-void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+template <class Batch>
+void solve_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   solve_batch_scalar(batch, kRowLanes, velocity, pass);
 }
@@ -137,3 +141,12 @@ void solve_batch_four(RowBatch& batch, std::vector<BodyVelocity>& velocity, cons
 }  // namespace collision2d
 
 #endif
+
+namespace collision2d
+{
+namespace detail
+{
+COLLISION2D_ROW_BATCH_VERBS(warm_start_batch_four, std::vector<BodyVelocity>&);
+COLLISION2D_ROW_BATCH_VERBS(solve_batch_four, std::vector<BodyVelocity>&, const RowPass&);
+}  // namespace detail
+}  // namespace collision2d

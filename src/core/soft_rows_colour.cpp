@@ -18,8 +18,22 @@ namespace
 {
 /// Fewer manifolds than this are ordered by a comparison sort (sort_by_height).
 constexpr std::size_t kRadixSortFrom = 256;
+/// A batch with fewer manifolds leaves them to the point verbs: a batch
+/// costs four lanes' loads, stores and arithmetic whatever its padding.
+constexpr std::size_t kMinBatchLanes = 3;
 
-bool row_manifold(const ContactPoint& p) { return p.count == 2 && p.pair_block; }
+/// How many of a colour's manifolds of one kind go to batches: none below
+/// kMinBatchLanes, and a last, partly padded batch only with that many.
+std::size_t batched_lanes(std::size_t lanes)
+{
+  const std::size_t last = lanes % kRowLanes;
+  if (lanes < kMinBatchLanes)
+  {
+    return 0;
+  }
+  return last != 0 && last < kMinBatchLanes ? lanes - last : lanes;
+}
+
 
 /// A key whose unsigned order is the descending order of h. A float is fine
 /// enough to order contacts by height; equal heights keep point order.
@@ -110,8 +124,9 @@ void SoftRows::expect_points(std::size_t points) { resize_to_overwrite(notes_, p
 void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
 {
   const Vec2 at = second != nullptr ? 0.5 * (p.point + second->point) : p.point;
+  const Kind kind = second == nullptr ? Kind::Single : p.pair_block ? Kind::Pair : Kind::Other;
   notes_[k] = Note{descending_key(static_cast<float>(dot(at, up))), p.inv_mass_a != 0.0 ? p.a : kFixed,
-                   p.inv_mass_b != 0.0 ? p.b : kFixed, 0, true, row_manifold(p)};
+                   p.inv_mass_b != 0.0 ? p.b : kFixed, 0, true, kind};
 }
 
 void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
@@ -139,7 +154,8 @@ void SoftRows::colour_manifolds(std::size_t bodies)
   for (RowColour& c : colours_)
   {
     c.others.clear();
-    c.lanes = 0;
+    c.pairs.lanes = 0;
+    c.singles.lanes = 0;
   }
   overflow_.clear();
   coloured_ = 0;
@@ -157,15 +173,15 @@ void SoftRows::colour_manifolds(std::size_t bodies)
     if (colour == kMaxColours)
     {
       overflow_.push_back(first);
-      m.row = false;
+      m.kind = Kind::Other;
       continue;
     }
     ++coloured_;
     used_colours_ = std::max(used_colours_, colour + 1);
-    if (m.row)
+    if (m.kind != Kind::Other)
     {
       m.colour = static_cast<std::uint8_t>(colour);
-      ++colours_[colour].lanes;
+      ++range_of(colour, m.kind).lanes;
     }
     else
     {
@@ -173,28 +189,39 @@ void SoftRows::colour_manifolds(std::size_t bodies)
     }
   }
   // Within a colour the rows share no body, so their places are free: in
-  // point order, as the points lie in memory. A colour's only row goes to
-  // the point verbs: the same bits, without a batch's padding lanes.
+  // point order, as the points lie in memory. The rows a batch would mostly
+  // pad go to the point verbs: the same bits, without the padding lanes.
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
+  {
+    for (RowRange* range : {&colours_[colour].pairs, &colours_[colour].singles})
+    {
+      range->lanes = batched_lanes(range->lanes);
+    }
+  }
   row_slots_.clear();
   row_slots_.reserve(order_.size());
-  std::array<std::uint32_t, kMaxColours> placed{};
+  std::array<std::array<std::uint32_t, kMaxColours>, 2> placed{};
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     Note& m = notes_[k];
-    if (!m.first || !m.row)
+    if (!m.first || m.kind == Kind::Other)
     {
       continue;
     }
-    RowColour& c = colours_[m.colour];
-    if (c.lanes == 1)
+    std::uint32_t& slot = placed[m.kind == Kind::Single ? 1 : 0][m.colour];
+    if (slot >= range_of(m.colour, m.kind).lanes)
     {
-      m.row = false;
-      c.lanes = 0;
-      c.others.push_back(k);
+      m.kind = Kind::Other;
+      colours_[m.colour].others.push_back(k);
       continue;
     }
-    row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, placed[m.colour]++});
+    row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, slot++, m.kind});
   }
+}
+
+RowRange& SoftRows::range_of(std::size_t colour, Kind kind)
+{
+  return kind == Kind::Single ? colours_[colour].singles : colours_[colour].pairs;
 }
 
 }  // namespace detail

@@ -65,7 +65,8 @@ bool set_row_lanes(RowLanes lanes)
 
 void reset_row_lanes() { g_forced_lanes.store(-1, std::memory_order_relaxed); }
 
-void warm_start_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
+template <class Batch>
+void warm_start_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVelocity>& velocity)
 {
   switch (path)
   {
@@ -79,8 +80,8 @@ void warm_start_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<Bod
   warm_start_batch_scalar(batch, lanes, velocity);
 }
 
-void solve_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity,
-                 const RowPass& pass)
+template <class Batch>
+void solve_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   switch (path)
   {
@@ -93,6 +94,11 @@ void solve_batch(RowLanes path, RowBatch& batch, int lanes, std::vector<BodyVelo
   }
   solve_batch_scalar(batch, lanes, velocity, pass);
 }
+
+template void warm_start_batch(RowLanes, RowBatch&, int, std::vector<BodyVelocity>&);
+template void warm_start_batch(RowLanes, RowSingle&, int, std::vector<BodyVelocity>&);
+template void solve_batch(RowLanes, RowBatch&, int, std::vector<BodyVelocity>&, const RowPass&);
+template void solve_batch(RowLanes, RowSingle&, int, std::vector<BodyVelocity>&, const RowPass&);
 
 }  // namespace detail
 }  // namespace collision2d

@@ -1,5 +1,5 @@
 // Internal to soft_rows*.cpp: the soft step's verbs on a batch of two-point
-// manifolds, written once for a lane type V: double (one lane, the scalar
+// or of one-point manifolds, written once for a lane type V: double (one lane, the scalar
 // path), a two-wide vector (soft_rows_lanes2.cpp) or a four-wide one
 // (soft_rows_avx2.cpp). Every branch of the point verbs
 // (contact_kernel_soft.cpp, contact_kernel.cpp) is computed and selected, in
@@ -80,8 +80,10 @@ struct Lane
   V inv_ma, inv_mb, inv_ia, inv_ib;
 };
 
-template <class V, class Ops>
-Lane<V> load_lane(const Ops& ops, const RowBatch& r, const std::vector<BodyVelocity>& state)
+/// The lanes' bodies and fixed data, loaded once per pass from a batch of
+/// either kind (a one-point batch leaves ra2 and rb2 unset).
+template <class V, class Ops, class Batch>
+Lane<V> load_lane(const Ops& ops, const Batch& r, const std::vector<BodyVelocity>& state)
 {
   Lane<V> l;
   ops.gather(state, r.a, l.a);
@@ -90,8 +92,11 @@ Lane<V> load_lane(const Ops& ops, const RowBatch& r, const std::vector<BodyVeloc
   l.t = {neg(l.n.y), l.n.x};  // perp(n), exactly the prepared tangent
   l.ra1 = {ops.load(r.point[0].ra_x), ops.load(r.point[0].ra_y)};
   l.rb1 = {ops.load(r.point[0].rb_x), ops.load(r.point[0].rb_y)};
-  l.ra2 = {ops.load(r.point[1].ra_x), ops.load(r.point[1].ra_y)};
-  l.rb2 = {ops.load(r.point[1].rb_x), ops.load(r.point[1].rb_y)};
+  if constexpr (sizeof(r.point) / sizeof(r.point[0]) == 2)
+  {
+    l.ra2 = {ops.load(r.point[1].ra_x), ops.load(r.point[1].ra_y)};
+    l.rb2 = {ops.load(r.point[1].rb_x), ops.load(r.point[1].rb_y)};
+  }
   l.inv_ma = ops.load(r.inv_mass_a);
   l.inv_mb = ops.load(r.inv_mass_b);
   l.inv_ia = ops.load(r.inv_inertia_a);
@@ -147,12 +152,15 @@ __attribute__((always_inline)) inline void warm_start_point(const Ops& ops, Lane
   l.b.w = sel(any, pushed.b.w, l.b.w);
 }
 
-template <class V, class Ops>
-void warm_start_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state)
+template <class V, class Ops, class Batch>
+void warm_start_rows(const Ops& ops, Batch& r, std::vector<BodyVelocity>& state)
 {
   Lane<V> l = load_lane<V>(ops, r, state);
   warm_start_point(ops, l, l.ra1, l.rb1, r.point[0]);
-  warm_start_point(ops, l, l.ra2, l.rb2, r.point[1]);
+  if constexpr (sizeof(r.point) / sizeof(r.point[0]) == 2)
+  {
+    warm_start_point(ops, l, l.ra2, l.rb2, r.point[1]);
+  }
   ops.scatter(state, r.a, l.a);
   ops.scatter(state, r.b, l.b);
 }
@@ -222,6 +230,43 @@ void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass,
   set_normal(ops, l, l.ra2, l.rb2, r.point[1], scale2 * y2);
 }
 
+/// Whether friction acts in any lane of the batch: a frictionless batch
+/// skips its friction rows, which would leave every lane as it is.
+template <class Batch>
+bool any_rough(const Batch& r)
+{
+  for (const double rough : r.rough)
+  {
+    if (rough != 0.0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Coulomb's cone on the `needed` tangential impulse (coulomb): its first
+/// point's sliding flag set, the change from `old_total` applied where the
+/// lane's friction acts. Returns the clamped total.
+template <class V, class Ops, class Batch>
+V clamp_friction(const Ops& ops, Lane<V>& l, Batch& r, V2<V> ra, V2<V> rb, V needed, V normal, V old_total)
+{
+  const V zero = V(0.0);
+  const V cone = sel(ops.load(r.point[0].kinetic) != zero, ops.load(r.mu_k), ops.load(r.mu_s));
+  const V limit = cone * normal;
+  const auto rough = ops.load(r.rough) != zero;
+  const V sliding = sel(limit < abs(needed), V(1.0), zero);
+  ops.store(r.point[0].sliding, sel(rough, sliding, ops.load(r.point[0].sliding)));
+  const V total = vmax(neg(limit), vmin(limit, needed));
+  Lane<V> pushed = l;
+  apply(pushed, ra, rb, scale(l.t, total - old_total));
+  l.a.v = {sel(rough, pushed.a.v.x, l.a.v.x), sel(rough, pushed.a.v.y, l.a.v.y)};
+  l.a.w = sel(rough, pushed.a.w, l.a.w);
+  l.b.v = {sel(rough, pushed.b.v.x, l.b.v.x), sel(rough, pushed.b.v.y, l.b.v.y)};
+  l.b.w = sel(rough, pushed.b.w, l.b.w);
+  return total;
+}
+
 /// The manifold's friction as one row at its midpoint (solve_friction_pair),
 /// pulled back toward the sticking anchors by `pull` (m/s).
 template <class V, class Ops>
@@ -237,19 +282,9 @@ void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
   const V normal_sum = n1 + ops.load(r.point[1].normal);
   const V old_total = ops.load(r.point[0].tangent) + ops.load(r.point[1].tangent);
   const V needed = old_total - vt * ops.load(r.pair_tangent_mass);
-  const V cone = sel(ops.load(r.point[0].kinetic) != zero, ops.load(r.mu_k), ops.load(r.mu_s));
-  const V limit = cone * normal_sum;
   const auto rough = ops.load(r.rough) != zero;
-  const V sliding = sel(limit < abs(needed), V(1.0), zero);
-  ops.store(r.point[0].sliding, sel(rough, sliding, ops.load(r.point[0].sliding)));
-  ops.store(r.point[1].sliding, sel(rough, sliding, ops.load(r.point[1].sliding)));
-  const V total = vmax(neg(limit), vmin(limit, needed));
-  Lane<V> pushed = l;
-  apply(pushed, ra, rb, scale(l.t, total - old_total));
-  l.a.v = {sel(rough, pushed.a.v.x, l.a.v.x), sel(rough, pushed.a.v.y, l.a.v.y)};
-  l.a.w = sel(rough, pushed.a.w, l.a.w);
-  l.b.v = {sel(rough, pushed.b.v.x, l.b.v.x), sel(rough, pushed.b.v.y, l.b.v.y)};
-  l.b.w = sel(rough, pushed.b.w, l.b.w);
+  const V total = clamp_friction(ops, l, r, ra, rb, needed, normal_sum, old_total);
+  ops.store(r.point[1].sliding, sel(rough, ops.load(r.point[0].sliding), ops.load(r.point[1].sliding)));
   const V share = sel(zero < normal_sum, n1 / normal_sum, half);
   const V first = share * total;
   ops.store(r.point[0].tangent, sel(rough, first, ops.load(r.point[0].tangent)));
@@ -278,8 +313,62 @@ void solve_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state, c
   const V2<V> d1 = anchor_offset(l, l.ra1, l.rb1);
   const V2<V> d2 = anchor_offset(l, l.ra2, l.rb2);
   solve_normals(ops, l, r, pass, ops.load(r.point[0].base) + dot(d1, l.n), ops.load(r.point[1].base) + dot(d2, l.n));
-  const V pull = pass.use_bias ? anchor_pull(ops, l, r, d1, d2, pass) : V(0.0);
-  solve_friction(ops, l, r, pull);
+  if (any_rough(r))
+  {
+    const V pull = pass.use_bias ? anchor_pull(ops, l, r, d1, d2, pass) : V(0.0);
+    solve_friction(ops, l, r, pull);
+  }
+  ops.scatter(state, r.a, l.a);
+  ops.scatter(state, r.b, l.b);
+}
+
+/// A one-point manifold's normal (solve_soft_normal) at gap s.
+template <class V, class Ops>
+void solve_single_normal(const Ops& ops, Lane<V>& l, RowSingle& r, const RowPass& pass, V s)
+{
+  V bias, mass_scale;
+  soft_terms(s, ops.load(r.bias_rate), ops.load(r.mass_scale), pass, bias, mass_scale);
+  const V vn = dot(relative_velocity(l, l.ra1, l.rb1), l.n);
+  // The relax pass's scale is exactly 1, and x / 1 is x: no division there.
+  const V speed = pass.use_bias ? bias / mass_scale : bias;
+  const V rigid = ops.load(r.point[0].normal) - (vn + speed) * ops.load(r.normal_mass);
+  set_normal(ops, l, l.ra1, l.rb1, r.point[0], mass_scale * vmax(V(0.0), rigid));
+}
+
+/// A one-point manifold's friction (solve_friction), pulled back toward its
+/// anchor by `pull` (m/s).
+template <class V, class Ops>
+void solve_single_friction(const Ops& ops, Lane<V>& l, RowSingle& r, V pull)
+{
+  const V slip = dot(relative_velocity(l, l.ra1, l.rb1), l.t);
+  const V vt = sel(pull == V(0.0), slip, slip + pull);
+  const V old = ops.load(r.point[0].tangent);
+  const V total = clamp_friction(ops, l, r, l.ra1, l.rb1, old - vt * ops.load(r.tangent_mass),
+                                 ops.load(r.point[0].normal), old);
+  ops.store(r.point[0].tangent, sel(ops.load(r.rough) != V(0.0), total, old));
+}
+
+/// The biased pass's pull of a one-point manifold back to its anchor
+/// (anchor_pull): its slip since it stuck, at the contact's rate, capped.
+template <class V, class Ops>
+V single_pull(const Ops& ops, const Lane<V>& l, const RowSingle& r, V2<V> d, const RowPass& pass)
+{
+  const V slip = dot(d - (l.rb1 - l.ra1), l.t);
+  const V drift = sel(ops.load(r.point[0].kinetic) != V(0.0), V(0.0), ops.load(r.point[0].anchor) + slip);
+  const V max_push = V(pass.max_push);
+  return vmax(neg(max_push), vmin(max_push, (ops.load(r.mass_scale) * ops.load(r.bias_rate)) * drift));
+}
+
+template <class V, class Ops>
+void solve_rows(const Ops& ops, RowSingle& r, std::vector<BodyVelocity>& state, const RowPass& pass)
+{
+  Lane<V> l = load_lane<V>(ops, r, state);
+  const V2<V> d = anchor_offset(l, l.ra1, l.rb1);
+  solve_single_normal(ops, l, r, pass, ops.load(r.point[0].base) + dot(d, l.n));
+  if (any_rough(r))
+  {
+    solve_single_friction(ops, l, r, pass.use_bias ? single_pull(ops, l, r, d, pass) : V(0.0));
+  }
   ops.scatter(state, r.a, l.a);
   ops.scatter(state, r.b, l.b);
 }

@@ -135,7 +135,8 @@ private:
 bool two_lanes_compiled() { return true; }
 
 // A half of padding lanes only is skipped: the scalar path never runs them.
-void warm_start_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
+template <class Batch>
+void warm_start_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity)
 {
   for (int offset = 0; offset < lanes; offset += 2)
   {
@@ -143,7 +144,8 @@ void warm_start_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>&
   }
 }
 
-void solve_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+template <class Batch>
+void solve_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   for (int offset = 0; offset < lanes; offset += 2)
   {
@@ -161,11 +163,13 @@ namespace collision2d
 namespace detail
 {
 bool two_lanes_compiled() { return false; }
-void warm_start_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity)
+template <class Batch>
+void warm_start_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity)
 {
   warm_start_batch_scalar(batch, lanes, velocity);
 }
-void solve_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
+template <class Batch>
+void solve_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass)
 {
   solve_batch_scalar(batch, lanes, velocity, pass);
 }
@@ -173,3 +177,12 @@ void solve_batch_two(RowBatch& batch, int lanes, std::vector<BodyVelocity>& velo
 }  // namespace collision2d
 
 #endif
+
+namespace collision2d
+{
+namespace detail
+{
+COLLISION2D_ROW_BATCH_VERBS(warm_start_batch_two, int, std::vector<BodyVelocity>&);
+COLLISION2D_ROW_BATCH_VERBS(solve_batch_two, int, std::vector<BodyVelocity>&, const RowPass&);
+}  // namespace detail
+}  // namespace collision2d

@@ -18,6 +18,7 @@
 #include "collision2d/scenes/random_scenes.h"
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
+#include "row_lanes_support.h"
 #include "soft_rows.h"
 
 namespace collision2d
@@ -309,25 +310,17 @@ TEST(WorldGoldenRuns, WideRowsMatchTheScalarPath)
   // The scalar rows are the reference the soft-step pins were made with;
   // every lane path this build and CPU have (two lanes on SSE2 or NEON, four
   // on AVX2) must give every bit of them.
-  const std::pair<detail::RowLanes, const char*> paths[] = {
-      {detail::RowLanes::Scalar, "scalar"}, {detail::RowLanes::Two, "two-lane"}, {detail::RowLanes::Four, "four-lane"}};
-  for (const auto& [path, label] : paths)
-  {
-    if (!detail::set_row_lanes(path))
-    {
-      std::printf("%s rows: not available here\n", label);
-      continue;
-    }
+  test::for_each_row_lanes([](const char* label) {
     std::printf("%s rows: checked\n", label);
     for (const Golden& g : kGolden)
     {
       if (g.pipeline == Pipeline::Soft)
       {
-        EXPECT_EQ(run_hash(g.scene(), g.pipeline, g.tweak, g.frames), g.expected) << g.name << " (" << label << " rows)";
+        EXPECT_EQ(run_hash(g.scene(), g.pipeline, g.tweak, g.frames), g.expected)
+            << g.name << " (" << label << " rows)";
       }
     }
-  }
-  detail::reset_row_lanes();
+  });
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, WorldGolden, ::testing::ValuesIn(kGolden),

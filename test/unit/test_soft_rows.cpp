@@ -1,0 +1,180 @@
+// The soft step's batches of one-point manifolds (soft_rows.h) against the
+// point verbs they stand for (contact_kernel.h): on random contacts, every
+// lane path this build and CPU have must give the velocities, impulses and
+// friction states of warm_start, solve_soft_normal and solve_friction with
+// the anchor pull, bit for bit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "contact_kernel.h"
+#include "row_lanes_support.h"
+#include "soft_rows.h"
+#include "worker_pool.h"
+
+namespace collision2d
+{
+namespace
+{
+using detail::BodyVelocity;
+using detail::ContactPoint;
+
+constexpr double kInvH = 240.0;   // 1/s: 4 substeps of 1/60 s
+constexpr double kMaxPush = 3.0;  // m/s
+/// Manifolds: three full batches and a last one with three lanes and one of
+/// padding, so padding and every lane position are checked.
+constexpr std::size_t kManifolds = 15;
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+struct Scene
+{
+  std::vector<BodyVelocity> bodies;
+  std::vector<ContactPoint> points;
+};
+
+/// Random one-point contacts between disjoint pairs of bodies (2k, 2k + 1):
+/// gaps open and closed, friction on and off, sticking, sliding and kinetic.
+Scene random_scene(std::uint32_t seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Scene s;
+  for (std::size_t i = 0; i < 2 * kManifolds; ++i)
+  {
+    const bool fixed = i % 2 == 0 && i % 6 == 0;  // some contacts are with the ground
+    // Slow enough that most rough points stick and the pull counts.
+    BodyVelocity b = detail::body_velocity(Vec2{0.01 * u(rng), 0.01 * u(rng)}, 0.01 * u(rng),
+                                           fixed ? 0.0 : 1.0 + u(rng) * 0.5, fixed ? 0.0 : 2.0 + u(rng));
+    b.moved = Vec2{1e-3 * u(rng), 1e-3 * u(rng)};
+    const double turn = 0.01 * u(rng);
+    b.turned_cos = std::cos(turn);
+    b.turned_sin = std::sin(turn);
+    s.bodies.push_back(b);
+  }
+  for (std::size_t k = 0; k < kManifolds; ++k)
+  {
+    ContactPoint p;
+    p.a = static_cast<std::uint32_t>(2 * k);
+    p.b = static_cast<std::uint32_t>(2 * k + 1);
+    const double angle = 3.14159 * u(rng);
+    p.normal = Vec2{std::cos(angle), std::sin(angle)};
+    p.r_a = Vec2{0.5 * u(rng), 0.5 * u(rng)};
+    p.r_b = Vec2{0.5 * u(rng), 0.5 * u(rng)};
+    p.inv_mass_a = s.bodies[p.a].inv_mass;
+    p.inv_mass_b = s.bodies[p.b].inv_mass;
+    p.inv_inertia_a = s.bodies[p.a].inv_inertia;
+    p.inv_inertia_b = s.bodies[p.b].inv_inertia;
+    detail::prepare_masses(p, 0.0);
+    p.softness = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
+    p.base_separation = 2e-3 * u(rng);  // some speculative, some overlapping
+    p.anchor_drift = 1e-3 * u(rng);
+    p.lambda_n = std::max(0.0, u(rng));
+    p.lambda_t = 0.01 * u(rng);
+    p.mu_s = k % 5 == 0 ? 0.0 : 0.6;
+    p.mu_k = k % 5 == 0 ? 0.0 : 0.4;
+    p.kinetic = k % 3 == 0;
+    p.sliding = k % 4 == 0;
+    s.points.push_back(p);
+  }
+  return s;
+}
+
+/// The point verbs, as the soft step's passes call them on a manifold
+/// outside the batches.
+void solve_by_points(Scene& s, bool warm, bool use_bias)
+{
+  for (ContactPoint& p : s.points)
+  {
+    if (warm)
+    {
+      detail::warm_start(p, s.bodies);
+    }
+  }
+  for (ContactPoint& p : s.points)
+  {
+    detail::solve_soft_normal(p, s.bodies, kInvH, kMaxPush, use_bias);
+    if (p.mu_s > 0.0 || p.mu_k > 0.0)
+    {
+      const double drift = p.kinetic ? 0.0 : p.anchor_drift + detail::current_slip(p, s.bodies);
+      const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
+      detail::solve_friction(p, s.bodies, use_bias ? std::max(-kMaxPush, std::min(kMaxPush, pull)) : 0.0);
+    }
+  }
+}
+
+/// The same passes on the batches.
+void solve_by_rows(Scene& s, bool warm, bool use_bias)
+{
+  detail::SoftRows rows;
+  detail::WorkerPool workers;
+  rows.expect_points(s.points.size());
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    rows.note_manifold(k, s.points[k], nullptr, Vec2{0.0, 1.0});
+  }
+  rows.pack(s.points, s.bodies, true, workers);
+  ASSERT_EQ(rows.colour_count(), 1u) << "disjoint pairs share one colour";
+  ASSERT_TRUE(rows.others(0).empty()) << "every manifold is in a batch";
+  if (warm)
+  {
+    rows.warm_start_rows(0, s.bodies);
+  }
+  rows.solve_rows(0, s.bodies, detail::RowPass{kInvH, kMaxPush, use_bias});
+  rows.drop_spare_body(s.bodies);
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    ASSERT_NE(rows.normal_impulse_of(k), nullptr) << k;
+    rows.unpack_point(k, s.points[k]);
+  }
+}
+
+TEST(SoftRows, OnePointBatchesGiveThePointVerbsBits)
+{
+  test::for_each_row_lanes([](const char* label) {
+    int checked = 0;
+    int sticking = 0;
+    for (std::uint32_t seed = 1; seed <= 20; ++seed)
+    {
+      for (const bool use_bias : {true, false})
+      {
+        Scene expected = random_scene(seed);
+        Scene batched = expected;
+        solve_by_points(expected, use_bias, use_bias);
+        solve_by_rows(batched, use_bias, use_bias);
+        for (std::size_t i = 0; i < expected.bodies.size(); ++i)
+        {
+          const BodyVelocity& e = expected.bodies[i];
+          const BodyVelocity& b = batched.bodies[i];
+          EXPECT_TRUE(same_bits(e.v.x, b.v.x) && same_bits(e.v.y, b.v.y) && same_bits(e.omega, b.omega))
+              << label << " seed " << seed << " body " << i;
+        }
+        for (std::size_t k = 0; k < expected.points.size(); ++k)
+        {
+          const ContactPoint& e = expected.points[k];
+          const ContactPoint& b = batched.points[k];
+          EXPECT_TRUE(same_bits(e.lambda_n, b.lambda_n) && same_bits(e.lambda_t, b.lambda_t))
+              << label << " seed " << seed << " point " << k;
+          EXPECT_EQ(e.sliding, b.sliding) << label << " seed " << seed << " point " << k;
+          EXPECT_GE(b.lambda_n, 0.0);
+          if (b.mu_s > 0.0)
+          {
+            sticking += b.sliding ? 0 : 1;
+            EXPECT_LE(std::abs(b.lambda_t), (b.kinetic ? b.mu_k : b.mu_s) * b.lambda_n) << "inside the cone";
+          }
+        }
+        ++checked;
+      }
+    }
+    std::printf("%s rows: %d random scenes of %zu one-point manifolds matched bit for bit (%d rough points stuck)\n",
+                label, checked, kManifolds, sticking);
+    EXPECT_GT(sticking, checked) << "the scenes check sticking friction, pull included";
+  });
+}
+
+}  // namespace
+}  // namespace collision2d

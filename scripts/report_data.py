@@ -31,6 +31,7 @@ STACK_TIME_TARGET = 2.0     # our CPU ms/frame / Box2D v3's on each stack
 STACK_TARGET_SECONDS = 60.0
 BOUNCE_TARGET = 1e-3        # |measured e - e| at the defaults
 INCLINE_TARGET = 1e-6       # m/s^2 at the defaults
+INCLINE_SLID = 0.01         # m/s^2: a held box's error this large is a slide, not settling
 GAS_TARGET = 1e-6           # relative kinetic energy drift over the gas run at the defaults
 GAS_TARGET_SECONDS = 10.0
 FAST_BULLET = "bullet_wall_1e4"

@@ -1,7 +1,7 @@
 // Internal to soft_rows*.cpp: the soft step's verbs on a batch of two-point
-// or of one-point manifolds, written once for a lane type V: double (one lane, the scalar
-// path), a two-wide vector (soft_rows_lanes2.cpp) or a four-wide one
-// (soft_rows_avx2.cpp). Every branch of the point verbs
+// or of one-point manifolds, written once for a lane type V: double (one
+// lane, the scalar path), a two-wide vector (soft_rows_lanes2.cpp) or a
+// four-wide one (soft_rows_avx2.cpp). Every branch of the point verbs
 // (contact_kernel_soft.cpp, contact_kernel.cpp) is computed and selected, in
 // every type, so the vector paths have exactly the scalar path's bits. The
 // lane type provides + - * /, comparisons giving a mask M, mask and/or,

@@ -34,7 +34,6 @@ std::size_t batched_lanes(std::size_t lanes)
   return last != 0 && last < kMinBatchLanes ? lanes - last : lanes;
 }
 
-
 /// A key whose unsigned order is the descending order of h. A float is fine
 /// enough to order contacts by height; equal heights keep point order.
 std::uint32_t descending_key(float h)

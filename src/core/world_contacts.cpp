@@ -339,11 +339,19 @@ void WorldImpl::publish_contacts(bool soft_frame)
         carry_slip(row, offset);
         range_deepest = std::max(range_deepest, -separation_at(row, offset));
       }
+      // Field by field: the buffer is cold, and whole-struct temporaries
+      // went through the stack first.
       WorldContact& c = contacts_[k];
       c.a = ids_[row.a];
       c.b = ids_[row.b];
-      c.contact = Contact{row.a, row.b, row.normal, row.point, row.penetration, row.feature};
-      c.impulse = ContactImpulse{row.lambda_n, row.lambda_t};
+      c.contact.a = row.a;
+      c.contact.b = row.b;
+      c.contact.normal = row.normal;
+      c.contact.point = row.point;
+      c.contact.penetration = row.penetration;
+      c.contact.feature = row.feature;
+      c.impulse.normal = row.lambda_n;
+      c.impulse.tangent = row.lambda_t;
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
       c.origin = soft_frame && reuse_distance_ > 0.0 ? origins_[k] : ContactOrigin{};

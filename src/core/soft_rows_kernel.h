@@ -291,19 +291,31 @@ void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
   ops.store(r.point[1].tangent, sel(rough, total - first, ops.load(r.point[1].tangent)));
 }
 
-/// The anchor pull of the biased pass: the mean slip of the two points since
-/// they stuck, pulled back at the contact's rate, capped at max_push.
+/// A point's slip since it stuck (anchor_drift): 0 once it has slid.
+template <class V, class Ops>
+V point_drift(const Ops& ops, const Lane<V>& l, const RowPoint& point, V2<V> d, V2<V> ra, V2<V> rb)
+{
+  const V slip = dot(d - (rb - ra), l.t);
+  return sel(ops.load(point.kinetic) != V(0.0), V(0.0), ops.load(point.anchor) + slip);
+}
+
+/// The biased pass's pull back to the anchors (anchor_pull): `drift` at the
+/// contact's rate, capped at max_push.
+template <class V, class Ops, class Batch>
+V capped_pull(const Ops& ops, const Batch& r, V drift, const RowPass& pass)
+{
+  const V pull = (ops.load(r.mass_scale) * ops.load(r.bias_rate)) * drift;
+  const V max_push = V(pass.max_push);
+  return vmax(neg(max_push), vmin(max_push, pull));
+}
+
+/// The anchor pull of a two-point manifold: the mean slip of its points.
 template <class V, class Ops>
 V anchor_pull(const Ops& ops, const Lane<V>& l, const RowBatch& r, V2<V> d1, V2<V> d2, const RowPass& pass)
 {
-  const V zero = V(0.0);
-  const V slip1 = dot(d1 - (l.rb1 - l.ra1), l.t);
-  const V slip2 = dot(d2 - (l.rb2 - l.ra2), l.t);
-  const V drift1 = sel(ops.load(r.point[0].kinetic) != zero, zero, ops.load(r.point[0].anchor) + slip1);
-  const V drift2 = sel(ops.load(r.point[1].kinetic) != zero, zero, ops.load(r.point[1].anchor) + slip2);
-  const V pull = (ops.load(r.mass_scale) * ops.load(r.bias_rate)) * (V(0.5) * (drift1 + drift2));
-  const V max_push = V(pass.max_push);
-  return vmax(neg(max_push), vmin(max_push, pull));
+  const V drift1 = point_drift(ops, l, r.point[0], d1, l.ra1, l.rb1);
+  const V drift2 = point_drift(ops, l, r.point[1], d2, l.ra2, l.rb2);
+  return capped_pull(ops, r, V(0.5) * (drift1 + drift2), pass);
 }
 
 template <class V, class Ops>
@@ -348,17 +360,6 @@ void solve_single_friction(const Ops& ops, Lane<V>& l, RowSingle& r, V pull)
   ops.store(r.point[0].tangent, sel(ops.load(r.rough) != V(0.0), total, old));
 }
 
-/// The biased pass's pull of a one-point manifold back to its anchor
-/// (anchor_pull): its slip since it stuck, at the contact's rate, capped.
-template <class V, class Ops>
-V single_pull(const Ops& ops, const Lane<V>& l, const RowSingle& r, V2<V> d, const RowPass& pass)
-{
-  const V slip = dot(d - (l.rb1 - l.ra1), l.t);
-  const V drift = sel(ops.load(r.point[0].kinetic) != V(0.0), V(0.0), ops.load(r.point[0].anchor) + slip);
-  const V max_push = V(pass.max_push);
-  return vmax(neg(max_push), vmin(max_push, (ops.load(r.mass_scale) * ops.load(r.bias_rate)) * drift));
-}
-
 template <class V, class Ops>
 void solve_rows(const Ops& ops, RowSingle& r, std::vector<BodyVelocity>& state, const RowPass& pass)
 {
@@ -367,7 +368,10 @@ void solve_rows(const Ops& ops, RowSingle& r, std::vector<BodyVelocity>& state, 
   solve_single_normal(ops, l, r, pass, ops.load(r.point[0].base) + dot(d, l.n));
   if (any_rough(r))
   {
-    solve_single_friction(ops, l, r, pass.use_bias ? single_pull(ops, l, r, d, pass) : V(0.0));
+    // The relax pass has no pull, and no drift to compute.
+    const V pull =
+        pass.use_bias ? capped_pull(ops, r, point_drift(ops, l, r.point[0], d, l.ra1, l.rb1), pass) : V(0.0);
+    solve_single_friction(ops, l, r, pull);
   }
   ops.scatter(state, r.a, l.a);
   ops.scatter(state, r.b, l.b);

@@ -92,9 +92,7 @@ void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cache
     pair_cache_[k] = c;
     if (cached && count > 0)
     {
-      const BodyId a = ids_[pairs_[k].first];
-      const BodyId b = ids_[pairs_[k].second];
-      pair_cache_[k] = kept(k) ? (cursor = kept_from_[k]) : cached_pair(cursor, a, b);
+      pair_cache_[k] = first_cached(k, cursor);
       placed.looked_up = true;
       placed.last_lookup = pair_cache_[k];
     }
@@ -118,9 +116,7 @@ void WorldImpl::place_pairs_in_order(bool cached)
     pair_cache_[k] = cache_.size();
     if (cached && count > 0)
     {
-      const BodyId a = ids_[pairs_[k].first];
-      const BodyId b = ids_[pairs_[k].second];
-      pair_cache_[k] = kept(k) ? (cache_cursor_ = kept_from_[k]) : cached_pair(a, b);
+      pair_cache_[k] = first_cached(k, cache_cursor_);
     }
     rows += static_cast<std::size_t>(count);
   }
@@ -178,7 +174,11 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
   return deepest;
 }
 
-std::size_t WorldImpl::cached_pair(BodyId a, BodyId b) const { return cached_pair(cache_cursor_, a, b); }
+std::size_t WorldImpl::first_cached(std::size_t k, std::size_t& cursor) const
+{
+  // A kept manifold knows where its cached contacts start.
+  return kept(k) ? (cursor = kept_from_[k]) : cached_pair(cursor, ids_[pairs_[k].first], ids_[pairs_[k].second]);
+}
 
 std::size_t WorldImpl::cached_pair(std::size_t& cursor, BodyId a, BodyId b) const
 {

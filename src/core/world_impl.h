@@ -235,10 +235,12 @@ struct WorldImpl
   /// Pair k's manifold into its rows, impulses matched from the cache;
   /// returns its deepest penetration (m).
   double add_manifold(std::size_t k, double warm_scale, bool friction);
-  /// Index of the first cached contact of pair (a, b), or of where it would be.
-  std::size_t cached_pair(BodyId a, BodyId b) const;
-  /// ... from `cursor`, which it moves (cached_pair uses cache_cursor_).
+  /// Index of the first cached contact of pair (a, b), or of where it would
+  /// be, searched from `cursor`, which it moves.
   std::size_t cached_pair(std::size_t& cursor, BodyId a, BodyId b) const;
+  /// Pair k's first cached contact: where its kept manifold came from, else
+  /// cached_pair's answer; `cursor` as cached_pair's.
+  std::size_t first_cached(std::size_t k, std::size_t& cursor) const;
   /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
   /// The frame's points become contacts_ (the next frame's warm-start cache).
@@ -427,7 +429,7 @@ struct WorldImpl
   /// by publish_contacts (nothing changes the points or poses after it).
   bool followed_known_ = false;
   double followed_deepest_ = 0.0;  ///< m
-  mutable std::size_t cache_cursor_ = 0;  ///< cached_pair's position in cache_
+  mutable std::size_t cache_cursor_ = 0;  ///< the rows' cached_pair cursor in cache_, kept between lookups
   std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
   std::vector<double> kicked_omega_;
   std::vector<std::size_t> island_;   ///< union-find parents for sleeping

@@ -115,6 +115,11 @@ public:
   /// they are 0 .. colour_count() - 1.
   std::size_t colour_count() const { return used_colours_; }
   const std::vector<std::size_t>& others(std::size_t colour) const { return colours_[colour].others; }
+  /// Whether a colour has batches (a small frame's colours often have none).
+  bool batched(std::size_t colour) const
+  {
+    return colours_[colour].pairs.lanes + colours_[colour].singles.lanes > 0;
+  }
   const std::vector<std::size_t>& overflow() const { return overflow_; }
   /// Manifolds in colours (rows and others), not counting the overflow.
   std::size_t coloured() const { return coloured_; }

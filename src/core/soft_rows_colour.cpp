@@ -149,9 +149,11 @@ void SoftRows::order_manifolds()
 void SoftRows::colour_manifolds(std::size_t bodies)
 {
   colours_of_.assign(bodies, 0);
+  // Only the last frame's colours were filled; the rest are still clear.
   colours_.resize(kMaxColours);
-  for (RowColour& c : colours_)
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
   {
+    RowColour& c = colours_[colour];
     c.others.clear();
     c.pairs.lanes = 0;
     c.singles.lanes = 0;
@@ -199,7 +201,14 @@ void SoftRows::colour_manifolds(std::size_t bodies)
   }
   row_slots_.clear();
   row_slots_.reserve(order_.size());
-  std::array<std::array<std::uint32_t, kMaxColours>, 2> placed{};
+  // Rows placed so far per kind and colour; zeroed for the used colours only
+  // (a zeroed initialiser clears the whole array with a slow-starting `rep stos`).
+  std::array<std::array<std::uint32_t, kMaxColours>, 2> placed;
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
+  {
+    placed[0][colour] = 0;
+    placed[1][colour] = 0;
+  }
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     Note& m = notes_[k];

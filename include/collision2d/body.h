@@ -1,6 +1,7 @@
 // Rigid 2D bodies: uniform disks and uniform convex polygons.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -56,7 +57,7 @@ public:
   const std::vector<Vec2>& local_vertices() const { return local_vertices_; }
   /// Outward unit normal of face i (from vertex i to vertex i+1) in the body frame.
   const std::vector<Vec2>& local_face_normals() const { return local_normals_; }
-  Vec2 world_vertex(std::size_t i) const;
+  Vec2 world_vertex(std::size_t i) const { return position_ + rotate(local_vertices_[i], cos_, sin_); }
   Vec2 world_face_normal(std::size_t i) const;
   /// cos(theta), sin(theta), cached when theta changes.
   double cos_theta() const { return cos_; }
@@ -75,8 +76,24 @@ public:
   Vec2 momentum() const { return mass_ * velocity_; }
   /// About the world origin: I w + m p x v.
   double angular_momentum() const;
-  /// Tight world-space bounding box at the current pose.
-  Aabb aabb() const;
+  /// Tight world-space bounding box at the current pose. Inline: a box
+  /// returned from another unit came back through the stack in pieces.
+  Aabb aabb() const
+  {
+    if (shape_ == Shape::Disk)
+    {
+      const Vec2 half{radius_, radius_};
+      return {position_ - half, position_ + half};
+    }
+    Aabb box{world_vertex(0), world_vertex(0)};
+    for (std::size_t i = 1; i < local_vertices_.size(); ++i)
+    {
+      const Vec2 p = world_vertex(i);
+      box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y)};
+      box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y)};
+    }
+    return box;
+  }
 
   void set_velocity(Vec2 v) { velocity_ = v; }
   void set_omega(double w) { omega_ = w; }

@@ -275,11 +275,6 @@ Body::Body(double mass, const std::vector<Vec2>& local_vertices, Vec2 position, 
   set_theta(theta);
 }
 
-Vec2 Body::world_vertex(std::size_t i) const
-{
-  return position_ + rotate(local_vertices_[i], cos_, sin_);
-}
-
 Vec2 Body::world_face_normal(std::size_t i) const
 {
   return rotate(local_normals_[i], cos_, sin_);
@@ -293,23 +288,6 @@ double Body::kinetic_energy() const
 double Body::angular_momentum() const
 {
   return inertia_ * omega_ + mass_ * cross(position_, velocity_);
-}
-
-Aabb Body::aabb() const
-{
-  if (shape_ == Shape::Disk)
-  {
-    const Vec2 half{radius_, radius_};
-    return {position_ - half, position_ + half};
-  }
-  Aabb box{world_vertex(0), world_vertex(0)};
-  for (std::size_t i = 1; i < local_vertices_.size(); ++i)
-  {
-    const Vec2 p = world_vertex(i);
-    box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y)};
-    box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y)};
-  }
-  return box;
 }
 
 void Body::set_theta(double theta)

@@ -31,13 +31,24 @@ struct BodyVelocity
   double inv_inertia = 0.0;
 };
 
+/// Sets every field in place, unmoved. Filling a vector's element from a
+/// returned temporary went through the stack in pieces and was read back
+/// whole, a store the load could not forward (docs/performance.md).
+inline void set_body_velocity(BodyVelocity& state, Vec2 v, double omega, double inv_mass, double inv_inertia)
+{
+  state.v = v;
+  state.omega = omega;
+  state.moved = Vec2{0.0, 0.0};
+  state.turned_cos = 1.0;
+  state.turned_sin = 0.0;
+  state.inv_mass = inv_mass;
+  state.inv_inertia = inv_inertia;
+}
+
 inline BodyVelocity body_velocity(Vec2 v, double omega, double inv_mass, double inv_inertia)
 {
   BodyVelocity state;
-  state.v = v;
-  state.omega = omega;
-  state.inv_mass = inv_mass;
-  state.inv_inertia = inv_inertia;
+  set_body_velocity(state, v, omega, inv_mass, inv_inertia);
   return state;
 }
 

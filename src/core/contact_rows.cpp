@@ -68,7 +68,7 @@ void load_velocities(const std::vector<Body>& bodies, std::vector<BodyVelocity>&
   for (std::size_t i = 0; i < bodies.size(); ++i)
   {
     const Body& body = bodies[i];
-    state[i] = body_velocity(body.velocity(), body.omega(), body.inv_mass(), body.inv_inertia());
+    set_body_velocity(state[i], body.velocity(), body.omega(), body.inv_mass(), body.inv_inertia());
   }
 }
 

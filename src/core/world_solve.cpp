@@ -15,7 +15,7 @@ void WorldImpl::load_velocities()
   velocity_.resize(bodies_.size());
   for_each_body([this](std::size_t i) {
     const Body& b = bodies_[i];
-    velocity_[i] = body_velocity(b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
+    set_body_velocity(velocity_[i], b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
   });
 }
 

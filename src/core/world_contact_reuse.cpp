@@ -85,23 +85,24 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
   return true;
 }
 
-ContactOrigin WorldImpl::point_origin(std::size_t k, int c) const
+void WorldImpl::set_point_origin(std::size_t k, int c, ContactOrigin& o) const
 {
+  // In place: an origin returned by value came back through the stack in
+  // pieces and was read back whole, a store the load could not forward.
   if (kept(k))
   {
-    return cache_[kept_from_[k] + static_cast<std::size_t>(c)].origin;
+    o = cache_[kept_from_[k] + static_cast<std::size_t>(c)].origin;
+    return;
   }
   const Body& a = bodies_[pairs_[k].first];
   const Body& b = bodies_[pairs_[k].second];
   const Manifold& m = manifolds_[k];
-  ContactOrigin o;
   o.r_a = m.points[c].point - a.position();
   o.r_b = m.points[c].point - b.position();
   o.separation = m.points[c].separation;
   o.theta_a = a.theta();
   o.theta_b = b.theta();
   o.known = true;
-  return o;
 }
 
 }  // namespace detail

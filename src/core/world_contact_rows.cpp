@@ -147,7 +147,7 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     if (reuse_distance_ > 0.0)
     {
       const std::size_t at = pair_rows_[k] + static_cast<std::size_t>(c);
-      origins_[at] = point_origin(k, c);
+      set_point_origin(k, c, origins_[at]);
       row.kept = kept(k);
       if (row.kept)
       {

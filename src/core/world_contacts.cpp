@@ -354,7 +354,14 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.impulse.tangent = row.lambda_t;
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
-      c.origin = soft_frame && reuse_distance_ > 0.0 ? origins_[k] : ContactOrigin{};
+      if (soft_frame && reuse_distance_ > 0.0)
+      {
+        c.origin = origins_[k];  // not through a conditional's temporary, which stalled as above
+      }
+      else
+      {
+        c.origin = ContactOrigin{};
+      }
     }
     raise_to(deepest, range_deepest);
   });

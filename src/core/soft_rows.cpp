@@ -187,7 +187,13 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
-  colour_manifolds(velocity.size());                      // soft_rows_colour.cpp
+  order_manifolds();                                      // soft_rows_colour.cpp
+  if (order_.size() < kMinColouredManifolds)
+  {
+    order_without_colours();
+    return;
+  }
+  colour_manifolds(velocity.size());
   // Each colour's rows of each kind in whole batches, the last one padded.
   // Every lane has its own slot, so the workers can fill them in any split.
   resize_to_overwrite(rows_, place_batches(Kind::Pair));  // the lanes below write every slot

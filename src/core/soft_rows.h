@@ -93,7 +93,8 @@ struct RowColour
 
 /// The frame's manifolds in colours. The World walks the colours in order:
 /// each colour's batches (solve_rows), then its other manifolds on the point
-/// verbs, and the overflow last.
+/// verbs, and the overflow last. A frame of one or two manifolds has no
+/// colours: they go to the overflow, from the top down.
 class SoftRows
 {
 public:
@@ -107,7 +108,8 @@ public:
   /// ... and for every other point.
   void note_no_manifold(std::size_t k);
   /// Colours and packs this frame's noted manifolds (prepared, soft terms
-  /// set), the highest first; the lanes are filled by the workers.
+  /// set), the highest first; the lanes are filled by the workers. Below
+  /// kMinColouredManifolds they are only ordered, the highest first.
   /// `velocity` gains one spare body at its end for the padding lanes.
   void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
             WorkerPool& workers);
@@ -150,6 +152,10 @@ public:
   }
 
 private:
+  /// Fewer manifolds than this are solved in height order without colours:
+  /// for one or two it is the order the colours give, so the bits are the
+  /// same, and colouring cost a small scene about a tenth of its frame.
+  static constexpr std::size_t kMinColouredManifolds = 3;
   /// Colours tried before a manifold goes to the overflow: a box in a stack
   /// touches at most six others, so greedy colouring needs far fewer.
   static constexpr std::size_t kMaxColours = 24;
@@ -176,7 +182,11 @@ private:
 
   /// The noted manifolds' keys in order_, from the highest down.
   void order_manifolds();
-  /// Colours every noted manifold from the highest down (soft_rows_colour.cpp)
+  /// No colours and no rows: every ordered manifold to the overflow.
+  void order_without_colours();
+  /// Empties the colours (the last frame's only) and the overflow.
+  void clear_colours();
+  /// Colours every ordered manifold from the highest down (soft_rows_colour.cpp)
   /// and gives each colour's rows their places; `bodies` counts the spare one.
   void colour_manifolds(std::size_t bodies);
   /// The first colour free of bodies a and b (kFixed: one that cannot

@@ -93,6 +93,9 @@ void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>
   }
 }
 
+/// The manifold's first point, the low half of its order_ key.
+std::size_t first_point(std::uint64_t key) { return static_cast<std::size_t>(key & 0xffffffffU); }
+
 }  // namespace
 
 std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
@@ -149,26 +152,14 @@ void SoftRows::order_manifolds()
 void SoftRows::colour_manifolds(std::size_t bodies)
 {
   colours_of_.assign(bodies, 0);
-  // Only the last frame's colours were filled; the rest are still clear.
-  colours_.resize(kMaxColours);
-  for (std::size_t colour = 0; colour < used_colours_; ++colour)
-  {
-    RowColour& c = colours_[colour];
-    c.others.clear();
-    c.pairs.lanes = 0;
-    c.singles.lanes = 0;
-  }
-  overflow_.clear();
-  coloured_ = 0;
-  used_colours_ = 0;
+  clear_colours();
   // First pass: colour every manifold from the top of the scene down; rows
   // are counted, then placed. Colouring in point (body index) order made the
   // colours lopsided across a stack, and a pyramid swayed to one side as it
   // settled; from the top down, each level is coloured alike.
-  order_manifolds();
   for (const std::uint64_t key : order_)
   {
-    const std::size_t first = key & 0xffffffffU;
+    const std::size_t first = first_point(key);
     Note& m = notes_[first];
     const std::size_t colour = take_colour(m.a, m.b);
     if (colour == kMaxColours)
@@ -225,6 +216,36 @@ void SoftRows::colour_manifolds(std::size_t bodies)
     }
     row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, slot++, m.kind});
   }
+}
+
+void SoftRows::clear_colours()
+{
+  // Only the last frame's colours were filled; the rest are still clear.
+  colours_.resize(kMaxColours);
+  for (std::size_t colour = 0; colour < used_colours_; ++colour)
+  {
+    RowColour& c = colours_[colour];
+    c.others.clear();
+    c.pairs.lanes = 0;
+    c.singles.lanes = 0;
+  }
+  overflow_.clear();
+  coloured_ = 0;
+  used_colours_ = 0;
+}
+
+void SoftRows::order_without_colours()
+{
+  // The colouring's own order: the second manifold follows the first in a
+  // colour after it when they share a body, and in any order when not.
+  clear_colours();
+  for (const std::uint64_t key : order_)
+  {
+    overflow_.push_back(first_point(key));
+  }
+  rows_.clear();
+  singles_.clear();
+  lane_of_.clear();  // no point has a row
 }
 
 RowRange& SoftRows::range_of(std::size_t colour, Kind kind)

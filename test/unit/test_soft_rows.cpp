@@ -176,5 +176,59 @@ TEST(SoftRows, OnePointBatchesGiveThePointVerbsBits)
   });
 }
 
+/// Notes every point of `s` as a one-point manifold, the first `count`
+/// only, and packs them.
+void pack_first(detail::SoftRows& rows, Scene& s, std::size_t count, detail::WorkerPool& workers)
+{
+  rows.expect_points(s.points.size());
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    if (k < count)
+    {
+      rows.note_manifold(k, s.points[k], nullptr, Vec2{0.0, 1.0});
+    }
+    else
+    {
+      rows.note_no_manifold(k);
+    }
+  }
+  rows.pack(s.points, s.bodies, true, workers);
+  rows.drop_spare_body(s.bodies);
+}
+
+TEST(SoftRows, TwoManifoldsGoTopDownWithoutColoursAndLeaveNoneBehind)
+{
+  Scene s = random_scene(7);
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    s.points[k].point = Vec2{0.0, static_cast<double>(k)};  // the last is the highest
+  }
+  detail::SoftRows rows;
+  detail::WorkerPool workers;
+  // 14 disjoint manifolds: one colour, three full batches and two manifolds
+  // left to the point verbs.
+  pack_first(rows, s, kManifolds - 1, workers);
+  ASSERT_EQ(rows.colour_count(), 1u);
+  EXPECT_EQ(rows.others(0).size(), 2u);
+  // Two: no colours, no rows, the higher first.
+  pack_first(rows, s, 2, workers);
+  EXPECT_EQ(rows.colour_count(), 0u);
+  EXPECT_EQ(rows.coloured(), 0u);
+  EXPECT_EQ(rows.overflow(), (std::vector<std::size_t>{1, 0}));
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    EXPECT_EQ(rows.normal_impulse_of(k), nullptr) << "point " << k << " has no row";
+  }
+  // All 15 again: the colour holds its batches only, nothing left from before.
+  pack_first(rows, s, kManifolds, workers);
+  ASSERT_EQ(rows.colour_count(), 1u);
+  EXPECT_TRUE(rows.others(0).empty());
+  EXPECT_TRUE(rows.overflow().empty());
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    EXPECT_NE(rows.normal_impulse_of(k), nullptr) << "point " << k << " is in a batch";
+  }
+}
+
 }  // namespace
 }  // namespace collision2d

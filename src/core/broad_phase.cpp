@@ -37,6 +37,9 @@ constexpr std::int32_t kMaxCellsPerSide = 4;
 constexpr double kCellIndexLimit = 536870912.0;  // 2^29 cells
 /// Cell size when the boxes are points spread over nothing (all identical).
 constexpr double kFallbackCell = 1.0;  // m
+/// Up to this many boxes every pair is tested: fewer tests than the grid's
+/// fixed work of placing, classifying, filling and sorting.
+constexpr std::size_t kAllPairsBoxes = 8;
 /// Calls between two choices of the cell size. The cell only sets the cost
 /// of a call, never its pairs, and box sizes barely change between substeps,
 /// so the percentile (a selection over every box) is not redone each call;
@@ -75,12 +78,36 @@ void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<Bod
 {
   // The pairs end sorted, so the order the parts found them in does not show.
   pairs.clear();
+  if (boxes.size() <= kAllPairsBoxes)
+  {
+    all_pairs(boxes, pairs);
+    return;
+  }
   place_grid(boxes, runner);
   classify(boxes, runner);
   fill_grid(runner);
   pairs_in_grid(boxes, pairs, runner);
   pairs_of_large(boxes, pairs);
   sort_pairs(boxes.size(), pairs);
+}
+
+void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
+{
+  // In (i, j) order: sorted as the grid's pairs end.
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+  {
+    if (!detail::is_usable(boxes[i]))
+    {
+      continue;
+    }
+    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+    {
+      if (detail::is_usable(boxes[j]) && boxes[i].overlaps(boxes[j]))
+      {
+        pairs.emplace_back(i, j);
+      }
+    }
+  }
 }
 
 void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)

@@ -314,6 +314,36 @@ TEST(BroadPhase, NonFiniteAndInvertedBoxesPairWithNothing)
   EXPECT_TRUE(pairs.empty());
 }
 
+TEST(BroadPhase, FewBoxesTestedPairwiseMatchTheGrid)
+{
+  // From 1 box to 16, across the size where every pair is tested instead of
+  // gridded, on one reused broad phase: the same pairs, sorted, and no pair
+  // with an unusable box.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  BroadPhase broad_phase;
+  std::vector<BodyPair> pairs;
+  std::size_t found = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed)
+  {
+    const std::size_t n = 1 + seed % 16;
+    std::vector<Aabb> boxes = boxes_of(test::random_scene(seed, n, {3.0, 3.0}));
+    if (seed % 5 == 0)
+    {
+      boxes[seed % n] = Aabb{{nan, 0.0}, {1.0, 1.0}};
+    }
+    if (seed % 3 == 0)
+    {
+      // Inverted along x inside the scene: plain overlap tests would pair it.
+      boxes.back() = Aabb{{1.5, -1.0}, {1.49, 4.0}};
+    }
+    broad_phase.find_pairs(boxes, pairs);
+    EXPECT_EQ(pairs, brute_force_usable(boxes)) << n << " boxes, seed " << seed;
+    expect_sorted_unique_ordered(pairs);
+    found += pairs.size();
+  }
+  EXPECT_GT(found, 40u) << "scenes too sparse to test anything";
+}
+
 TEST(BroadPhase, WarmedUpCallsAllocateNothing)
 {
   // Ten frames of a moving scene with a ground slab, played twice: the second

@@ -37,15 +37,23 @@ BodyCensus WorldImpl::take_census()
   // with their grid and only the movers are counted again.
   const bool movers_only = movers_current();
   const std::size_t n = movers_only ? movers_.size() : bodies_.size();
-  answer_in_parts(n, kMinSharedBodies, census_parts_, [&](std::size_t begin, std::size_t end) {
+  const auto count_range = [&](std::size_t begin, std::size_t end) {
     BodyCensus counted;
     for (std::size_t k = begin; k < end; ++k)
     {
       count_body(movers_only ? movers_[k] : k, counted);
     }
     return counted;
-  });
+  };
   BodyCensus census = movers_only ? resting_census_ : BodyCensus{};
+  if (n < kMinSharedBodies || workers_.workers() == 1)
+  {
+    // Kept in registers: a part's slot was stored field by field and read
+    // back whole, a store the load could not forward.
+    census.add(count_range(0, n));
+    return census;
+  }
+  answer_in_parts(n, kMinSharedBodies, census_parts_, count_range);
   for (const BodyCensus& part : census_parts_)
   {
     census.add(part);

@@ -133,7 +133,17 @@ private:
   std::vector<std::size_t> large_;       // boxes too large for the grid
   std::vector<std::size_t> bucket_start_;
   std::vector<Entry> entries_;
-  std::vector<std::size_t> entry_bucket_;  // bucket of each entry, in fill order
+  std::vector<std::size_t> entry_bucket_;  // when shared: bucket of each entry, in fill order
+  /// An entry and its bucket, in fill order before scattering (not shared).
+  /// 32 bits hold any box and bucket index: each box is tens of bytes.
+  struct StagedEntry
+  {
+    std::int32_t cx;
+    std::int32_t cy;
+    std::uint32_t box;
+    std::uint32_t bucket;
+  };
+  std::vector<StagedEntry> staged_;
   std::vector<std::size_t> pair_start_;
   std::vector<BodyPair> sorted_pairs_;
   std::vector<std::vector<BodyPair>> part_pairs_;  // each part's pairs when a runner shares the grid

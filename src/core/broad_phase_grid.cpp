@@ -96,16 +96,18 @@ void BroadPhase::fill_grid(RangeRunner* runner)
   }
   const std::size_t bucket_count = choose_layout(entry_count);
   bucket_start_.assign(bucket_count + 1, 0);
-  entry_bucket_.resize(entry_count);
   entries_.resize(entry_count);
   const std::size_t parts = detail::runner_parts(runner, entry_count);
   if (parts > 1)
   {
+    entry_bucket_.resize(entry_count);
     fill_grid_in_parts(*runner, parts, bucket_count);
     return;
   }
-  // Each entry's bucket is hashed once, while counting, and read back in
-  // the same order while scattering.
+  // Each entry is made and hashed once, while counting, and scattered from
+  // that list in one flat pass: walking each box's cells again mispredicted
+  // the short loops' ends as often as the first walk.
+  staged_.resize(entry_count);
   std::size_t e = 0;
   for (std::size_t box : grid_boxes_)
   {
@@ -115,7 +117,7 @@ void BroadPhase::fill_grid(RangeRunner* runner)
       for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
       {
         const std::size_t bucket = bucket_of(cx, cy);
-        entry_bucket_[e++] = bucket;
+        staged_[e++] = StagedEntry{cx, cy, static_cast<std::uint32_t>(box), static_cast<std::uint32_t>(bucket)};
         ++bucket_start_[bucket];
       }
     }
@@ -126,17 +128,9 @@ void BroadPhase::fill_grid(RangeRunner* runner)
     end += start;
     start = end;  // one past the bucket's end, decremented while scattering
   }
-  e = 0;
-  for (std::size_t box : grid_boxes_)
+  for (const StagedEntry& staged : staged_)
   {
-    const CellRange& r = ranges_[box];
-    for (std::int32_t cy = r.y0; cy <= r.y1; ++cy)
-    {
-      for (std::int32_t cx = r.x0; cx <= r.x1; ++cx)
-      {
-        entries_[--bucket_start_[entry_bucket_[e++]]] = Entry{cx, cy, box};
-      }
-    }
+    entries_[--bucket_start_[staged.bucket]] = Entry{staged.cx, staged.cy, staged.box};
   }
 }
 

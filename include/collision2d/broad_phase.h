@@ -135,7 +135,7 @@ private:
   std::vector<Entry> entries_;
   std::vector<std::size_t> entry_bucket_;  // when shared: bucket of each entry, in fill order
   /// An entry and its bucket, in fill order before scattering (not shared).
-  /// 32 bits hold any box and bucket index: each box is tens of bytes.
+  /// 32-bit indices: 2^32 boxes would take 128 GiB of boxes alone.
   struct StagedEntry
   {
     std::int32_t cx;

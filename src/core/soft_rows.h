@@ -154,7 +154,7 @@ public:
 private:
   /// Fewer manifolds than this are solved in height order without colours:
   /// for one or two it is the order the colours give, so the bits are the
-  /// same, and colouring cost a small scene about a tenth of its frame.
+  /// same without the colouring's fixed cost (docs/performance.md).
   static constexpr std::size_t kMinColouredManifolds = 3;
   /// Colours tried before a manifold goes to the overflow: a box in a stack
   /// touches at most six others, so greedy colouring needs far fewer.

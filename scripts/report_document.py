@@ -391,13 +391,23 @@ lead. Two kinds, both removed with the same bits:
   `find_mover_pairs`, 72% of `load_velocities`, 45% of `add_manifold` and
   49% of `publish_contacts` sat on one such load. `Body::aabb` is inline
   and the others are written in place (commits e96b10d, 6d9dbf5).
-- The colouring's fixed cost: clearing all 24 colours and zeroing its
-  counters with a `rep stos` each frame, row calls on colours without
-  batches, and colouring at all where one or two manifolds have the
-  colours' order already (commits 9833c04, 5826025).
-Whole-process CPU A/B of all four against 5cd23f6 (1e6 frames, medians of
-9 alternating pairs): newtons_cradle (Fx2D, 1x2) 0.897, bullet_wall (Fx2D,
-1x2) 0.841, heavy_on_light_1e4 (soft step, 1x8) 0.920, incline (Fx2D, 1x2)
-0.971, incline_slide (soft step, 1x2) 0.917, bouncing_disks (soft step,
-1x8) 0.983; the base-100 pyramid 0.971 for the origins alone.
+  The body census had the same stall when its one part was folded
+  (commit f581b6c).
+- Fixed work: the colouring cleared all 24 colours and zeroed its counters
+  with a `rep stos` each frame, called the rows on colours without batches,
+  and coloured frames of one or two manifolds, whose height order is the
+  colours' order (commits 9833c04, 5826025); the broad phase built its grid
+  for a handful of boxes, where testing every pair is cheaper (f0e5b37).
+The elastic gas's frame is a third broad phase; its grid walked each box's
+cells twice, and the short loops' ends mispredicted on both walks: the
+first walk now keeps each entry with its bucket for a flat scatter
+(352f0ba; gas 0.943, the rain of 1e5 1.02 and 1.6 MiB more at its peak).
+Each change's own A/B is in its commit message. Frames of a microsecond
+are sensitive to code placement: the same library linked into a rebuilt
+driver moved the Fx2D incline by up to 10%, so the A/B figures below 5%
+are within that. Against the report before (commit f230ad9, CPU ms per
+frame, two runs on a machine whose speed drifts): newtons_cradle Fx2D 1x2
+0.000473 -> 0.000374, bullet_wall Fx2D 1x2 0.000303 -> 0.000280,
+incline_slide soft step 1x2 0.000888 -> 0.000762, elastic_gas soft step
+1x2 0.156 -> 0.139, the base-20 pyramid at the defaults 0.244 -> 0.229.
 """

@@ -2,7 +2,8 @@
 // point verbs they stand for (contact_kernel.h): on random contacts, every
 // lane path this build and CPU have must give the velocities, impulses and
 // friction states of warm_start, solve_soft_normal and solve_friction with
-// the anchor pull, bit for bit.
+// the anchor pull, bit for bit. And a frame of one or two manifolds, which
+// skips the colours, between coloured ones: nothing left behind.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -45,20 +45,12 @@ BodyCensus WorldImpl::take_census()
     }
     return counted;
   };
-  BodyCensus census = movers_only ? resting_census_ : BodyCensus{};
-  if (n < kMinSharedBodies || workers_.workers() == 1)
-  {
-    // Kept in registers: a part's slot was stored field by field and read
-    // back whole, a store the load could not forward.
-    census.add(count_range(0, n));
-    return census;
-  }
-  answer_in_parts(n, kMinSharedBodies, census_parts_, count_range);
-  for (const BodyCensus& part : census_parts_)
-  {
-    census.add(part);
-  }
-  return census;
+  const BodyCensus start = movers_only ? resting_census_ : BodyCensus{};
+  return fold_in_parts(n, kMinSharedBodies, census_parts_, start, count_range,
+                       [](BodyCensus census, const BodyCensus& part) {
+                         census.add(part);
+                         return census;
+                       });
 }
 
 void WorldImpl::count_body(std::size_t i, BodyCensus& census) const

@@ -71,10 +71,10 @@ struct WorldImpl
   template <class F>
   void for_point_ranges(F f);
   /// Splits [0, count) into parts, one per worker (one part when count <
-  /// min_shared), and stores answer(begin, end) of each part in `answers`, in
-  /// part order.
-  template <class T, class F>
-  void answer_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, F answer);
+  /// min_shared), and folds answer(begin, end) of each part into `start` in
+  /// part order: fold(fold(start, first), second)... `answers` is scratch.
+  template <class T, class F, class Fold>
+  T fold_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, T start, F answer, Fold fold);
   /// The fold best = std::max(best, value(k)) over k in [0, count) from
   /// `start`, in parts on the workers when count >= min_shared.
   template <class F>

@@ -18,12 +18,19 @@ void WorldImpl::for_point_ranges(F f)
                         [&](std::size_t begin, std::size_t end) { f(pair_boundary(begin), pair_boundary(end)); });
 }
 
-template <class T, class F>
-void WorldImpl::answer_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, F answer)
+template <class T, class F, class Fold>
+T WorldImpl::fold_in_parts(std::size_t count, std::size_t min_shared, std::vector<T>& answers, T start, F answer,
+                           Fold fold)
 {
+  const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
+  if (parts == 1)
+  {
+    // Folded straight from registers: an answer stored to its slot field by
+    // field and read back whole stalled the load (docs/performance.md).
+    return fold(start, answer(std::size_t{0}, count));
+  }
   // A part works in locals and stores once: the parts' slots share a cache
   // line, which writing them item by item would bounce.
-  const std::size_t parts = count < min_shared ? 1 : static_cast<std::size_t>(workers_.workers());
   answers.resize(parts);
   workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
     for (std::size_t part = begin; part < end; ++part)
@@ -31,6 +38,12 @@ void WorldImpl::answer_in_parts(std::size_t count, std::size_t min_shared, std::
       answers[part] = answer(count * part / parts, count * (part + 1) / parts);
     }
   });
+  T folded = start;
+  for (const T& part : answers)
+  {
+    folded = fold(folded, part);
+  }
+  return folded;
 }
 
 template <class F>
@@ -38,20 +51,16 @@ double WorldImpl::max_over(std::size_t count, std::size_t min_shared, double sta
 {
   // std::max keeps the earlier of equal values and skips a NaN value, so the
   // parts' results folded in order give the one-thread bits.
-  answer_in_parts(count, min_shared, partial_max_, [&](std::size_t begin, std::size_t end) {
+  const auto part_max = [&](std::size_t begin, std::size_t end) {
     double best = start;
     for (std::size_t k = begin; k < end; ++k)
     {
       best = std::max(best, value(k));
     }
     return best;
-  });
-  double best = start;
-  for (double part : partial_max_)
-  {
-    best = std::max(best, part);
-  }
-  return best;
+  };
+  return fold_in_parts(count, min_shared, partial_max_, start, part_max,
+                       [](double best, double part) { return std::max(best, part); });
 }
 
 template <class F>

@@ -254,8 +254,7 @@ void WorldImpl::require_finite_state()
   // first of all.
   // Only the bodies the frame visited can have changed (for_each_body).
   const std::size_t n = bodies_.size();
-  const std::size_t visits = visited_count();
-  answer_in_parts(visits, kMinSharedBodies, first_bad_, [&](std::size_t begin, std::size_t end) {
+  const auto first_bad_in = [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
       const std::size_t i = visited(k);
@@ -265,13 +264,11 @@ void WorldImpl::require_finite_state()
       }
     }
     return n;
-  });
-  for (std::size_t i : first_bad_)
+  };
+  const std::size_t i = fold_in_parts(visited_count(), kMinSharedBodies, first_bad_, n, first_bad_in,
+                                      [n](std::size_t found, std::size_t part) { return found != n ? found : part; });
+  if (i != n)
   {
-    if (i == bodies_.size())
-    {
-      continue;
-    }
     std::ostringstream msg;
     msg << "step: body " << ids_[i] << " overflowed to a non-finite state in frame " << frame_count_
         << " (its speed, size or mass lies far beyond the supported ranges)";

@@ -251,6 +251,10 @@ void each_batch(const RowRange& c, std::vector<Batch>& rows, std::size_t part, s
 void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, std::size_t part,
                                std::size_t parts)
 {
+  if (!batched(colour))
+  {
+    return;
+  }
   const RowLanes path = row_lanes();
   const auto warm = [&](auto& batch, int lanes) { warm_start_batch(path, batch, lanes, velocity); };
   each_batch(colours_[colour].pairs, rows_, part, parts, warm);
@@ -260,6 +264,10 @@ void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& ve
 void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass,
                           std::size_t part, std::size_t parts)
 {
+  if (!batched(colour))
+  {
+    return;
+  }
   const RowLanes path = row_lanes();
   const auto solve = [&](auto& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); };
   each_batch(colours_[colour].pairs, rows_, part, parts, solve);

@@ -79,6 +79,7 @@ struct RowRange
   std::size_t begin = 0;
   std::size_t end = 0;
   std::size_t lanes = 0;  ///< manifolds in the batches; the last batch may be padded
+  std::size_t placed = 0;  ///< manifolds given their lanes so far (colouring)
 };
 
 /// One colour: its batches of two-point manifolds (in rows_) and of
@@ -117,16 +118,11 @@ public:
   /// they are 0 .. colour_count() - 1.
   std::size_t colour_count() const { return used_colours_; }
   const std::vector<std::size_t>& others(std::size_t colour) const { return colours_[colour].others; }
-  /// Whether a colour has batches (a small frame's colours often have none).
-  bool batched(std::size_t colour) const
-  {
-    return colours_[colour].pairs.lanes + colours_[colour].singles.lanes > 0;
-  }
   const std::vector<std::size_t>& overflow() const { return overflow_; }
   /// Manifolds in colours (rows and others), not counting the overflow.
   std::size_t coloured() const { return coloured_; }
   /// A colour's batches of both kinds, or part `part` of `parts` of them
-  /// (the parts share no body).
+  /// (the parts share no body); nothing for a colour without batches.
   void warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, std::size_t part = 0,
                        std::size_t parts = 1);
   void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
@@ -194,6 +190,11 @@ private:
   std::size_t take_colour(std::uint32_t a, std::uint32_t b);
   /// A colour's batches of a kind (Pair or Single).
   RowRange& range_of(std::size_t colour, Kind kind);
+  /// Whether a colour has batches (a small frame's colours often have none).
+  bool batched(std::size_t colour) const
+  {
+    return colours_[colour].pairs.lanes + colours_[colour].singles.lanes > 0;
+  }
   /// Each colour's batches of `kind` in whole batches, the last one padded;
   /// returns the batch count.
   std::size_t place_batches(Kind kind);

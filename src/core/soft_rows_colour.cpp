@@ -192,14 +192,6 @@ void SoftRows::colour_manifolds(std::size_t bodies)
   }
   row_slots_.clear();
   row_slots_.reserve(order_.size());
-  // Rows placed so far per kind and colour; zeroed for the used colours only
-  // (a zeroed initialiser clears the whole array with a slow-starting `rep stos`).
-  std::array<std::array<std::uint32_t, kMaxColours>, 2> placed;
-  for (std::size_t colour = 0; colour < used_colours_; ++colour)
-  {
-    placed[0][colour] = 0;
-    placed[1][colour] = 0;
-  }
   for (std::size_t k = 0; k < notes_.size(); ++k)
   {
     Note& m = notes_[k];
@@ -207,14 +199,15 @@ void SoftRows::colour_manifolds(std::size_t bodies)
     {
       continue;
     }
-    std::uint32_t& slot = placed[m.kind == Kind::Single ? 1 : 0][m.colour];
-    if (slot >= range_of(m.colour, m.kind).lanes)
+    RowRange& range = range_of(m.colour, m.kind);
+    if (range.placed >= range.lanes)
     {
       m.kind = Kind::Other;
       colours_[m.colour].others.push_back(k);
       continue;
     }
-    row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, slot++, m.kind});
+    row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, static_cast<std::uint32_t>(range.placed++),
+                                 m.kind});
   }
 }
 
@@ -226,8 +219,8 @@ void SoftRows::clear_colours()
   {
     RowColour& c = colours_[colour];
     c.others.clear();
-    c.pairs.lanes = 0;
-    c.singles.lanes = 0;
+    c.pairs = RowRange{};
+    c.singles = RowRange{};
   }
   overflow_.clear();
   coloured_ = 0;

@@ -89,10 +89,7 @@ void WorldImpl::soft_colours(const SoftPass& pass, std::size_t part, std::size_t
   {
     for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
     {
-      if (soft_rows_.batched(c))
-      {
-        soft_rows_.warm_start_rows(c, velocity_, part, parts);
-      }
+      soft_rows_.warm_start_rows(c, velocity_, part, parts);
       others(c, warm);
       meet();
     }
@@ -102,10 +99,7 @@ void WorldImpl::soft_colours(const SoftPass& pass, std::size_t part, std::size_t
   const RowPass rows{pass.ctx->inv_h, settings_.contact_push_speed, pass.use_bias};
   for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
   {
-    if (soft_rows_.batched(c))
-    {
-      soft_rows_.solve_rows(c, velocity_, rows, part, parts);
-    }
+    soft_rows_.solve_rows(c, velocity_, rows, part, parts);
     others(c, solve);
     meet();
   }

@@ -146,13 +146,14 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     row.count = m.count;
     if (reuse_distance_ > 0.0)
     {
-      const std::size_t at = pair_rows_[k] + static_cast<std::size_t>(c);
-      set_point_origin(k, c, origins_[at]);
+      // Into the contact the point will be published as (detect sized the list).
+      ContactOrigin& origin = contacts_[pair_rows_[k] + static_cast<std::size_t>(c)].origin;
+      set_point_origin(k, c, origin);
       row.kept = kept(k);
       if (row.kept)
       {
-        row.r_a = origins_[at].r_a;
-        row.r_b = origins_[at].r_b;
+        row.r_a = origin.r_a;
+        row.r_b = origin.r_b;
       }
     }
     deepest = std::max(deepest, row.penetration);

@@ -73,7 +73,8 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   resize_to_overwrite(points_, rows);  // add_manifold writes every row
   if (reuse_distance_ > 0.0)
   {
-    origins_.resize(rows);
+    // Each point's origin is written where it is published (add_manifold).
+    resize_to_overwrite(contacts_, rows);
   }
   if (prepare != nullptr)
   {
@@ -354,13 +355,9 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.impulse.tangent = row.lambda_t;
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
-      if (soft_frame && reuse_distance_ > 0.0)
+      if (!soft_frame || reuse_distance_ <= 0.0)
       {
-        c.origin = origins_[k];  // not through a conditional's temporary, which stalled as above
-      }
-      else
-      {
-        c.origin = ContactOrigin{};
+        c.origin = ContactOrigin{};  // else add_manifold wrote it in place
       }
     }
     raise_to(deepest, range_deepest);

@@ -333,7 +333,9 @@ struct WorldImpl
   StepReport rest_frame_;      ///< that frame's own report
   bool rest_finish_known_ = false;  ///< the last step ended at the rest state; no frame stepped since
   StepReport rest_finish_;     ///< finish_report's figures at rest
-  std::vector<WorldContact> contacts_;  ///< contacts of pairs with a mover, in (a, b) order
+  /// Contacts of pairs with a mover, in (a, b) order. A soft frame's
+  /// detection writes each point's origin here before publish fills the rest.
+  std::vector<WorldContact> contacts_;
   /// Contacts of sleeping islands (with each other, static and still
   /// kinematic bodies), in (a, b) order: nothing in a step reads them until
   /// their island wakes.
@@ -369,7 +371,6 @@ struct WorldImpl
   std::vector<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
   /// Soft step: each pair's first cached contact when its manifold is kept, else kNotKept.
   std::vector<std::size_t> kept_from_;
-  std::vector<ContactOrigin> origins_;  ///< soft step: each point's origin, published with it
   double reuse_distance_ = 0.0;         ///< this detection's contact_reuse_distance (m), 0: none
   /// Polygon i's world vertices, then its face normals, from posed_offset_[i]
   /// in posed_vertices_ (2 vertex_count() entries).

@@ -34,7 +34,7 @@ SCALING_SIZES=(100 1000 10000 100000)
 THROUGHPUT_SIZES=(100 1000 10000 100000)
 # Settled pyramids (sleeping on) up to base 100: larger ones do not fall asleep in 10 s.
 RESTING_SIZES=(1000 5050)
-THROUGHPUT_ROUNDS=3  # the report reads the count back from scaling.csv
+THROUGHPUT_ROUNDS=7  # the report reads the count back from scaling.csv
 SCALING_ENGINES=(collision2d box2d chipmunk)
 BOX2D_V3_DIR="${COLLISION2D_BOX2D_V3_DIR:-}"
 BOX2D_V3_LIBRARY="${COLLISION2D_BOX2D_V3_LIBRARY:-}"

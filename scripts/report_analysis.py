@@ -110,22 +110,28 @@ def throughput_rows(scaling, scene, engine, workers="1"):
     return sorted(rows, key=lambda r: number(r["bodies"]))
 
 
-def worker_speedups(scaling, scene):
-    """(bodies, time with 1 worker / time with 2) for each size run both ways, ascending: the
-    median over the rounds of each round's own ratio (its 1-worker run and the 2-worker run right
-    after it), so a machine that slows down between rounds does not skew it."""
+def worker_speedup_rounds(scaling, scene):
+    """(bodies, [time with 1 worker / time with 2, one per round]) for each size run both ways,
+    ascending: each round's own ratio (its 1-worker run and the 2-worker run right after it), so
+    a machine that slows down between rounds does not skew it. A size whose rounds do not pair
+    up (one failed) gets the ratio of its two medians alone."""
     one = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "1")}
     two = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "2")}
-    speedups = []
+    rounds = []
     for b in one.keys() & two.keys():
         # median_runs keeps each size's times in round order; a round that failed leaves them unpaired.
         t1, t2 = one[b]["round_times"], two[b]["round_times"]
         ratios = [x / y for x, y in zip(t1, t2) if y > 0] if len(t1) == len(t2) else []
+        if not ratios and number(two[b]["ms_per_step"]) > 0:
+            ratios = [number(one[b]["ms_per_step"]) / number(two[b]["ms_per_step"])]
         if ratios:
-            speedups.append((number(b), statistics.median(ratios)))
-        elif number(two[b]["ms_per_step"]) > 0:
-            speedups.append((number(b), number(one[b]["ms_per_step"]) / number(two[b]["ms_per_step"])))
-    return sorted(speedups)
+            rounds.append((number(b), ratios))
+    return sorted(rounds, key=lambda x: x[0])
+
+
+def worker_speedups(scaling, scene):
+    """(bodies, median over the rounds of the speed-up of 2 workers over 1), ascending."""
+    return [(b, statistics.median(ratios)) for b, ratios in worker_speedup_rounds(scaling, scene)]
 
 
 def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None):

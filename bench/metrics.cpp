@@ -19,6 +19,8 @@ namespace bench
 namespace
 {
 constexpr double kInclineWindowStart = 0.5;  // s: the box has left its first-frame transient
+/// Timed repetitions of one run at most, however short each is.
+constexpr int kMaxRepetitions = 5000;
 
 using States = std::vector<BodyState>;
 
@@ -233,12 +235,14 @@ RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, cons
   const int frames = frames_for(options.timing_seconds, scene.scene.settings.dt);
   std::vector<double> wall;
   std::vector<double> cpu;
-  for (int r = 0; r < options.repetitions; ++r)
+  double timed_ms = 0.0;
+  for (int r = 0; r < options.repetitions || (timed_ms < options.min_timed_ms && r < kMaxRepetitions); ++r)
   {
     std::unique_ptr<Engine> engine = make_engine(scene.scene, config);
     const FrameTime t = time_frames(*engine, frames);
     wall.push_back(t.wall_ms);
     cpu.push_back(t.cpu_ms);
+    timed_ms += t.wall_ms * frames;
   }
   m.ms_per_step = median(wall);
   m.cpu_ms_per_step = median(cpu);

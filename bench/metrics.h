@@ -11,7 +11,11 @@ namespace bench
 struct RunOptions
 {
   double timing_seconds = 0.5;  ///< simulated time of each timed repetition (s)
-  int repetitions = 5;          ///< timed repetitions; the median is reported
+  int repetitions = 5;          ///< timed repetitions at least; the median is reported
+  /// ... and more, until they add up to this much wall time (ms): a small
+  /// scene's repetition lasts microseconds, and one interrupt would be a
+  /// large share of a handful of them.
+  double min_timed_ms = 50.0;
   double settle_seconds = 1.0;  ///< Resting: drift is measured from this time on (s)
   double seconds = 0.0;         ///< accuracy run length; 0 takes the scene's own (s)
 };
@@ -30,8 +34,9 @@ struct RunMetrics
   double error = NAN;            ///< the scene's main error (one of the above)
 };
 
-/// Times `repetitions` fresh runs, then runs once more for the accuracy
-/// metrics; every engine is measured by the same code from its body states.
+/// Times fresh runs (`repetitions` of them, or more until they add up to
+/// `min_timed_ms`), then runs once more for the accuracy metrics; every
+/// engine is measured by the same code from its body states.
 RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, const RunOptions& options);
 
 }  // namespace bench

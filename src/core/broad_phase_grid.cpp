@@ -242,8 +242,11 @@ void BroadPhase::pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t be
 void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
                                  std::vector<BodyPair>& pairs)
 {
-  const auto report_if_overlapping = [&](const Entry& a, const Entry& b) {
-    if (boxes[a.box].overlaps(boxes[b.box]) && owns(a.cx, a.cy, a.box, b.box))
+  // `same_cell` joins the box test with `&`: one branch for the whole test
+  // (Aabb::overlaps), where a bucket of two or three boxes mispredicts each
+  // comparison alone.
+  const auto report_if_overlapping = [&](bool same_cell, const Entry& a, const Entry& b) {
+    if ((same_cell & boxes[a.box].overlaps(boxes[b.box])) && owns(a.cx, a.cy, a.box, b.box))
     {
       pairs.emplace_back(std::min(a.box, b.box), std::max(a.box, b.box));
     }
@@ -252,20 +255,11 @@ void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t beg
   {
     for (std::size_t a = begin; a < end; ++a)
     {
-      const Entry& e = entries_[a];
-      const Aabb& box = boxes[e.box];
       for (std::size_t b = a + 1; b < end; ++b)
       {
+        const Entry& e = entries_[a];
         const Entry& f = entries_[b];
-        const Aabb& other = boxes[f.box];
-        // One branch for the whole test: each comparison alone mispredicts
-        // often in buckets of two or three boxes.
-        const bool hit = (e.cx == f.cx) & (e.cy == f.cy) & (box.lo.x <= other.hi.x) & (other.lo.x <= box.hi.x) &
-                         (box.lo.y <= other.hi.y) & (other.lo.y <= box.hi.y);
-        if (hit && owns(e.cx, e.cy, e.box, f.box))
-        {
-          pairs.emplace_back(std::min(e.box, f.box), std::max(e.box, f.box));
-        }
+        report_if_overlapping((e.cx == f.cx) & (e.cy == f.cy), e, f);
       }
     }
     return;
@@ -282,7 +276,7 @@ void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t beg
                                 boxes[entries_[b].box].lo.x <= boxes[e.box].hi.x;
          ++b)
     {
-      report_if_overlapping(e, entries_[b]);
+      report_if_overlapping(true, e, entries_[b]);
     }
   }
 }

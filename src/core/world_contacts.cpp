@@ -71,11 +71,9 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   const bool friction = ctx.effects.friction;
   const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
   resize_to_overwrite(points_, rows);  // add_manifold writes every row
-  if (reuse_distance_ > 0.0)
-  {
-    // Each point's origin is written where it is published (add_manifold).
-    resize_to_overwrite(contacts_, rows);
-  }
+  // One contact per point, published by publish_contacts; a soft frame's
+  // add_manifold writes each origin there first.
+  resize_to_overwrite(contacts_, rows);
   if (prepare != nullptr)
   {
     soft_rows_.expect_points(rows);
@@ -321,8 +319,8 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
 
 void WorldImpl::publish_contacts(bool soft_frame)
 {
-  // One pass for all: each point is read (and written) once while in cache.
-  resize_to_overwrite(contacts_, points_.size());
+  // One pass for all: each point is read (and written) once while in cache,
+  // into the contact detect set aside for it.
   std::atomic<double> deepest{0.0};
   const bool packed = soft_frame && rows_on();
   workers_.parallel_for(points_.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {

@@ -4,6 +4,7 @@
 #include "soft_rows.h"
 
 #include <algorithm>
+#include <array>
 #include <iterator>
 #include <type_traits>
 
@@ -16,9 +17,6 @@ namespace detail
 {
 namespace
 {
-/// Row manifolds (lanes) below which filling the batches stays on the
-/// calling thread: a lane is a few dozen copies.
-constexpr std::size_t kMinSharedLanes = 512;
 
 struct ScalarOps
 {
@@ -187,43 +185,129 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
-  order_manifolds();                                      // soft_rows_colour.cpp
+  order_manifolds(workers);                               // soft_rows_order.cpp
   if (order_.size() < kMinColouredManifolds)
   {
     order_without_colours();
     return;
   }
-  colour_manifolds(velocity.size());
+  colour_manifolds(velocity.size());                      // soft_rows_colour.cpp
   // Each colour's rows of each kind in whole batches, the last one padded.
   // Every lane has its own slot, so the workers can fill them in any split.
   resize_to_overwrite(rows_, place_batches(Kind::Pair));  // the lanes below write every slot
   resize_to_overwrite(singles_, place_batches(Kind::Single));
   lane_of_.assign(points.size(), kNoLane);
-  workers.parallel_for(row_slots_.size(), kMinSharedLanes, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t r = begin; r < end; ++r)
-    {
-      const RowSlot& row = row_slots_[r];
-      const RowColour& c = colours_[row.colour];
-      if (row.kind == Kind::Single)
-      {
-        const std::size_t lane = c.singles.begin * kRowLanes + row.slot;  // over all batches
-        fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction,
-                      spare_);
-        lane_of_[row.first] = kSingleLane | static_cast<std::uint32_t>(lane);
-        continue;
-      }
-      const std::size_t lane = c.pairs.begin * kRowLanes + row.slot;
-      fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, row.first, friction, spare_);
-      lane_of_[row.first] = static_cast<std::uint32_t>(2 * lane);
-      lane_of_[row.first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
-    }
-  });
+  place_rows(points, friction, workers);
   for (std::size_t colour = 0; colour < used_colours_; ++colour)
   {
     const RowColour& c = colours_[colour];
     pad_batches(c.pairs, rows_, spare_);
     pad_batches(c.singles, singles_, spare_);
   }
+}
+
+void SoftRows::place_rows(const std::vector<ContactPoint>& points, bool friction, WorkerPool& workers)
+{
+  const std::size_t parts = parts_for(workers);
+  part_others_.resize(parts);
+  if (parts == 1)
+  {
+    place_rows_part(0, 1, points, friction, workers);
+  }
+  else
+  {
+    resize_to_overwrite(part_counts_, 2 * parts * kPartCounts);
+    struct Team
+    {
+      SoftRows* rows;
+      const std::vector<ContactPoint>* points;
+      bool friction;
+      WorkerPool* workers;
+    } team{this, &points, friction, &workers};
+    workers.run_team(
+        [](void* context, std::size_t part, std::size_t) {
+          Team& t = *static_cast<Team*>(context);
+          t.rows->place_rows_part(part, static_cast<std::size_t>(t.workers->workers()), *t.points, t.friction,
+                                  *t.workers);
+        },
+        &team);
+  }
+  // The rows past a colour's batches, after the manifolds colouring left to
+  // the point verbs, in point order as the parts found them.
+  for (const auto& others : part_others_)
+  {
+    for (const auto& [colour, first] : others)
+    {
+      colours_[colour].others.push_back(first);
+    }
+  }
+}
+
+void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const std::vector<ContactPoint>& points,
+                               bool friction, WorkerPool& workers)
+{
+  // Within a colour the rows share no body, so their places are free: in
+  // point order, as the points lie in memory. Each part counts its rows of
+  // each colour and kind; its first place of each follows the parts' before it.
+  const auto index = [](const Note& m) { return 2 * std::size_t{m.colour} + (m.kind == Kind::Single ? 1 : 0); };
+  const auto is_row = [](const Note& m) { return m.first && m.kind != Kind::Other; };
+  const std::size_t n = notes_.size();
+  const std::size_t begin = n * part / parts;
+  const std::size_t end = n * (part + 1) / parts;
+  std::array<std::uint32_t, 2 * kMaxColours> next{};
+  if (parts > 1)
+  {
+    std::uint32_t* own = &part_counts_[part * kPartCounts];
+    std::fill(own, own + next.size(), 0U);
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      if (is_row(notes_[k]))
+      {
+        ++own[index(notes_[k])];
+      }
+    }
+    workers.sync();
+    for (std::size_t p = 0; p < part; ++p)
+    {
+      for (std::size_t i = 0; i < next.size(); ++i)
+      {
+        next[i] += part_counts_[p * kPartCounts + i];
+      }
+    }
+  }
+  auto& others = part_others_[part];
+  others.clear();
+  for (std::size_t k = begin; k < end; ++k)
+  {
+    Note& m = notes_[k];
+    if (!is_row(m))
+    {
+      continue;
+    }
+    const std::uint32_t slot = next[index(m)]++;
+    if (slot >= range_of(m.colour, m.kind).lanes)
+    {
+      m.kind = Kind::Other;
+      others.emplace_back(m.colour, static_cast<std::uint32_t>(k));
+      continue;
+    }
+    fill_lane(points, k, m, slot, friction);
+  }
+}
+
+void SoftRows::fill_lane(const std::vector<ContactPoint>& points, std::size_t first, const Note& m, std::size_t slot,
+                         bool friction)
+{
+  const std::size_t lane = range_of(m.colour, m.kind).begin * kRowLanes + slot;  // over all batches
+  if (m.kind == Kind::Single)
+  {
+    fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, spare_);
+    lane_of_[first] = kSingleLane | static_cast<std::uint32_t>(lane);
+    return;
+  }
+  fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, spare_);
+  lane_of_[first] = static_cast<std::uint32_t>(2 * lane);
+  lane_of_[first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
 }
 
 double* SoftRows::normal_impulse_of(std::size_t k)

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "contact_kernel.h"
@@ -79,7 +80,6 @@ struct RowRange
   std::size_t begin = 0;
   std::size_t end = 0;
   std::size_t lanes = 0;  ///< manifolds in the batches; the last batch may be padded
-  std::size_t placed = 0;  ///< manifolds given their lanes so far (colouring)
 };
 
 /// One colour: its batches of two-point manifolds (in rows_) and of
@@ -152,6 +152,14 @@ private:
   /// for one or two it is the order the colours give, so the bits are the
   /// same without the colouring's fixed cost (docs/performance.md).
   static constexpr std::size_t kMinColouredManifolds = 3;
+  /// Notes (contact points) below which packing stays on the calling
+  /// thread: a manifold costs tens of nanoseconds, waking the workers microseconds.
+  static constexpr std::size_t kMinSharedNotes = 2048;
+  /// How many parts the packing of this frame's notes takes (1: not shared).
+  std::size_t parts_for(const WorkerPool& workers) const
+  {
+    return notes_.size() >= kMinSharedNotes ? static_cast<std::size_t>(workers.workers()) : 1;
+  }
   /// Colours tried before a manifold goes to the overflow: a box in a stack
   /// touches at most six others, so greedy colouring needs far fewer.
   static constexpr std::size_t kMaxColours = 24;
@@ -176,15 +184,28 @@ private:
     Kind kind = Kind::Other;   ///< how it is solved (once coloured)
   };
 
-  /// The noted manifolds' keys in order_, from the highest down.
-  void order_manifolds();
+  /// The noted manifolds' keys in order_, from the highest down
+  /// (soft_rows_order.cpp), in parts on the workers for a large frame.
+  void order_manifolds(WorkerPool& workers);
+  /// Part `part` of `parts` of order_manifolds: the keys of its notes, then
+  /// each digit's pass over its share of the keys (the parts meet at `workers`).
+  void order_part(std::size_t part, std::size_t parts, WorkerPool& workers);
   /// No colours and no rows: every ordered manifold to the overflow.
   void order_without_colours();
   /// Empties the colours (the last frame's only) and the overflow.
   void clear_colours();
   /// Colours every ordered manifold from the highest down (soft_rows_colour.cpp)
-  /// and gives each colour's rows their places; `bodies` counts the spare one.
+  /// and counts each colour's rows; `bodies` counts the spare one.
   void colour_manifolds(std::size_t bodies);
+  /// Gives each row manifold its place in its colour's batches, in point
+  /// order, and fills its lane; in parts on the workers for a large frame.
+  void place_rows(const std::vector<ContactPoint>& points, bool friction, WorkerPool& workers);
+  /// Part `part` of `parts` of place_rows, over its share of the points.
+  void place_rows_part(std::size_t part, std::size_t parts, const std::vector<ContactPoint>& points, bool friction,
+                       WorkerPool& workers);
+  /// A row manifold's lane: `slot` among its colour's rows of its kind.
+  void fill_lane(const std::vector<ContactPoint>& points, std::size_t first, const Note& m, std::size_t slot,
+                 bool friction);
   /// The first colour free of bodies a and b (kFixed: one that cannot
   /// move), now taken by them; kMaxColours when none is free.
   std::size_t take_colour(std::uint32_t a, std::uint32_t b);
@@ -222,16 +243,6 @@ private:
   std::size_t used_colours_ = 0;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
   std::vector<std::uint32_t> colours_of_;  ///< per body, a bit per colour that moves it
-  /// Where a row manifold goes: its colour and its place among the colour's
-  /// rows of its kind.
-  struct RowSlot
-  {
-    std::uint32_t first = 0;  ///< the manifold's first point
-    std::uint32_t colour = 0;
-    std::uint32_t slot = 0;
-    Kind kind = Kind::Pair;
-  };
-  std::vector<RowSlot> row_slots_;  ///< scratch, in point order
   /// Per point: where its row keeps it, (batch * kRowLanes + lane) * 2 + its
   /// place in the manifold, or kSingleLane | (batch * kRowLanes + lane) for a
   /// one-point manifold; kNoLane for a point without a row.
@@ -243,6 +254,16 @@ private:
   /// (low half), sorted.
   std::vector<std::uint64_t> order_;
   std::vector<std::uint64_t> sort_scratch_;
+  /// Scratch of the work in parts: each part's count of whatever it counts
+  /// before the parts meet (manifolds, digits of a sort pass, or rows by
+  /// colour and kind), kPartCounts entries a part, two sets used in turn.
+  std::vector<std::uint32_t> part_counts_;
+  static constexpr std::size_t kPartCounts = 256;
+  /// place_rows: the manifolds each part leaves to the point verbs, as
+  /// (colour, first point), in point order.
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> part_others_;
+  std::size_t ordered_ = 0;        ///< order_part: the manifolds' keys in all
+  bool order_in_scratch_ = false;  ///< order_part left the sorted keys in sort_scratch_
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
 };

@@ -1,12 +1,10 @@
 // The soft step's manifolds in colours (soft_rows.h): each noted at prepare,
-// ordered from the top of the scene down, then coloured greedily; a colour's
-// rows get their places in point order.
+// ordered from the top of the scene down (soft_rows_order.cpp), then
+// coloured greedily.
 #include "soft_rows.h"
 
 #include <algorithm>
-#include <array>
 #include <cstring>
-#include <utility>
 
 #include "scratch_buffer.h"
 
@@ -16,8 +14,6 @@ namespace detail
 {
 namespace
 {
-/// Fewer manifolds than this are ordered by a comparison sort (sort_by_height).
-constexpr std::size_t kRadixSortFrom = 256;
 /// A batch with fewer manifolds leaves them to the point verbs: a batch
 /// costs four lanes' loads, stores and arithmetic whatever its padding.
 constexpr std::size_t kMinBatchLanes = 3;
@@ -43,54 +39,6 @@ std::uint32_t descending_key(float h)
   std::memcpy(&bits, &h, sizeof bits);
   const std::uint32_t ascending = (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
   return ~ascending;
-}
-
-/// Sorts keys by their high half, keeping the order of equal ones: a least
-/// significant digit radix sort, linear where a comparison sort cost more
-/// than the colouring it orders. One pass counts every digit. The low halves
-/// are distinct and ascending, so a comparison sort of the whole keys gives
-/// the same order: below kRadixSortFrom keys it is cheaper than clearing and
-/// summing the digit counts.
-void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& scratch)
-{
-  if (keys.size() < kRadixSortFrom)
-  {
-    std::sort(keys.begin(), keys.end());
-    return;
-  }
-  constexpr int kDigitBits = 8;
-  constexpr int kKeyDigits = 4;  // the high 32 bits
-  constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
-  const auto digit = [](std::uint64_t key, int d) {
-    return static_cast<std::size_t>(key >> (32 + kDigitBits * d)) & (kDigits - 1);
-  };
-  std::array<std::array<std::size_t, kDigits>, kKeyDigits> start{};
-  for (const std::uint64_t key : keys)
-  {
-    for (int d = 0; d < kKeyDigits; ++d)
-    {
-      ++start[d][digit(key, d)];
-    }
-  }
-  scratch.reserve(keys.capacity());
-  scratch.resize(keys.size());
-  for (int d = 0; d < kKeyDigits; ++d)
-  {
-    if (keys.empty() || start[d][digit(keys.front(), d)] == keys.size())
-    {
-      continue;  // one value of this digit for all: nothing moves
-    }
-    std::size_t sum = 0;
-    for (std::size_t& s : start[d])
-    {
-      sum += std::exchange(s, sum);
-    }
-    for (const std::uint64_t key : keys)
-    {
-      scratch[start[d][digit(key, d)]++] = key;
-    }
-    keys.swap(scratch);
-  }
 }
 
 /// The manifold's first point, the low half of its order_ key.
@@ -133,22 +81,6 @@ void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const Contact
 
 void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
 
-void SoftRows::order_manifolds()
-{
-  // At most one manifold per point: reserved so, the keys never grow by
-  // copying, and the pages past the last manifold are never touched.
-  order_.clear();
-  order_.reserve(notes_.size());
-  for (std::size_t k = 0; k < notes_.size(); ++k)
-  {
-    if (notes_[k].first)
-    {
-      order_.push_back(std::uint64_t{notes_[k].key} << 32 | k);
-    }
-  }
-  sort_by_height(order_, sort_scratch_);
-}
-
 void SoftRows::colour_manifolds(std::size_t bodies)
 {
   colours_of_.assign(bodies, 0);
@@ -180,34 +112,14 @@ void SoftRows::colour_manifolds(std::size_t bodies)
       colours_[colour].others.push_back(first);
     }
   }
-  // Within a colour the rows share no body, so their places are free: in
-  // point order, as the points lie in memory. The rows a batch would mostly
-  // pad go to the point verbs: the same bits, without the padding lanes.
+  // The rows a batch would mostly pad go to the point verbs (place_rows):
+  // the same bits, without the padding lanes.
   for (std::size_t colour = 0; colour < used_colours_; ++colour)
   {
     for (RowRange* range : {&colours_[colour].pairs, &colours_[colour].singles})
     {
       range->lanes = batched_lanes(range->lanes);
     }
-  }
-  row_slots_.clear();
-  row_slots_.reserve(order_.size());
-  for (std::size_t k = 0; k < notes_.size(); ++k)
-  {
-    Note& m = notes_[k];
-    if (!m.first || m.kind == Kind::Other)
-    {
-      continue;
-    }
-    RowRange& range = range_of(m.colour, m.kind);
-    if (range.placed >= range.lanes)
-    {
-      m.kind = Kind::Other;
-      colours_[m.colour].others.push_back(k);
-      continue;
-    }
-    row_slots_.push_back(RowSlot{static_cast<std::uint32_t>(k), m.colour, static_cast<std::uint32_t>(range.placed++),
-                                 m.kind});
   }
 }
 

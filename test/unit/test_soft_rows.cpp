@@ -3,13 +3,15 @@
 // lane path this build and CPU have must give the velocities, impulses and
 // friction states of warm_start, solve_soft_normal and solve_friction with
 // the anchor pull, bit for bit. And a frame of one or two manifolds, which
-// skips the colours, between coloured ones: nothing left behind.
+// skips the colours, between coloured ones: nothing left behind. And a large
+// frame packed by several workers: one worker's colours, lanes and bits.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "contact_kernel.h"
@@ -228,6 +230,133 @@ TEST(SoftRows, TwoManifoldsGoTopDownWithoutColoursAndLeaveNoneBehind)
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
     EXPECT_NE(rows.normal_impulse_of(k), nullptr) << "point " << k << " is in a batch";
+  }
+}
+
+/// One-point contacts between random bodies of a few hundred, which share
+/// bodies, so their manifolds need many colours; each at one of `heights`
+/// heights (ties keep point order).
+Scene crowded_scene(std::uint32_t seed, std::size_t points, int heights)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  constexpr std::uint32_t kBodies = 300;
+  Scene s;
+  for (std::uint32_t i = 0; i < kBodies; ++i)
+  {
+    s.bodies.push_back(detail::body_velocity(Vec2{u(rng), u(rng)}, u(rng), i % 50 == 0 ? 0.0 : 1.0, 2.0));
+  }
+  std::uniform_int_distribution<std::uint32_t> body(0, kBodies - 1);
+  std::uniform_int_distribution<int> level(0, heights - 1);
+  for (std::size_t k = 0; k < points; ++k)
+  {
+    ContactPoint p;
+    p.a = body(rng);
+    p.b = (p.a + 1 + body(rng) % (kBodies - 1)) % kBodies;
+    p.normal = Vec2{0.0, 1.0};
+    p.r_a = Vec2{0.5 * u(rng), -0.5};
+    p.r_b = Vec2{0.5 * u(rng), 0.5};
+    p.inv_mass_a = s.bodies[p.a].inv_mass;
+    p.inv_mass_b = s.bodies[p.b].inv_mass;
+    p.inv_inertia_a = s.bodies[p.a].inv_inertia;
+    p.inv_inertia_b = s.bodies[p.b].inv_inertia;
+    detail::prepare_masses(p, 0.0);
+    p.softness = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
+    p.lambda_n = std::max(0.0, u(rng));
+    p.mu_s = 0.6;
+    p.mu_k = 0.4;
+    p.point = Vec2{u(rng), static_cast<double>(level(rng))};
+    s.points.push_back(p);
+  }
+  return s;
+}
+
+/// Packs every `active_every`-th point of `s` as a one-point manifold on
+/// `workers` workers, then solves each colour's batches once.
+struct Packed
+{
+  Scene scene;
+  detail::SoftRows rows;
+  std::vector<std::ptrdiff_t> lanes;  ///< each point's impulse slot from the lowest, -1 without a row
+};
+
+void pack_crowded(Packed& out, const Scene& s, std::size_t active_every, int workers)
+{
+  out.scene = s;
+  detail::WorkerPool pool;
+  pool.resize(workers);
+  out.rows.expect_points(s.points.size());
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    if (k % active_every == 0)
+    {
+      out.rows.note_manifold(k, s.points[k], nullptr, Vec2{0.0, 1.0});
+    }
+    else
+    {
+      out.rows.note_no_manifold(k);
+    }
+  }
+  out.rows.pack(out.scene.points, out.scene.bodies, true, pool);
+  const double* lowest = nullptr;
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    const double* at = out.rows.normal_impulse_of(k);
+    lowest = at != nullptr && (lowest == nullptr || at < lowest) ? at : lowest;
+  }
+  for (std::size_t k = 0; k < s.points.size(); ++k)
+  {
+    const double* at = out.rows.normal_impulse_of(k);
+    out.lanes.push_back(at == nullptr ? -1 : at - lowest);
+  }
+  for (std::size_t c = 0; c < out.rows.colour_count(); ++c)
+  {
+    out.rows.solve_rows(c, out.scene.bodies, detail::RowPass{kInvH, kMaxPush, true});
+  }
+  out.rows.drop_spare_body(out.scene.bodies);
+}
+
+TEST(SoftRows, PackingInPartsGivesOneWorkersColoursLanesAndBits)
+{
+  // Ordering and placing the rows are shared among the workers from a few
+  // thousand points on; the colours, each colour's point-verb list, every
+  // lane and the solved velocities must be one worker's. Cases: many heights,
+  // all heights equal (every digit pass skipped), and few manifolds among
+  // many points (ordered by a comparison sort).
+  struct Case
+  {
+    std::size_t points;
+    std::size_t active_every;
+    int heights;
+  };
+  for (const Case& c : {Case{6000, 1, 4000}, Case{6000, 1, 1}, Case{6000, 2, 7}, Case{6000, 40, 50}})
+  {
+    const Scene s = crowded_scene(11, c.points, c.heights);
+    Packed one;
+    pack_crowded(one, s, c.active_every, 1);
+    ASSERT_GT(one.rows.colour_count(), 4u) << "the manifolds share bodies";
+    for (const int workers : {2, 3, 4})
+    {
+      Packed shared;
+      pack_crowded(shared, s, c.active_every, workers);
+      const std::string label = std::to_string(c.points / c.active_every) + " manifolds, " +
+                                std::to_string(c.heights) + " heights, " + std::to_string(workers) + " workers";
+      ASSERT_EQ(shared.rows.colour_count(), one.rows.colour_count()) << label;
+      EXPECT_EQ(shared.rows.coloured(), one.rows.coloured()) << label;
+      EXPECT_EQ(shared.rows.overflow(), one.rows.overflow()) << label;
+      for (std::size_t colour = 0; colour < one.rows.colour_count(); ++colour)
+      {
+        EXPECT_EQ(shared.rows.others(colour), one.rows.others(colour)) << label << " colour " << colour;
+      }
+      EXPECT_EQ(shared.lanes, one.lanes) << label;
+      for (std::size_t i = 0; i < s.bodies.size(); ++i)
+      {
+        const BodyVelocity& e = one.scene.bodies[i];
+        const BodyVelocity& b = shared.scene.bodies[i];
+        EXPECT_TRUE(same_bits(e.v.x, b.v.x) && same_bits(e.v.y, b.v.y) && same_bits(e.omega, b.omega))
+            << label << " body " << i;
+      }
+    }
   }
 }
 

@@ -25,19 +25,22 @@ std::size_t WorldImpl::place_pair_rows(bool cached)
 {
   pair_rows_.resize(pairs_.size() + 1);
   pair_cache_.resize(pairs_.size());
-  const bool shared = workers_.workers() > 1 && pairs_.size() >= kMinSharedPairs;
-  if (!shared || !place_pairs_in_parts(cached))
+  if (workers_.workers() > 1 && pairs_.size() >= kMinSharedPairs)
+  {
+    place_pairs_in_parts(cached);
+  }
+  else
   {
     place_pairs_in_order(cached);
   }
   return pair_rows_[pairs_.size()];
 }
 
-bool WorldImpl::place_pairs_in_parts(bool cached)
+void WorldImpl::place_pairs_in_parts(bool cached)
 {
-  // A cache in pair order gives each lookup the same answer from any cursor:
-  // the pairs are placed in parts, each with its own cursor. Otherwise
-  // nothing is kept.
+  // The cache is in (a, b) order (as contacts_ always is), so a lookup gives
+  // the same answer from any cursor: the pairs are placed in parts, each
+  // with its own cursor, and their rows counted up after.
   const std::size_t parts = static_cast<std::size_t>(workers_.workers());
   placements_.resize(parts);
   workers_.parallel_for(parts, 2, [&](std::size_t begin, std::size_t end) {
@@ -46,13 +49,6 @@ bool WorldImpl::place_pairs_in_parts(bool cached)
       place_pairs_part(part, parts, cached);
     }
   });
-  for (const PairPlacement& placed : placements_)
-  {
-    if (!placed.cache_in_order)
-    {
-      return false;
-    }
-  }
   std::size_t rows = 0;
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
@@ -70,19 +66,14 @@ bool WorldImpl::place_pairs_in_parts(bool cached)
       break;
     }
   }
-  return true;
 }
 
 void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cached)
 {
   // A local, stored at the end: the parts' placements share a cache line,
-  // which each check and lookup below would otherwise write.
+  // which each lookup below would otherwise write.
   PairPlacement placed;
   const std::size_t c = cache_.size();
-  for (std::size_t m = std::max<std::size_t>(1, c * part / parts); m < c * (part + 1) / parts; ++m)
-  {
-    placed.cache_in_order = placed.cache_in_order && !pair_less(cache_[m], cache_[m - 1].a, cache_[m - 1].b);
-  }
   std::size_t cursor = c + 1;  // the first lookup searches
   const std::size_t n = pairs_.size();
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)

@@ -228,9 +228,8 @@ struct WorldImpl
   /// pass in pair order finds them (with wakes and late collisions); returns
   /// the rows in all. `cached`: whether hit pairs look up their cached impulses.
   std::size_t place_pair_rows(bool cached);
-  /// place_pair_rows in parts on the workers; false (nothing placed) unless
-  /// the cache is in pair order.
-  bool place_pairs_in_parts(bool cached);
+  /// place_pair_rows in parts on the workers.
+  void place_pairs_in_parts(bool cached);
   void place_pairs_part(std::size_t part, std::size_t parts, bool cached);
   void place_pairs_in_order(bool cached);
   /// Pair k's manifold into its rows, impulses matched from the cache;
@@ -333,7 +332,8 @@ struct WorldImpl
   StepReport rest_frame_;      ///< that frame's own report
   bool rest_finish_known_ = false;  ///< the last step ended at the rest state; no frame stepped since
   StepReport rest_finish_;     ///< finish_report's figures at rest
-  /// Contacts of pairs with a mover, in (a, b) order. A soft frame's
+  /// Contacts of pairs with a mover, in (a, b) order: published in pair
+  /// order, put aside and woken by merging, sorted by set_step_state. A soft frame's
   /// detection writes each point's origin here before publish fills the rest.
   std::vector<WorldContact> contacts_;
   /// Contacts of sleeping islands (with each other, static and still
@@ -422,7 +422,9 @@ struct WorldImpl
   std::vector<double> prev_theta_;
   std::vector<Vec2> moved_;           ///< position correction applied this substep (m)
   std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
-  std::vector<WorldContact> cache_;   ///< previous substep's contacts, for warm starting
+  /// Previous substep's contacts, for warm starting: contacts_ swapped in,
+  /// so in (a, b) order too (every lookup relies on it).
+  std::vector<WorldContact> cache_;
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
   bool bounces_ = false;               ///< soft step: some point of the frame can bounce
   std::vector<BouncePoint> bounce_points_;  ///< ... those points

@@ -83,7 +83,6 @@ enum class Collided : unsigned char
 /// What one part of place_pairs_in_parts found (world_contact_rows.cpp).
 struct PairPlacement
 {
-  bool cache_in_order = true;   ///< its share of the cache is in (a, b) order
   bool looked_up = false;       ///< it looked a pair up in the cache ...
   std::size_t last_lookup = 0;  ///< ... and its last lookup's answer
 };

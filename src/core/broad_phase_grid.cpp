@@ -211,6 +211,15 @@ void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyP
     pairs_in_buckets(boxes, 0, buckets, pairs);
     return;
   }
+  // The parts take equal shares of the entries, not of the buckets: a dense
+  // grid's buckets are rows of cells, and a pyramid's lower rows hold most of
+  // its boxes. Bucket b goes to the part its first entry falls in.
+  const auto first_bucket = [&](std::size_t part) {
+    const std::size_t entry = entries_.size() * part / parts;
+    return static_cast<std::size_t>(
+        std::lower_bound(bucket_start_.begin(), bucket_start_.begin() + static_cast<std::ptrdiff_t>(buckets), entry) -
+        bucket_start_.begin());
+  };
   part_pairs_.resize(parts);
   detail::run_parts(*runner, parts, [&](std::size_t part) {
     // A local list, its storage kept from the last call: the parts' list
@@ -218,7 +227,7 @@ void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyP
     std::vector<BodyPair> found;
     found.swap(part_pairs_[part]);
     found.clear();
-    pairs_in_buckets(boxes, buckets * part / parts, buckets * (part + 1) / parts, found);
+    pairs_in_buckets(boxes, first_bucket(part), part + 1 == parts ? buckets : first_bucket(part + 1), found);
     found.swap(part_pairs_[part]);
   });
   for (const std::vector<BodyPair>& found : part_pairs_)

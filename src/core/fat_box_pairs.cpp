@@ -38,7 +38,7 @@ bool inside(const Aabb& box, const Aabb& fat)
 void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, std::vector<BodyPair>& pairs,
                              RangeRunner& runner)
 {
-  if (still_inside(boxes))
+  if (still_inside(boxes, runner))
   {
     ++reused_;
     wait_ = kFirstWait;
@@ -55,35 +55,89 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
     frames_to_wait_ = wait_;
     wait_ = std::min(2 * wait_, kMaxWait);
   }
+  keep_overlapping(boxes, pairs, runner);
+}
+
+void FatBoxPairs::keep_overlapping(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs,
+                                   RangeRunner& runner)
+{
   // Boxes that overlap lie in enlarged boxes that overlap, so every pair is
   // among the kept ones, which are in (i, j) order; an unusable box pairs
   // with nothing, as in BroadPhase.
-  pairs.clear();
-  for (const BodyPair& pair : fat_pairs_)
-  {
-    const Aabb& a = boxes[pair.first];
-    const Aabb& b = boxes[pair.second];
-    if (a.overlaps(b) && is_usable(a) && is_usable(b))
+  const auto keep = [&](std::size_t begin, std::size_t end, std::vector<BodyPair>& out) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      pairs.push_back(pair);
+      const BodyPair& pair = fat_pairs_[k];
+      const Aabb& a = boxes[pair.first];
+      const Aabb& b = boxes[pair.second];
+      if (a.overlaps(b) && is_usable(a) && is_usable(b))
+      {
+        out.push_back(pair);
+      }
     }
+  };
+  const std::size_t n = fat_pairs_.size();
+  const std::size_t parts = runner_parts(&runner, n);
+  pairs.clear();
+  if (parts == 1)
+  {
+    keep(0, n, pairs);
+    return;
   }
+  // Each part keeps its share's pairs in a list of its own, then copies
+  // them after the earlier parts': the order one pass gives.
+  part_pairs_.resize(parts);
+  run_parts(runner, parts, [&](std::size_t part) {
+    std::vector<BodyPair> kept;  // a local: the parts' list headers share a cache line
+    kept.swap(part_pairs_[part]);
+    kept.clear();
+    keep(part_begin(n, part, parts), part_begin(n, part + 1, parts), kept);
+    kept.swap(part_pairs_[part]);
+  });
+  std::size_t total = 0;
+  for (const std::vector<BodyPair>& kept : part_pairs_)
+  {
+    total += kept.size();
+  }
+  pairs.resize(total);
+  run_parts(runner, parts, [&](std::size_t part) {
+    std::size_t at = 0;
+    for (std::size_t p = 0; p < part; ++p)
+    {
+      at += part_pairs_[p].size();
+    }
+    std::copy(part_pairs_[part].begin(), part_pairs_[part].end(), pairs.begin() + static_cast<std::ptrdiff_t>(at));
+  });
 }
 
-bool FatBoxPairs::still_inside(const std::vector<Aabb>& boxes) const
+bool FatBoxPairs::still_inside(const std::vector<Aabb>& boxes, RangeRunner& runner)
 {
   if (!built_ || boxes.size() != fat_.size())
   {
     return false;
   }
-  for (std::size_t k = 0; k < boxes.size(); ++k)
-  {
-    if (!is_usable(boxes[k]) || !inside(boxes[k], fat_[k]))
+  const auto inside_all = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      return false;
+      if (!is_usable(boxes[k]) || !inside(boxes[k], fat_[k]))
+      {
+        return false;
+      }
     }
+    return true;
+  };
+  const std::size_t parts = runner_parts(&runner, boxes.size());
+  if (parts == 1)
+  {
+    return inside_all(0, boxes.size());
   }
-  return true;
+  part_inside_.assign(parts, 0);
+  run_parts(runner, parts, [&](std::size_t part) {
+    part_inside_[part] = inside_all(part_begin(boxes.size(), part, parts), part_begin(boxes.size(), part + 1, parts))
+                             ? 1
+                             : 0;
+  });
+  return std::find(part_inside_.begin(), part_inside_.end(), 0) == part_inside_.end();
 }
 
 void FatBoxPairs::rebuild(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, RangeRunner& runner)

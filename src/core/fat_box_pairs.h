@@ -28,8 +28,11 @@ public:
   std::size_t reused() const { return reused_; }
 
 private:
-  bool still_inside(const std::vector<Aabb>& boxes) const;
+  /// Whether every box lies inside its enlarged one (in parts on the runner).
+  bool still_inside(const std::vector<Aabb>& boxes, RangeRunner& runner);
   void rebuild(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, RangeRunner& runner);
+  /// `pairs`: the kept pairs whose boxes overlap now, in order (in parts on the runner).
+  void keep_overlapping(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
 
   std::vector<Aabb> fat_;            ///< the enlarged boxes the kept pairs were found on
   std::vector<BodyPair> fat_pairs_;  ///< every pair of overlapping enlarged boxes, in (i, j) order
@@ -37,6 +40,9 @@ private:
   std::size_t reused_ = 0;
   int wait_ = 1;            ///< frames the next failed reuse waits before enlarging again
   int frames_to_wait_ = 0;  ///< frames left that pair the exact boxes
+  // Scratch of the work in parts.
+  std::vector<std::vector<BodyPair>> part_pairs_;  ///< each part's kept pairs
+  std::vector<unsigned char> part_inside_;  ///< each part's boxes all inside
 };
 
 }  // namespace detail

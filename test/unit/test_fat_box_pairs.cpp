@@ -2,7 +2,7 @@
 // every frame's pairs must be exactly BroadPhase's for the boxes of that
 // frame, whether the kept pairs were reused or found again, for boxes that
 // jitter in place, jump, turn unusable (non-finite, inverted) or huge, and
-// when the list of bodies changes.
+// when the list of bodies changes; and on a runner's parts as on one.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -24,6 +24,21 @@ public:
   void run(std::size_t count, Job job, void* context) override { job(context, 0, count); }
 };
 
+/// Runs a job's items one at a time, last first: parts that finish in
+/// another order than their items'.
+class ReversedRunner : public RangeRunner
+{
+public:
+  int workers() const override { return 3; }
+  void run(std::size_t count, Job job, void* context) override
+  {
+    for (std::size_t k = count; k > 0; --k)
+    {
+      job(context, k - 1, k);
+    }
+  }
+};
+
 /// Unit boxes in a loose grid: each touches or nearly touches its neighbours.
 std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows)
 {
@@ -41,16 +56,21 @@ std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows)
 }
 
 /// One frame: the kept pairs' answer against a fresh broad phase's.
-void expect_same_pairs(detail::FatBoxPairs& kept, const std::vector<Aabb>& boxes)
+void expect_same_pairs(detail::FatBoxPairs& kept, const std::vector<Aabb>& boxes, RangeRunner& runner)
 {
   BroadPhase fresh;
   BroadPhase reused;
-  SerialRunner runner;
   std::vector<BodyPair> want;
   std::vector<BodyPair> pairs;
   fresh.find_pairs(boxes, want);
   kept.find_pairs(boxes, reused, pairs, runner);
   EXPECT_EQ(pairs, want);
+}
+
+void expect_same_pairs(detail::FatBoxPairs& kept, const std::vector<Aabb>& boxes)
+{
+  SerialRunner runner;
+  expect_same_pairs(kept, boxes, runner);
 }
 
 TEST(FatBoxPairs, JitteringAndJumpingBoxesGiveTheBroadPhasesPairs)
@@ -78,6 +98,37 @@ TEST(FatBoxPairs, JitteringAndJumpingBoxesGiveTheBroadPhasesPairs)
   }
   EXPECT_GT(kept.reused(), 100u) << "the kept pairs were never reused";
   EXPECT_LT(kept.reused(), 200u - jumps + 1) << "a jump must find the pairs again";
+}
+
+TEST(FatBoxPairs, ARunnersPartsKeepTheSamePairs)
+{
+  // Enough boxes that the runner's parts check the enlarged boxes and keep
+  // the overlapping pairs: reused frames, a box of the last part leaving
+  // its enlarged box, and one turning unusable.
+  std::vector<Aabb> boxes = grid_boxes(80, 60);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  detail::FatBoxPairs kept;
+  ReversedRunner runner;
+  for (int frame = 0; frame < 12; ++frame)
+  {
+    for (Aabb& box : boxes)
+    {
+      const Vec2 d{jitter(rng), jitter(rng)};
+      box = {box.lo + d, box.hi + d};
+    }
+    if (frame == 4)
+    {
+      boxes[boxes.size() - 3] = boxes[boxes.size() / 2];
+    }
+    if (frame == 8)
+    {
+      boxes[boxes.size() - 7].lo.y = kNan;
+    }
+    expect_same_pairs(kept, boxes, runner);
+  }
+  EXPECT_GT(kept.reused(), 4u) << "the kept pairs were never reused";
+  EXPECT_LT(kept.reused(), 11u) << "a box leaving its enlarged one must find the pairs again";
 }
 
 TEST(FatBoxPairs, UnusableAndHugeBoxesPairAsInTheBroadPhase)

@@ -442,4 +442,28 @@ boxes (they leave their enlarged ones each frame): 0.50 -> 0.36 ms, of
 which sorting the pairs (0.064 ms) runs on one thread; filling the rows
 0.19 -> 0.17 ms (the colouring runs on one thread); integrating positions
 0.48 -> 0.35 ms.
+
+An eighth, on the stages two workers shared badly (commits 87cc47c,
+16d787d, af1e7f6 and e807fd5; in-process stage timers in a scratch copy of
+the source, not committed, on the pyramid of 9870 boxes, frames 30 to 70).
+Placing the pairs first scanned the last frame's contacts for their order:
+0.200 ms a frame on 2 workers against 0.13 to 0.17 ms on one. The contacts
+are always in that order, and without the scan it takes 0.07 ms. The broad
+phase gave each part an equal share of its grid's buckets, but a pyramid's
+dense grid keeps most boxes in its lower rows: searching them took 0.121
+ms on 2 workers against 0.139 ms on one, and 0.091 to 0.105 ms once the
+parts share the entries. The kept pairs' checks ran on one thread: 0.465
+-> 0.355 ms on 2 workers. Ordering the manifolds and placing their rows
+were three passes on one thread; the workers share them now, while the
+greedy colouring stays serial (0.12 to 0.21 ms). The passes that stream
+memory (filling the rows, adding and preparing the points, moving the
+bodies, filling the grid) speed up 1.4 to 1.7 times on 2 workers here.
+Tried and not kept: sorting the pairs in parts by ranges of their first
+box (0.094 to 0.100 ms on one thread, 0.117 to 0.119 ms in two parts: the
+extra pass over the pairs cost more than the split saved), and a worker
+pool that takes its lock only for a sleeping thread and spins without
+`pause` (a micro-benchmark's fork and join, 20 us after the last, took a
+median of 0.5 to 5.8 us in three runs with the `pause` spins and 0.6 to
+2.7 us without), as frames did not change: the rain of 1e4 on 2 workers
+read 3.06 to 3.36 ms with each pool.
 """

@@ -14,6 +14,7 @@
 
 #include "collision2d/broad_phase.h"
 #include "random_scene.h"
+#include "range_runners.h"
 
 #include "allocation_counter.h"
 
@@ -61,21 +62,6 @@ void expect_sorted_unique_ordered(const std::vector<BodyPair>& pairs)
   }
 }
 
-/// Runs a job's items one at a time, last first, on the calling thread: a
-/// runner whose parts finish in another order than the items'.
-class ReversedRunner : public RangeRunner
-{
-public:
-  int workers() const override { return 3; }
-  void run(std::size_t count, Job job, void* context) override
-  {
-    for (std::size_t k = count; k > 0; --k)
-    {
-      job(context, k - 1, k);
-    }
-  }
-};
-
 /// The unit boxes of a pyramid with `base` boxes in its lowest row, touching.
 std::vector<Aabb> pyramid_boxes(int base)
 {
@@ -101,7 +87,7 @@ TEST(BroadPhase, ARunnerFindsTheSamePairs)
   {
     BroadPhase alone;
     BroadPhase shared;
-    ReversedRunner runner;
+    test::ReversedRunner runner;
     std::vector<BodyPair> want;
     std::vector<BodyPair> pairs;
     alone.find_pairs(boxes, want);

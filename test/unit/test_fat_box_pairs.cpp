@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fat_box_pairs.h"
+#include "range_runners.h"
 
 namespace collision2d
 {
@@ -22,21 +23,6 @@ class SerialRunner : public RangeRunner
 public:
   int workers() const override { return 1; }
   void run(std::size_t count, Job job, void* context) override { job(context, 0, count); }
-};
-
-/// Runs a job's items one at a time, last first: parts that finish in
-/// another order than their items'.
-class ReversedRunner : public RangeRunner
-{
-public:
-  int workers() const override { return 3; }
-  void run(std::size_t count, Job job, void* context) override
-  {
-    for (std::size_t k = count; k > 0; --k)
-    {
-      job(context, k - 1, k);
-    }
-  }
 };
 
 /// Unit boxes in a loose grid: each touches or nearly touches its neighbours.
@@ -109,7 +95,7 @@ TEST(FatBoxPairs, ARunnersPartsKeepTheSamePairs)
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> jitter(-0.01, 0.01);
   detail::FatBoxPairs kept;
-  ReversedRunner runner;
+  test::ReversedRunner runner;
   for (int frame = 0; frame < 12; ++frame)
   {
     for (Aabb& box : boxes)

@@ -40,6 +40,17 @@ struct Scene
   std::vector<ContactPoint> points;
 };
 
+/// A point's masses from its bodies and the soft step's default softness.
+void prepare_soft(ContactPoint& p, const std::vector<BodyVelocity>& bodies)
+{
+  p.inv_mass_a = bodies[p.a].inv_mass;
+  p.inv_mass_b = bodies[p.b].inv_mass;
+  p.inv_inertia_a = bodies[p.a].inv_inertia;
+  p.inv_inertia_b = bodies[p.b].inv_inertia;
+  detail::prepare_masses(p, 0.0);
+  p.softness = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
+}
+
 /// Random one-point contacts between disjoint pairs of bodies (2k, 2k + 1):
 /// gaps open and closed, friction on and off, sticking, sliding and kinetic.
 Scene random_scene(std::uint32_t seed)
@@ -68,12 +79,7 @@ Scene random_scene(std::uint32_t seed)
     p.normal = Vec2{std::cos(angle), std::sin(angle)};
     p.r_a = Vec2{0.5 * u(rng), 0.5 * u(rng)};
     p.r_b = Vec2{0.5 * u(rng), 0.5 * u(rng)};
-    p.inv_mass_a = s.bodies[p.a].inv_mass;
-    p.inv_mass_b = s.bodies[p.b].inv_mass;
-    p.inv_inertia_a = s.bodies[p.a].inv_inertia;
-    p.inv_inertia_b = s.bodies[p.b].inv_inertia;
-    detail::prepare_masses(p, 0.0);
-    p.softness = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
+    prepare_soft(p, s.bodies);
     p.base_separation = 2e-3 * u(rng);  // some speculative, some overlapping
     p.anchor_drift = 1e-3 * u(rng);
     p.lambda_n = std::max(0.0, u(rng));
@@ -256,12 +262,7 @@ Scene crowded_scene(std::uint32_t seed, std::size_t points, int heights)
     p.normal = Vec2{0.0, 1.0};
     p.r_a = Vec2{0.5 * u(rng), -0.5};
     p.r_b = Vec2{0.5 * u(rng), 0.5};
-    p.inv_mass_a = s.bodies[p.a].inv_mass;
-    p.inv_mass_b = s.bodies[p.b].inv_mass;
-    p.inv_inertia_a = s.bodies[p.a].inv_inertia;
-    p.inv_inertia_b = s.bodies[p.b].inv_inertia;
-    detail::prepare_masses(p, 0.0);
-    p.softness = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
+    prepare_soft(p, s.bodies);
     p.lambda_n = std::max(0.0, u(rng));
     p.mu_s = 0.6;
     p.mu_k = 0.4;

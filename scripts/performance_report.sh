@@ -82,10 +82,37 @@ START=$(date +%s)
 PART_START=$START
 # Logs how long the part just finished took (for the time budget).
 part_done() { local now; now=$(date +%s); log "$1 took $(( now - PART_START )) s"; PART_START=$now; }
+# Throughput rounds: ours at every throughput size with 1 worker, then 2.
+# They are spread over the run (before the sweep, between the long parts
+# and at the end), so a spell in which the machine's second core is slow
+# reaches only some of them; the rows go into scaling.csv at the end.
+THROUGHPUT_ROWS="$BUILD/throughput_rounds.csv"
+: > "$THROUGHPUT_ROWS"
+ROUNDS_RUN=0
+throughput_rounds() {  # $1: how many rounds to run now
+  local round scene n workers
+  for (( round = 0; round < $1 && ROUNDS_RUN < THROUGHPUT_ROUNDS; round++ )); do
+    for scene in pyramid rain; do
+      for n in "${THROUGHPUT_SIZES[@]}"; do
+        for workers in 1 2; do
+          "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
+            grep "^collision2d," >> "$THROUGHPUT_ROWS" || log "throughput: ours at $scene $n not measured"
+        done
+      done
+    done
+    ROUNDS_RUN=$(( ROUNDS_RUN + 1 ))
+  done
+}
+
+log "throughput: ours with 1 and 2 workers, the first rounds (the others follow the long parts)"
+throughput_rounds 2
+part_done "throughput rounds"
 
 log "sweep: our knobs in both pipelines, the peers and the 60 s stacks (progress in $BUILD/sweep.log)"
 "$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
 part_done sweep
+throughput_rounds 2
+part_done "throughput rounds"
 
 log "solver residuals on random clusters"
 "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
@@ -95,6 +122,8 @@ log "stacks: ours (both pipelines) and every peer built in, ${STACK_SECONDS} s"
 "$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --soft-step both --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
   2> "$BUILD/stacks.log" || { tail "$BUILD/stacks.log" >&2; exit 1; }
 part_done stacks
+throughput_rounds 2
+part_done "throughput rounds"
 
 log "scaling: one process per engine and size"
 "$SCALING" --header > "$OUT/scaling.csv"
@@ -107,22 +136,17 @@ for n in "${SCALING_SIZES[@]}"; do
 done
 part_done scaling
 
-log "throughput: pyramid and rain, ours with 1 and 2 workers${BOX2D_V3_DIR:+, Box2D v3}"
-for scene in pyramid rain; do
-  for n in "${THROUGHPUT_SIZES[@]}"; do
-    # Rounds alternating 1 and 2 workers; the report keeps each one's median.
-    for (( round = 0; round < THROUGHPUT_ROUNDS; round++ )); do
-      for workers in 1 2; do
-        "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
-          grep "^collision2d," >> "$OUT/scaling.csv" || log "throughput: ours at $scene $n not measured"
-      done
-    done
-    if [[ -n $BOX2D_V3_DIR ]]; then
+log "throughput: pyramid and rain, ours with 1 and 2 workers (the last rounds)${BOX2D_V3_DIR:+, Box2D v3}"
+throughput_rounds "$THROUGHPUT_ROUNDS"  # the rounds left
+cat "$THROUGHPUT_ROWS" >> "$OUT/scaling.csv"
+if [[ -n $BOX2D_V3_DIR ]]; then
+  for scene in pyramid rain; do
+    for n in "${THROUGHPUT_SIZES[@]}"; do
       "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
         grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n not measured"
-    fi
+    done
   done
-done
+fi
 
 log "resting: settled pyramids, alone and with one moving body, sleeping on${BOX2D_V3_DIR:+, and Box2D v3}"
 for n in "${RESTING_SIZES[@]}"; do

@@ -304,8 +304,10 @@ ground (timed after its first second, when the lowest rows have landed).
 Ours with 1 and 2 workers (`WorldSettings::workers`), Box2D v3 on one
 thread when it is in the run; one process per size, so the peak memory is
 that size's alone. Ours runs {throughput_rounds(scaling)} rounds alternating 1 and 2
-workers, and each row is the round of median time: a second core busy for
-a moment slows only the runs that need it. A speed-up of 2 workers over 1
+workers, spread over the report's run (two before the sweep, two after it,
+two after the stacks, the last at the end), and each row is the round of
+median time: a second core busy for a moment, or for minutes, slows only
+the runs that need it. A speed-up of 2 workers over 1
 is the median over the rounds of each round's own ratio (its 1-worker run
 and the 2-worker run right after it): this machine's speed drifts within
 minutes, and a ratio of two medians taken at different times can carry it. Two more scenes, with each

@@ -445,7 +445,7 @@ which sorting the pairs (0.064 ms) runs on one thread; filling the rows
 0.19 -> 0.17 ms (the colouring runs on one thread); integrating positions
 0.48 -> 0.35 ms.
 
-An eighth, on the stages two workers shared badly (commits 87cc47c,
+An eighth, on the stages two workers shared badly (commits 2b342e6,
 16d787d, af1e7f6 and e807fd5; in-process stage timers in a scratch copy of
 the source, not committed, on the pyramid of 9870 boxes, frames 30 to 70).
 Placing the pairs first scanned the last frame's contacts for their order:

@@ -17,7 +17,6 @@ namespace detail
 {
 namespace
 {
-
 struct ScalarOps
 {
   int j = 0;
@@ -217,20 +216,7 @@ void SoftRows::place_rows(const std::vector<ContactPoint>& points, bool friction
   else
   {
     resize_to_overwrite(part_counts_, 2 * parts * kPartCounts);
-    struct Team
-    {
-      SoftRows* rows;
-      const std::vector<ContactPoint>* points;
-      bool friction;
-      WorkerPool* workers;
-    } team{this, &points, friction, &workers};
-    workers.run_team(
-        [](void* context, std::size_t part, std::size_t) {
-          Team& t = *static_cast<Team*>(context);
-          t.rows->place_rows_part(part, static_cast<std::size_t>(t.workers->workers()), *t.points, t.friction,
-                                  *t.workers);
-        },
-        &team);
+    workers.run_team([&](std::size_t part) { place_rows_part(part, parts, points, friction, workers); });
   }
   // The rows past a colour's batches, after the manifolds colouring left to
   // the point verbs, in point order as the parts found them.

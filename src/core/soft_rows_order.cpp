@@ -94,17 +94,7 @@ void SoftRows::order_manifolds(WorkerPool& workers)
   resize_to_overwrite(order_, notes_.size());  // the parts write the first `total` keys
   resize_to_overwrite(sort_scratch_, notes_.size());
   resize_to_overwrite(part_counts_, 2 * parts * kPartCounts);
-  struct Team
-  {
-    SoftRows* rows;
-    WorkerPool* workers;
-  } team{this, &workers};
-  workers.run_team(
-      [](void* context, std::size_t part, std::size_t) {
-        Team& t = *static_cast<Team*>(context);
-        t.rows->order_part(part, static_cast<std::size_t>(t.workers->workers()), *t.workers);
-      },
-      &team);
+  workers.run_team([&](std::size_t part) { order_part(part, parts, workers); });
   if (order_in_scratch_)
   {
     order_.swap(sort_scratch_);

@@ -36,6 +36,16 @@ public:
   /// Runs `job` once on every worker at the same time, as job(context, w, w + 1)
   /// for worker w; inside it the workers may meet at sync().
   void run_team(Job job, void* context) { run(static_cast<std::size_t>(workers()), job, context); }
+  /// run_team for any callable: f(w) on every worker w at the same time.
+  template <class F>
+  void run_team(F&& f)
+  {
+    using Callable = std::remove_reference_t<F>;
+    const Job trampoline = [](void* callable, std::size_t worker, std::size_t) {
+      (*static_cast<Callable*>(callable))(worker);
+    };
+    run_team(trampoline, const_cast<void*>(static_cast<const void*>(&f)));
+  }
   /// Calls body(begin, end) over [0, count) split across the workers, or once
   /// over all of it on the calling thread when count < min_shared (too little
   /// work to pay for waking the others). `body` is any callable; it is taken

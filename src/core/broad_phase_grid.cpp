@@ -220,20 +220,9 @@ void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyP
         std::lower_bound(bucket_start_.begin(), bucket_start_.begin() + static_cast<std::ptrdiff_t>(buckets), entry) -
         bucket_start_.begin());
   };
-  part_pairs_.resize(parts);
-  detail::run_parts(*runner, parts, [&](std::size_t part) {
-    // A local list, its storage kept from the last call: the parts' list
-    // headers share a cache line, which every pair found would write.
-    std::vector<BodyPair> found;
-    found.swap(part_pairs_[part]);
-    found.clear();
+  detail::collect_in_parts(*runner, parts, part_pairs_, pairs, [&](std::size_t part, std::vector<BodyPair>& found) {
     pairs_in_buckets(boxes, first_bucket(part), part + 1 == parts ? buckets : first_bucket(part + 1), found);
-    found.swap(part_pairs_[part]);
   });
-  for (const std::vector<BodyPair>& found : part_pairs_)
-  {
-    pairs.insert(pairs.end(), found.begin(), found.end());
-  }
 }
 
 void BroadPhase::pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
@@ -264,9 +253,9 @@ void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t beg
   {
     for (std::size_t a = begin; a < end; ++a)
     {
+      const Entry& e = entries_[a];
       for (std::size_t b = a + 1; b < end; ++b)
       {
-        const Entry& e = entries_[a];
         const Entry& f = entries_[b];
         report_if_overlapping((e.cx == f.cx) & (e.cy == f.cy), e, f);
       }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "collision2d/broad_phase.h"
 
@@ -51,6 +52,41 @@ void run_parts(RangeRunner& runner, std::size_t parts, F f)
         }
       },
       &f);
+}
+
+/// Calls fill(part, list) for every part on the runner's threads, each with
+/// its own list from `lists` (emptied, its storage kept from the last call),
+/// then appends the lists to `out` in part order, copied in parts: what one
+/// pass appending in order gives.
+template <class T, class Fill>
+void collect_in_parts(RangeRunner& runner, std::size_t parts, std::vector<std::vector<T>>& lists,
+                      std::vector<T>& out, Fill fill)
+{
+  lists.resize(parts);
+  run_parts(runner, parts, [&](std::size_t part) {
+    // A local list: the parts' list headers share a cache line, which every
+    // item added would otherwise write.
+    std::vector<T> list;
+    list.swap(lists[part]);
+    list.clear();
+    fill(part, list);
+    list.swap(lists[part]);
+  });
+  const std::size_t start = out.size();
+  std::size_t total = 0;
+  for (const std::vector<T>& list : lists)
+  {
+    total += list.size();
+  }
+  out.resize(start + total);
+  run_parts(runner, parts, [&](std::size_t part) {
+    std::size_t at = start;
+    for (std::size_t p = 0; p < part; ++p)
+    {
+      at += lists[p].size();
+    }
+    std::copy(lists[part].begin(), lists[part].end(), out.begin() + static_cast<std::ptrdiff_t>(at));
+  });
 }
 
 }  // namespace detail

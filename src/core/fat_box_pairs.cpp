@@ -84,29 +84,8 @@ void FatBoxPairs::keep_overlapping(const std::vector<Aabb>& boxes, std::vector<B
     keep(0, n, pairs);
     return;
   }
-  // Each part keeps its share's pairs in a list of its own, then copies
-  // them after the earlier parts': the order one pass gives.
-  part_pairs_.resize(parts);
-  run_parts(runner, parts, [&](std::size_t part) {
-    std::vector<BodyPair> kept;  // a local: the parts' list headers share a cache line
-    kept.swap(part_pairs_[part]);
-    kept.clear();
+  collect_in_parts(runner, parts, part_pairs_, pairs, [&](std::size_t part, std::vector<BodyPair>& kept) {
     keep(part_begin(n, part, parts), part_begin(n, part + 1, parts), kept);
-    kept.swap(part_pairs_[part]);
-  });
-  std::size_t total = 0;
-  for (const std::vector<BodyPair>& kept : part_pairs_)
-  {
-    total += kept.size();
-  }
-  pairs.resize(total);
-  run_parts(runner, parts, [&](std::size_t part) {
-    std::size_t at = 0;
-    for (std::size_t p = 0; p < part; ++p)
-    {
-      at += part_pairs_[p].size();
-    }
-    std::copy(part_pairs_[part].begin(), part_pairs_[part].end(), pairs.begin() + static_cast<std::ptrdiff_t>(at));
   });
 }
 

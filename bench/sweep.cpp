@@ -40,7 +40,7 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
   }
   if (comes_to_rest(scene))
   {
-    add_toggles(base, &WorldSettings::sleeping, "sleeping", {Toggle::On}, runs);
+    add_sleeping(base, runs);
   }
   if (scene.kind == SceneKind::Bullet)
   {
@@ -106,7 +106,7 @@ void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
   }
   if (comes_to_rest(scene))
   {
-    add_toggles(base, &WorldSettings::sleeping, "sleeping", {Toggle::On}, runs);
+    add_sleeping(base, runs);
   }
   if (scene.kind == SceneKind::Bullet)
   {

@@ -123,6 +123,18 @@ void add_exact(const WorldSettings& base, Runs runs)
   runs.add("solver_mode", mode_name(SolverMode::Exact), s);
 }
 
+void add_sleeping(const WorldSettings& base, Runs runs)
+{
+  WorldSettings s = base;
+  s.sleeping = Toggle::On;
+  runs.add("sleeping", toggle_name(Toggle::On), s);
+  // The peers' cheap settings (one substep) sleep too.
+  for (const auto& [substeps, iterations] : {std::pair{1, 2}, std::pair{2, 2}, std::pair{1, 8}})
+  {
+    runs.add("sleeping", toggle_name(Toggle::On), with_steps(s, substeps, iterations));
+  }
+}
+
 void add_grid(const WorldSettings& base, const std::vector<int>& substeps, const std::vector<int>& iterations,
               Runs runs)
 {

@@ -55,6 +55,9 @@ void add_flip(const WorldSettings& base, bool WorldSettings::*field, const char*
 void add_warm_before_integration(const WorldSettings& base, Runs runs);
 /// The exact solver mode (the iterative one is the baseline).
 void add_exact(const WorldSettings& base, Runs runs);
+/// Sleeping on, at the base's steps and at cheaper ones (a world that
+/// sleeps once its bodies rest needs fewer substeps to hold them).
+void add_sleeping(const WorldSettings& base, Runs runs);
 /// Every substeps x iterations pair.
 void add_grid(const WorldSettings& base, const std::vector<int>& substeps, const std::vector<int>& iterations,
               Runs runs);

@@ -60,7 +60,7 @@ struct Material
   X(gravity, Vec2, (Vec2{0.0, -9.81}), kAnyFinite, "m/s^2", "Gravity") \
   X(dt, double, 1.0 / 60.0, kPositive, "s", "Frame length") \
   X(substeps, int, 4, kAtLeastOne, "", "Substeps per frame: more buys stiffer stacks") \
-  X(velocity_iterations, int, 2, kAtLeastOne, "", "Fx2D order: passes over the contact points per substep (the soft step solves once and relaxes once)") \
+  X(velocity_iterations, int, 2, kAtLeastOne, "", "Fx2D order: passes over the contact points per substep (the soft step: soft_iterations)") \
   X(slop, double, 1e-3, kNonNegative, "m", "Contact error let be: penetration left uncorrected (Fx2D); slip a sticking contact takes before it slides (soft step)") \
   X(compliance, double, 1e-8, kNonNegative, "m/N", "Contact compliance: softens K_n by compliance/h^2") \
   X(restitution_threshold, double, 1e-3, kNonNegative, "m/s", "Approach speed below which restitution is ignored") \
@@ -84,6 +84,7 @@ struct Material
   X(soft_step, bool, true, kAnyFinite, "", "Soft step (iterative mode): collide once per frame, soft contacts, relax, restitution each substep") \
   X(contact_hertz, double, 40.0, kNonNegative, "Hz", "Soft step: contact stiffness (at most a quarter of the substep rate; twice it against static bodies)") \
   X(contact_damping_ratio, double, 10.0, kNonNegative, "", "Soft step: damping ratio of the contact spring") \
+  X(soft_iterations, int, 1, kAtLeastOne, "", "Soft step: solve passes, and relax passes, per substep (more hold tall stacks stiffer; each costs about one pass more)") \
   X(contact_push_speed, double, 3.0, kPositive, "m/s", "Soft step: fastest a penetration is pushed out") \
   X(speculative_margin, double, 0.02, kNonNegative, "m", "Soft step: pairs within this gap get contacts before they touch") \
   X(contact_reuse_distance, double, 0.02, kNonNegative, "m", "Soft step: a pair keeps its contact points while it moves less than this and speculative_margin since they were found (0: find them every frame)") \

@@ -206,7 +206,12 @@ void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport
     aim_exact_targets(ctx, use_bias);
     solve_exact_islands(report, &exact_targets_, !use_bias);  // world_exact.cpp
   }
-  soft_pass(ctx, use_bias, use_bias);                    // world_soft_solve.cpp
+  // The warm start goes in once; a later pass goes on from the impulses the
+  // one before left (more passes carry a tall stack's weight further down).
+  for (int pass = 0; pass < settings_.soft_iterations; ++pass)
+  {
+    soft_pass(ctx, use_bias, use_bias && pass == 0);     // world_soft_solve.cpp
+  }
 }
 
 void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)

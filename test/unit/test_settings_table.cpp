@@ -100,9 +100,10 @@ TEST(SettingsTable, EachOutOfRangeWorldSettingIsRefusedByName)
   // gravity, dt, substeps, velocity_iterations, slop, compliance,
   // restitution_threshold, toi_displacement_fraction, three sleep thresholds,
   // position_iterations, the soft step's contact_hertz,
-  // contact_damping_ratio, contact_push_speed, speculative_margin and
-  // contact_reuse_distance, and workers have bounds or must be finite.
-  EXPECT_EQ(refused, 18u);
+  // contact_damping_ratio, soft_iterations, contact_push_speed,
+  // speculative_margin and contact_reuse_distance, and workers have bounds or
+  // must be finite.
+  EXPECT_EQ(refused, 19u);
 }
 
 TEST(SettingsTable, ValidationMessagesKeepTheirWording)

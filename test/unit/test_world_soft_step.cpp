@@ -184,6 +184,43 @@ TEST(WorldSoftStep, TwentyBoxColumnStands)
   EXPECT_LT(deepest, 0.02) << "the contacts' springs carry the column's weight";
 }
 
+TEST(WorldSoftStep, MorePassesHoldAColumnAtTheStiffestContacts)
+{
+  // At 60 Hz (the cap at 4 substeps) one solve and one relax pass a substep
+  // leave the column's weight bouncing between its contacts; four carry it
+  // down each substep. Either way the lowest box-box contact, under the 19
+  // boxes above it, rests as deep as its spring needs: W / (m_rel omega^2)
+  // with m_rel the two boxes' reduced mass.
+  constexpr double kHertz = 60.0;
+  const auto run = [&](int passes, double& drift, double& deepest) {
+    Scene scene = scenes::column(20);
+    scene.settings.contact_hertz = kHertz;
+    scene.settings.soft_iterations = passes;
+    World world = soft_world(scene);
+    world.step(60);
+    const std::vector<Vec2> settled = test::positions(world);
+    world.step(240);
+    drift = test::largest_move(world, settled, test::positions(world));
+    deepest = world.step().max_penetration;
+  };
+  double drift_one = 0.0;
+  double deep_one = 0.0;
+  double drift_four = 0.0;
+  double deep_four = 0.0;
+  run(1, drift_one, deep_one);
+  run(4, drift_four, deep_four);
+  const World reference = soft_world(scenes::column(20));
+  const double mass = reference.body(reference.body_ids().back()).mass();
+  const double g = length(reference.settings().gravity);
+  const double omega = 2.0 * M_PI * kHertz;
+  const double spring_depth = 19.0 * mass * g / (0.5 * mass * omega * omega);
+  std::printf("column at %g Hz, drift 1 s -> 5 s: 1 pass %.3g m, 4 passes %.3g m; deepest %.4g / %.4g m, "
+              "spring %.4g m\n", kHertz, drift_one, drift_four, deep_one, deep_four, spring_depth);
+  EXPECT_LT(drift_four, 1e-5);
+  EXPECT_GT(drift_one, 10.0 * drift_four) << "the passes were not run";
+  EXPECT_NEAR(deep_four, spring_depth, 0.01 * spring_depth);
+}
+
 TEST(WorldSoftStep, PyramidBoxesStayLevelOnTheirAnchors)
 {
   // Velocity-only friction lets each contact slip by round-off every pass,

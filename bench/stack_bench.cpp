@@ -4,14 +4,17 @@
 //
 //   collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T]
 //                           [--scene NAME]... [--engine NAME]... [--csv FILE]
-//                           [--soft-step on|off|both]
+//                           [--soft-step on|off|both] [--stiff on|off]
 //
 // Each engine runs the scene with the comparison's rule (stack_scenes.h):
 // ours with the scene's settings (our defaults, 4 substeps, sleeping off) in
 // the soft step (on), the Fx2D pipeline (off) or both, one row each (both,
 // the default; soft_step is always set, whichever pipeline is the default),
 // each peer with its own defaults but 4 substeps and sleeping off
-// (PeerVariant::Substepped). Per scene and engine it prints ms/frame (median
+// (PeerVariant::Substepped). With --stiff on (the default) ours runs the soft
+// step once more at its stiffest contacts for 4 substeps (contact_hertz 60,
+// the cap) with soft_iterations 4: the setting for tall stacks, whose cost
+// this shows beside the defaults' (CSV variant "stiff"). Per scene and engine it prints ms/frame (median
 // of N fresh runs of T simulated seconds, wall and thread CPU; the engines
 // take turns, one run each per round), then one run to the longest S: drift
 // from 1 s to each S (largest displacement of any dynamic body between the
@@ -46,6 +49,10 @@ using namespace collision2d::bench;
 constexpr double kDefaultSeconds = 10.0;
 constexpr double kDefaultTimingSeconds = 1.0;  // s of simulation per timed run
 constexpr int kDefaultRepetitions = 5;
+// The stiff soft-step row: 60 Hz, the stiffness cap at 4 substeps of a 60 Hz
+// frame (a quarter of the substep rate), with four solve and relax passes.
+constexpr double kStiffHertz = 60.0;  // Hz
+constexpr int kStiffPasses = 4;
 
 struct Arguments
 {
@@ -56,6 +63,7 @@ struct Arguments
   std::vector<EngineKind> engines;    ///< empty: every engine built in
   std::string csv;                    ///< empty: no CSV
   std::vector<Pipeline> pipelines{Pipeline::Soft, Pipeline::Fx2d};  ///< ours, once per pipeline
+  bool stiff = true;  ///< ours also in the stiff soft step
 };
 
 /// What one engine shows at one checkpoint of the accuracy run.
@@ -70,6 +78,7 @@ struct EngineResult
 {
   EngineKind kind = EngineKind::Collision2d;
   Pipeline pipeline_asked = Pipeline::Fx2d;
+  bool stiff = false;    ///< ours: the stiff soft-step setting
   std::string pipeline;  ///< ours: "soft" or "fx2d"; peers: empty
   std::vector<double> wall_rounds;  ///< ms/frame of each round's run
   std::vector<double> cpu_rounds;
@@ -85,7 +94,7 @@ struct EngineResult
   std::fprintf(stderr,
                "%s\nusage: collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T] "
                "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE] "
-               "[--soft-step on|off|both]\n",
+               "[--soft-step on|off|both] [--stiff on|off]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -172,6 +181,10 @@ Arguments parse_arguments(int argc, char** argv)
         usage("--soft-step takes on, off or both");
       }
     }
+    else if (flag == "--stiff" && (value == "on" || value == "off"))
+    {
+      args.stiff = value == "on";
+    }
     else
     {
       usage("unknown argument: " + flag);
@@ -184,12 +197,28 @@ Arguments parse_arguments(int argc, char** argv)
   return args;
 }
 
-EngineConfig config_for(EngineKind kind, const BenchScene& scene, Pipeline pipeline)
+EngineConfig config_for(EngineKind kind, const BenchScene& scene, Pipeline pipeline, bool stiff = false)
 {
   // Ours takes the scene's settings as they are (with the pipeline asked
   // for); a peer its defaults with the scene's substeps and sleeping off.
   const PeerVariant variant = kind == EngineKind::Collision2d ? PeerVariant::Matched : PeerVariant::Substepped;
-  return EngineConfig{kind, variant, with_pipeline(scene.scene.settings, pipeline)};
+  WorldSettings settings = with_pipeline(scene.scene.settings, pipeline);
+  if (stiff)
+  {
+    settings.contact_hertz = kStiffHertz;
+    settings.soft_iterations = kStiffPasses;
+  }
+  return EngineConfig{kind, variant, settings};
+}
+
+EngineConfig config_for(const EngineResult& r, const BenchScene& scene)
+{
+  return config_for(r.kind, scene, r.pipeline_asked, r.stiff);
+}
+
+std::string run_name(const EngineResult& r)
+{
+  return engine_name(r.kind) + (r.pipeline.empty() ? "" : " " + r.pipeline) + (r.stiff ? " stiff" : "");
 }
 
 /// Deepest overlap at these poses by our detection; infinite when the poses
@@ -257,7 +286,7 @@ void time_in_rounds(const BenchScene& scene, std::vector<EngineResult>& results,
   {
     for (EngineResult& r : results)
     {
-      std::unique_ptr<Engine> engine = make_engine(scene.scene, config_for(r.kind, scene, r.pipeline_asked));
+      std::unique_ptr<Engine> engine = make_engine(scene.scene, config_for(r, scene));
       const FrameTime t = time_frames(*engine, frames_for(args.timing_seconds, scene.scene.settings.dt));
       r.wall_rounds.push_back(t.wall_ms);
       r.cpu_rounds.push_back(t.cpu_ms);
@@ -306,15 +335,19 @@ std::vector<EngineResult> measure(const BenchScene& scene, const Arguments& args
       r.pipeline_asked = pipeline;
       r.pipeline = kind == EngineKind::Collision2d ? pipeline_name(config_for(kind, scene, pipeline).settings) : "";
       results.push_back(r);
+      if (kind == EngineKind::Collision2d && pipeline == Pipeline::Soft && args.stiff)
+      {
+        r.stiff = true;
+        results.push_back(r);
+      }
     }
   }
   std::fprintf(stderr, "stack %s: timing, %d rounds\n", scene.name.c_str(), args.repetitions);
   time_in_rounds(scene, results, args);
   for (EngineResult& r : results)
   {
-    std::fprintf(stderr, "stack %s %s%s\n", scene.name.c_str(), engine_name(r.kind).c_str(),
-                 r.pipeline.empty() ? "" : (" " + r.pipeline).c_str());
-    r.checkpoints = accuracy_run(scene, config_for(r.kind, scene, r.pipeline_asked), args.seconds);
+    std::fprintf(stderr, "stack %s %s\n", scene.name.c_str(), run_name(r).c_str());
+    r.checkpoints = accuracy_run(scene, config_for(r, scene), args.seconds);
   }
   return results;
 }
@@ -335,7 +368,7 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
     const double cpu_ratio = r.cpu_over_v3;
     for (const Checkpoint& c : r.checkpoints)
     {
-      const std::string engine = engine_name(r.kind) + (r.pipeline.empty() ? "" : " " + r.pipeline);
+      const std::string engine = run_name(r);
       std::printf("| %s | %zu | %s | %.3g | %.3g | %.3g | %.3g | %g | %.3g | %.3g |\n", scene.name.c_str(), boxes,
                   engine.c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
                   c.drift, c.max_penetration);
@@ -343,7 +376,8 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
       {
         std::fprintf(csv, "%s,%zu,%s,%s,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
                      engine_name(r.kind).c_str(),
-                     variant_name(config_for(r.kind, scene, Pipeline::Fx2d).variant).c_str(), r.pipeline.c_str(),
+                     r.stiff ? "stiff" : variant_name(config_for(r.kind, scene, Pipeline::Fx2d).variant).c_str(),
+                     r.pipeline.c_str(),
                      default_pipeline_name().c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
                      c.drift, c.max_penetration);
       }

@@ -134,9 +134,11 @@ def worker_speedups(scaling, scene):
     return [(b, statistics.median(ratios)) for b, ratios in worker_speedup_rounds(scaling, scene)]
 
 
-def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None):
+def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None, stiff=False):
+    """The stack bench's row of an engine at a checkpoint (the longest by default); ours at the
+    defaults, or with stiff=True the stiff soft-step row (CSV variant "stiff")."""
     rows = [r for r in stacks if r["scene"] == scene and r["engine"] == engine
-            and (pipeline is None or r["pipeline"] == pipeline)]
+            and (pipeline is None or r["pipeline"] == pipeline) and (r.get("variant") == "stiff") == stiff]
     if seconds is None and rows:
         seconds = max(r["seconds"] for r in rows)
     rows = [r for r in rows if r["seconds"] == seconds]

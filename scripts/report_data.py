@@ -13,6 +13,8 @@ SCENE_ORDER = ["pyramid", "column", "elastic_gas", "newtons_cradle", "bouncing_d
 PIPELINES = ["soft", "fx2d"]
 PIPELINE_NAMES = {"soft": "soft step", "fx2d": "Fx2D"}
 PIPELINE_PHRASES = {"soft": "the soft step", "fx2d": "the Fx2D pipeline"}
+# The stack bench's stiff soft-step row (bench/stack_bench.cpp, kStiffHertz and kStiffPasses).
+STIFF_SETTING = "`contact_hertz` 60, `soft_iterations` 4"
 PEER_NAMES = {"box2d": "Box2D 2.4.1", "chipmunk": "Chipmunk 7", "box2d_v3": "Box2D v3"}
 TIME_TARGET = 0.75          # our time / a peer run's at equal or better accuracy
 DRIFT_TARGET_M = 1e-3       # stacks stand 60 s with drift below this
@@ -44,7 +46,8 @@ KNOB_LABELS = {"warm_starting": "warm {}", "time_of_impact": "TOI {}", "position
                "warm_start_factor": "warm factor {}", "exact_position_correction": "exact position correction {}",
                "contact_hertz": "{} Hz", "contact_damping_ratio": "damping ratio {}",
                "contact_push_speed": "push {} m/s", "speculative_margin": "margin {} m",
-               "contact_reuse_distance": "reuse {} m", "sleeping": "sleeping {}"}
+               "contact_reuse_distance": "reuse {} m", "sleeping": "sleeping {}",
+               "soft_iterations": "60 Hz, {} passes"}
 # Plot colours: ours per pipeline (all points, front), the peers.
 COLOURS = {"soft": ("#f1b6da", "#c51b7d"), "fx2d": ("#9ecae1", "#08519c"), "box2d": "#ff7f00",
            "chipmunk": "#238b45", "box2d_v3": "#6a3d9a"}

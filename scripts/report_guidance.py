@@ -2,7 +2,7 @@
 kind of scene, written from the measured numbers."""
 
 from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET, INCLINE_SLID, INCLINE_TARGET,
-                         PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, number)
+                         PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, number)
 from report_format import finite, fmt, mm, setting
 from report_analysis import baseline, cheapest_at, find, other, ours, scene_names, stack_rows
 
@@ -113,6 +113,14 @@ def guidance_stacks(runs, stacks, default):
         if cells:
             seconds = fmt(max(number(r["seconds"]) for r in stand))
             lines.append(f"  - The sweep's base-20 {scene} over {seconds} s: " + "; ".join(cells) + ".")
+    stiff = [(s, stack_rows(stacks, s, "soft"), stack_rows(stacks, s, "soft", stiff=True)) for s in scenes]
+    stiff = [(s, d, t) for s, d, t in stiff if d and t]
+    if stiff:
+        lines.append("  - Taller stacks: the soft step at its stiffest contacts for 4 substeps with more passes ("
+                     + STIFF_SETTING + ") drifted " +
+                     "; ".join(f"{s.replace('stack_', '')} {mm(t['drift_m'])}, penetration {mm(t['max_penetration_m'])}"
+                               f" at {fmt(t['cpu_ms_per_frame'] / d['cpu_ms_per_frame'])}x the defaults' CPU time"
+                               for s, d, t in stiff) + ".")
     soft_pen = [stack_rows(stacks, s, "soft") for s in scenes]
     fx_pen = [stack_rows(stacks, s, "fx2d") for s in scenes]
     if all(soft_pen) and all(fx_pen) and soft_pen and fx_pen:

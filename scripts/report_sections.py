@@ -7,7 +7,7 @@ import platform
 import subprocess
 
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
-                         STACK_SCENES, THROUGHPUT_SCENES, is_ours, number)
+                         STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, number)
 from report_format import fmt, label, setting, table
 from report_analysis import (baseline, gas_rows, other, ours, ratio, scaling_slope, scene_names, time_target_rows,
                              time_target_scenes)
@@ -152,6 +152,8 @@ def scaling_section(scaling):
 
 
 def stack_engine_label(r):
+    if is_ours(r) and r.get("variant") == "stiff":
+        return f"ours {PIPELINE_NAMES[r['pipeline']]}, {STIFF_SETTING}"
     if is_ours(r):
         return f"ours {PIPELINE_NAMES[r['pipeline']]}"
     return PEER_NAMES.get(r["engine"], r["engine"])
@@ -171,13 +173,15 @@ def stacks_section(stacks, default):
     rows = []
     order = {"collision2d": 0, "box2d": 1, "chipmunk": 2, "box2d_v3": 3}
     for scene in [s for s in STACK_SCENES if any(r["scene"] == s for r in stacks)]:
-        engines = sorted({(r["engine"], r["pipeline"]) for r in stacks if r["scene"] == scene},
-                         key=lambda ep: (order.get(ep[0], 9), ep[1] != default))
-        for engine, pipeline in engines:
+        engines = sorted({(r["engine"], r["pipeline"], r.get("variant") == "stiff") for r in stacks
+                          if r["scene"] == scene},
+                         key=lambda eps: (order.get(eps[0], 9), eps[1] != default, eps[2]))
+        for engine, pipeline, stiff in engines:
             at = {r["seconds"]: r for r in stacks if r["scene"] == scene and r["engine"] == engine
-                  and r["pipeline"] == pipeline}
+                  and r["pipeline"] == pipeline and (r.get("variant") == "stiff") == stiff}
             last = at[max(at)]
-            name = stack_engine_label(last) + (" (default)" if is_ours(last) and pipeline == default else "")
+            name = stack_engine_label(last) + (" (default)" if is_ours(last) and pipeline == default and not stiff
+                                               else "")
             rows.append([scene.replace("stack_", ""), last["boxes"], name, last["ms_per_frame"],
                          last["cpu_ms_per_frame"], last["ms_over_box2d_v3"], last["cpu_ms_over_box2d_v3"]] +
                         [at[c]["drift_m"] * 1e3 if c in at else float("nan") for c in checkpoints] +

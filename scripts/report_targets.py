@@ -7,7 +7,7 @@ import statistics
 from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET, GAS_TARGET_SECONDS, INCLINE_TARGET,
                          MEMORY_TARGET_KIB_PER_BODY, PIPELINES, PIPELINE_NAMES, RESTING_FRACTION_TARGET, SLOPE_TARGET,
                          STACK_DRIFT_TARGET_M, STACK_PENETRATION_TARGET_M, STACK_SCENES, STACK_TARGET_SECONDS,
-                         STACK_TIME_TARGET, THROUGHPUT_SCENES, TIME_TARGET, WORKER_SPEEDUP_MIN_BODIES,
+                         STACK_TIME_TARGET, STIFF_SETTING, THROUGHPUT_SCENES, TIME_TARGET, WORKER_SPEEDUP_MIN_BODIES,
                          WORKER_SPEEDUP_TARGET, number)
 from report_format import finite, fmt, mm, over, setting, table
 from report_analysis import (baseline, cheapest_at, other, ours, scaling_slope, stack_rows, throughput_rows,
@@ -34,9 +34,12 @@ def stack_target_rows(stacks, default):
     for scene in [s for s in STACK_SCENES if stack_rows(stacks, s, default, seconds=longest)]:
         r = stack_rows(stacks, scene, default, seconds=longest)
         o = stack_rows(stacks, scene, other_p, seconds=longest)
+        t = stack_rows(stacks, scene, "soft", seconds=longest, stiff=True)
         target = STACK_DRIFT_TARGET_M.get(scene, DRIFT_TARGET_M)
+        aside = ([f"{PIPELINE_NAMES[other_p]}: {mm(o['drift_m'])}"] if o else []) + (
+            [f"soft step with {STIFF_SETTING}: {mm(t['drift_m'])}"] if t else [])
         rows.append([f"{scene} stands: drift 1 s -> {fmt(STACK_TARGET_SECONDS)} s < {mm(target)}{short}",
-                     f"{mm(r['drift_m'])}" + (f" ({PIPELINE_NAMES[other_p]}: {mm(o['drift_m'])})" if o else ""),
+                     f"{mm(r['drift_m'])}" + (f" ({'; '.join(aside)})" if aside else ""),
                      verdict(r["drift_m"], target)])
     pens = [(s, stack_rows(stacks, s, default, seconds=longest)) for s in STACK_SCENES]
     pens = [(s, r) for s, r in pens if r]
@@ -47,6 +50,10 @@ def stack_target_rows(stacks, default):
         if all(others):
             cell += (f" ({PIPELINE_NAMES[other_p]}: " +
                      ", ".join(f"{mm(o['max_penetration_m'])}" for o in others) + ")")
+        stiffs = [stack_rows(stacks, s, "soft", seconds=longest, stiff=True) for s, _ in pens]
+        if all(stiffs):
+            cell += (f" (soft step with {STIFF_SETTING}: " +
+                     ", ".join(f"{mm(t['max_penetration_m'])}" for t in stiffs) + ")")
         missed = [s for s, r in pens if not r["max_penetration_m"] <= STACK_PENETRATION_TARGET_M]
         rows.append([f"largest penetration <= {mm(STACK_PENETRATION_TARGET_M)} on the {len(pens)} stacks", cell,
                      "met" if not missed else

@@ -12,10 +12,10 @@
 // the default; soft_step is always set, whichever pipeline is the default),
 // each peer with its own defaults but 4 substeps and sleeping off
 // (PeerVariant::Substepped). With --stiff on (the default) ours runs the soft
-// step once more at its stiffest contacts for 4 substeps (contact_hertz 60,
-// the cap) with soft_iterations 4: the setting for tall stacks, whose cost
-// this shows beside the defaults' (CSV variant "stiff"). Per scene and engine it prints ms/frame (median
-// of N fresh runs of T simulated seconds, wall and thread CPU; the engines
+// step once more with_stiff_contacts (sweep.h), the setting for tall stacks,
+// whose cost this shows beside the defaults' (CSV variant "stiff"). Per
+// scene and engine it prints ms/frame (median of N fresh runs of T
+// simulated seconds, wall and thread CPU; the engines
 // take turns, one run each per round), then one run to the longest S: drift
 // from 1 s to each S (largest displacement of any dynamic body between the
 // two instants) and the largest penetration up to each S (our detection on
@@ -49,10 +49,6 @@ using namespace collision2d::bench;
 constexpr double kDefaultSeconds = 10.0;
 constexpr double kDefaultTimingSeconds = 1.0;  // s of simulation per timed run
 constexpr int kDefaultRepetitions = 5;
-// The stiff soft-step row: 60 Hz, the stiffness cap at 4 substeps of a 60 Hz
-// frame (a quarter of the substep rate), with four solve and relax passes.
-constexpr double kStiffHertz = 60.0;  // Hz
-constexpr int kStiffPasses = 4;
 
 struct Arguments
 {
@@ -202,13 +198,8 @@ EngineConfig config_for(EngineKind kind, const BenchScene& scene, Pipeline pipel
   // Ours takes the scene's settings as they are (with the pipeline asked
   // for); a peer its defaults with the scene's substeps and sleeping off.
   const PeerVariant variant = kind == EngineKind::Collision2d ? PeerVariant::Matched : PeerVariant::Substepped;
-  WorldSettings settings = with_pipeline(scene.scene.settings, pipeline);
-  if (stiff)
-  {
-    settings.contact_hertz = kStiffHertz;
-    settings.soft_iterations = kStiffPasses;
-  }
-  return EngineConfig{kind, variant, settings};
+  const WorldSettings settings = with_pipeline(scene.scene.settings, pipeline);
+  return EngineConfig{kind, variant, stiff ? with_stiff_contacts(settings) : settings};
 }
 
 EngineConfig config_for(const EngineResult& r, const BenchScene& scene)

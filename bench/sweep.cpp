@@ -27,10 +27,6 @@ constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an 
 // (the stiffness is capped at a quarter of the substep rate).
 constexpr int kSoftStiffSubsteps = 8;
 constexpr double kSoftStiffHertz = 120.0;
-// The stiffest contacts at 4 substeps (a quarter of the substep rate), which
-// hold with more solve and relax passes (soft_iterations).
-constexpr double kSoftPassesHertz = 60.0;
-constexpr int kSoftPasses = 4;
 
 /// The Fx2D pipeline's runs (`base` has soft_step off).
 void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
@@ -160,12 +156,9 @@ void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
       runs.add("contact_hertz", text(point.second), s);
     }
     // Or more passes at the stiffest contacts 4 substeps allow.
-    for (int passes : quick ? std::vector<int>{4} : std::vector<int>{2, 4})
+    for (int passes : quick ? std::vector<int>{kStiffPasses} : std::vector<int>{2, kStiffPasses})
     {
-      WorldSettings s = base;
-      s.contact_hertz = kSoftPassesHertz;
-      s.soft_iterations = passes;
-      runs.add("soft_iterations", std::to_string(passes), s);
+      runs.add("soft_iterations", std::to_string(passes), with_stiff_contacts(base, passes));
     }
   }
   if (is_headline(scene) && !quick)
@@ -197,6 +190,15 @@ RunSpec long_run(const std::string& knob, const std::string& value, const WorldS
 WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline)
 {
   settings.soft_step = pipeline == Pipeline::Soft;
+  return settings;
+}
+
+WorldSettings with_stiff_contacts(WorldSettings settings, int passes)
+{
+  constexpr double kStiffHertz = 60.0;  // Hz
+  settings.soft_step = true;
+  settings.contact_hertz = kStiffHertz;
+  settings.soft_iterations = passes;
   return settings;
 }
 
@@ -274,10 +276,7 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   WorldSettings stiff = with_steps(soft, kSoftStiffSubsteps, soft.velocity_iterations);
   stiff.contact_hertz = kSoftStiffHertz;
   runs.push_back(long_run("contact_hertz", text(kSoftStiffHertz), stiff, seconds));
-  WorldSettings passes = soft;
-  passes.contact_hertz = kSoftPassesHertz;
-  passes.soft_iterations = kSoftPasses;
-  runs.push_back(long_run("soft_iterations", std::to_string(kSoftPasses), passes, seconds));
+  runs.push_back(long_run("soft_iterations", std::to_string(kStiffPasses), with_stiff_contacts(soft), seconds));
   // The exact mode on the column (one cluster of 20 boxes), as in Fx2D below.
   if (!pyramid)
   {

@@ -13,7 +13,7 @@ SCENE_ORDER = ["pyramid", "column", "elastic_gas", "newtons_cradle", "bouncing_d
 PIPELINES = ["soft", "fx2d"]
 PIPELINE_NAMES = {"soft": "soft step", "fx2d": "Fx2D"}
 PIPELINE_PHRASES = {"soft": "the soft step", "fx2d": "the Fx2D pipeline"}
-# The stack bench's stiff soft-step row (bench/stack_bench.cpp, kStiffHertz and kStiffPasses).
+# The stack bench's stiff soft-step row (with_stiff_contacts in bench/sweep.cpp).
 STIFF_SETTING = "`contact_hertz` 60, `soft_iterations` 4"
 PEER_NAMES = {"box2d": "Box2D 2.4.1", "chipmunk": "Chipmunk 7", "box2d_v3": "Box2D v3"}
 TIME_TARGET = 0.75          # our time / a peer run's at equal or better accuracy

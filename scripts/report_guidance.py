@@ -63,8 +63,8 @@ def guidance_pipeline(runs, stacks, default):
     pairs = [(r, b) for r, b in pairs if b]
     if pairs and all(r["err"] == b["err"] and r["pen"] == b["pen"] for r, b in pairs):
         line += (f". In this build `velocity_iterations` did not change any result of the soft step ({len(pairs)} "
-                 f"runs at other iteration counts matched their defaults exactly): it solves each substep once and "
-                 f"relaxes once, so tune it with the substeps and the contact knobs")
+                 f"runs at other iteration counts matched their defaults exactly): the soft step's passes per "
+                 f"substep are `soft_iterations` (one solve and one relax pass by default)")
     return line + ". Per use:"
 
 

@@ -46,7 +46,7 @@ TEST(SettingsTables, CfgDeclaresExactlyTheTablesParameters)
   const std::vector<std::string> table = table_parameter_names();
   EXPECT_EQ(std::set<std::string>(cfg.begin(), cfg.end()), std::set<std::string>(table.begin(), table.end()));
   EXPECT_EQ(cfg.size(), table.size());
-  EXPECT_EQ(table.size(), 8u + 32u) << "8 solver fields, 31 world fields, gravity as two";
+  EXPECT_EQ(table.size(), 8u + 33u) << "8 solver fields, 32 world fields, gravity as two";
 }
 
 TEST(SettingsTables, CfgDefaultsAreTheTablesDefaults)

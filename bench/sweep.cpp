@@ -196,8 +196,12 @@ WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline)
 WorldSettings with_stiff_contacts(WorldSettings settings, int passes)
 {
   constexpr double kStiffHertz = 60.0;  // Hz
+  // More damped than the defaults' 10: a base-100 pyramid's breathing
+  // settles within the first second (docs/performance.md).
+  constexpr double kStiffDampingRatio = 15.0;
   settings.soft_step = true;
   settings.contact_hertz = kStiffHertz;
+  settings.contact_damping_ratio = kStiffDampingRatio;
   settings.soft_iterations = passes;
   return settings;
 }

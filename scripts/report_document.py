@@ -211,8 +211,8 @@ targets at about twice the time; the base-100 pyramid still breathes at
 damping ratio 10, and more damping settles it. The last row, the stack
 bench's stiff row, meets the drift targets of all five stacks and the
 penetration target of four (base-100's steady compression at 60 Hz is 6.5
-mm) at about 2.5 times the defaults' time, which is past the 2x Box2D v3
-time target: the defaults stay at one pass. Past the stiffness cap, 80 Hz with 3
+mm) at 2 to 3 times the defaults' time, which is past the 2x Box2D v3 time
+target: the defaults stay at one pass. Past the stiffness cap, 80 Hz with 3
 passes and damping ratio 15 held it to 3.5 mm and 5.0 mm deep over 20 s,
 but with 2 passes it rang to 75 mm: the cap stays a quarter of the substep
 rate.

@@ -51,10 +51,11 @@ std::vector<SolverSweepPoint> solver_points(bool quick);
 /// `settings` with soft_step set for `pipeline`.
 WorldSettings with_pipeline(WorldSettings settings, Pipeline pipeline);
 /// Solve and relax passes of the stiff soft step (with_stiff_contacts).
-constexpr int kStiffPasses = 6;
-/// The soft step for tall stacks: 60 Hz contacts, the stiffness cap at 4
-/// substeps of a 60 Hz frame (a quarter of the substep rate), damping ratio
-/// 15, held by `passes` solve and relax passes a substep (soft_iterations).
+constexpr int kStiffPasses = 2;
+/// The soft step for tall stacks: 6 substeps and 90 Hz contacts, the
+/// stiffness cap at 6 substeps of a 60 Hz frame (a quarter of the substep
+/// rate), damping ratio 15, held by `passes` solve and relax passes a
+/// substep (soft_iterations).
 WorldSettings with_stiff_contacts(WorldSettings settings, int passes = kStiffPasses);
 /// The pipeline these settings step with: "soft" or "fx2d" (the exact solver
 /// mode works in both).

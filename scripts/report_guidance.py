@@ -116,8 +116,8 @@ def guidance_stacks(runs, stacks, default):
     stiff = [(s, stack_rows(stacks, s, "soft"), stack_rows(stacks, s, "soft", stiff=True)) for s in scenes]
     stiff = [(s, d, t) for s, d, t in stiff if d and t]
     if stiff:
-        lines.append("  - Taller stacks: the soft step at its stiffest contacts for 4 substeps, more damped and with "
-                     "more passes (" + STIFF_SETTING + "), drifted " +
+        lines.append("  - Taller stacks: the soft step with more substeps, the stiffest contacts they allow, more "
+                     "damping and two passes (" + STIFF_SETTING + "), drifted " +
                      "; ".join(f"{s.replace('stack_', '')} {mm(t['drift_m'])}, penetration {mm(t['max_penetration_m'])}"
                                f" at {fmt(t['cpu_ms_per_frame'] / d['cpu_ms_per_frame'])}x the defaults' CPU time"
                                for s, d, t in stiff) + ".")

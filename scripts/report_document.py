@@ -90,8 +90,8 @@ Box2D v3*; the time ratio is CPU time per frame, wall in the table).
   `warm_start_before_integration`, 1 and 16 position passes, `position_block`,
   `warm_start_every_substep` off and `warm_start_factor` 0.5; on the mass
   ratios `exact_position_correction`. Soft step only: `contact_hertz` 10 and
-  60 Hz (and 120 Hz at 8 substeps, 240 Hz at 16, and 60 Hz with damping
-  ratio 15 and `soft_iterations` 2 and 6 on the headline scenes),
+  60 Hz (and 120 Hz at 8 substeps, 240 Hz at 16, and 6 substeps at 90 Hz
+  with damping ratio 15 and `soft_iterations` 2 and 4 on the headline scenes),
   `contact_damping_ratio` 1 and 100, `contact_push_speed` 1 and 10 m/s,
   `speculative_margin` 5 mm and 10 cm (0 on the bullets),
   `contact_reuse_distance` 0 and 5 mm. --quick thins
@@ -209,13 +209,34 @@ this run) with a scratch driver stepping `make_stack_scene` for 60 s; drift
 So 60 Hz with 4 passes holds the base-60 pyramid within both of its
 targets at about twice the time; the base-100 pyramid still breathes at
 damping ratio 10, and more damping settles it. The last row, the stack
-bench's stiff row, meets the drift targets of all five stacks and the
-penetration target of four (base-100's steady compression at 60 Hz is 6.5
-mm) at 2 to 3 times the defaults' time, which is past the 2x Box2D v3 time
-target: the defaults stay at one pass. Past the stiffness cap, 80 Hz with 3
-passes and damping ratio 15 held it to 3.5 mm and 5.0 mm deep over 20 s,
-but with 2 passes it rang to 75 mm: the cap stays a quarter of the substep
-rate.
+bench's stiff row until commit 54ec963, meets the drift targets of all five
+stacks and the penetration target of four (base-100's steady compression at
+60 Hz is 6.5 mm) at 2 to 3 times the defaults' time, which is past the 2x
+Box2D v3 time target: the defaults stay at one pass. Past the stiffness
+cap, 80 Hz with 3 passes and damping ratio 15 held it to 3.5 mm and 5.0 mm
+deep over 20 s, but with 2 passes it rang to 75 mm: the cap stays a quarter
+of the substep rate.
+
+More substeps raise the cap itself, and a stiffer contact needs fewer
+passes to hold: the stack bench's stiff row is now 6 substeps at their cap
+of 90 Hz, damping ratio 15, 2 passes (commit 54ec963). Measured at commit
+bc7dc0b (not this run) with a scratch driver stepping `make_stack_scene`
+for 60 s; drift 1 s -> 60 s / deepest gap the step reported after 1 s, mm
+(user CPU seconds of the run):
+
+| setting | column | base-20 | base-60 | base-100 |
+|---|---|---|---|---|
+| defaults (4 substeps, 40 Hz, damping ratio 10, 1 pass) | 0.047 / 6.02 (< 0.1 s) | 0.408 / 2.84 (0.7 s) | 6.51 / 8.96 (7.2 s) | 17.0 / 15.5 (31.5 s) |
+| 4 substeps, 60 Hz, damping ratio 15, 6 passes | 0.054 / 2.67 (0.1 s) | 0.077 / 1.26 (2.1 s) | 0.895 / 3.88 (20.3 s) | 3.03 / 6.50 (65.0 s) |
+| 6 substeps, 90 Hz, damping ratio 15, 2 passes | 0.0007 / 1.19 (0.1 s) | 0.063 / 0.56 (1.3 s) | 0.690 / 1.73 (13.2 s) | 2.32 / 2.92 (38.2 s) |
+| 8 substeps, 120 Hz, damping ratio 15, 2 passes | 0.00002 / 0.67 (0.1 s) | 0.026 / 0.32 (1.6 s) | 0.298 / 0.97 (15.7 s) | 0.769 / 1.63 (46.9 s) |
+
+Over 10 s, with one pass the stiffer contacts did not hold (6 substeps at
+90 Hz drifted 17.3 mm on the base-60 pyramid and 64 mm on the base-100, 8
+at 120 Hz 7.1 mm on the base-60), and 4 or 5 substeps at their cap with 2
+passes fell short on the base-60 (1.95 and 1.11 mm). Six substeps with 2 passes meet every drift
+and penetration target in about two thirds of the time of 4 substeps with
+6 passes; 8 substeps buy about a third of the drift for a fifth more time.
 
 Why a nudged column (`stack_column_20_nudged`, the column with its top box
 1 um off centre): the exact column is symmetric to the last bit, so nothing

@@ -333,4 +333,27 @@ pool that takes its lock only for a sleeping thread and spins without
 median of 0.5 to 5.8 us in three runs with the `pause` spins and 0.6 to
 2.7 us without), as frames did not change: the rain of 1e4 on 2 workers
 read 3.06 to 3.36 ms with each pool.
+
+A ninth, on why the rain of 1e4 timed 4.2 to 4.8 ms a frame in the report
+at edef4c1 and 6.6 to 10 ms at b63ff74, the code it runs unchanged, after
+the machine was restarted (scratch drivers at commit 8a6626d, not
+committed). Memory touched for the first time costs 11.1 us a 4 kB page
+here (100 MB allocated and written a page at a time, three rounds), while
+memory given transparent huge pages (`madvise`) costs 0.25 us per 4 kB once
+the host has backed it; the kernel's time goes to its paravirtualised page
+tables (`pvm_irq_enable` in `perf`). The base-100 pyramid, whose contacts
+stay, faults 0.2 pages a frame (frames 20 to 40), but the rain grows: from
+frame 60 to 104 its contacts go from about 2000 to 20700, its frame from
+1.8 ms to 8 to 11 ms with spikes to 32 ms where a layer lands, and it
+faults 304 pages a frame over frames 84 to 104, 3.4 ms at that price. In a
+`perf record` of the whole run page faults were 21% of the samples, and the
+vectors growing (`_M_default_append` of the contacts, points and rows) 21%,
+much of it those same faults. The faults happen where a buffer grows, on
+the calling thread, so 2 workers gain little there: frames 84 to 104 took
+9.5 to 9.7 ms on one worker and 8.2 ms on two in three alternating runs.
+With glibc's transparent huge pages for its large blocks
+(`GLIBC_TUNABLES=glibc.malloc.hugetlb=1`) the rain faulted 114 pages a
+frame and took 7.5 to 9.1 ms on one worker and 6.3 to 7.1 ms on two. Fewer
+bytes per contact (the memory target) would cut these faults in proportion;
+the library does not ask for huge pages itself.
 """

@@ -221,6 +221,47 @@ TEST(WorldSoftStep, MorePassesHoldAColumnAtTheStiffestContacts)
   EXPECT_NEAR(deep_four, spring_depth, 0.01 * spring_depth);
 }
 
+TEST(WorldSoftStep, MoreSubstepsRaiseTheStiffnessCap)
+{
+  // The tall-stack setting asks for 90 Hz: 4 substeps of a 60 Hz frame cap a
+  // contact at a quarter of their rate (60 Hz), 6 substeps allow all of it.
+  // The lowest box-box contact shows which stiffness acted: it rests at
+  // W / (m_rel omega^2) under the 19 boxes above it.
+  constexpr double kAskedHertz = 90.0;
+  const auto deepest_at = [&](int substeps, double& drift) {
+    Scene scene = scenes::column(20);
+    scene.settings.substeps = substeps;
+    scene.settings.contact_hertz = kAskedHertz;
+    scene.settings.contact_damping_ratio = 15.0;
+    scene.settings.soft_iterations = 2;
+    World world = soft_world(scene);
+    world.step(60);
+    const std::vector<Vec2> settled = test::positions(world);
+    world.step(240);
+    drift = test::largest_move(world, settled, test::positions(world));
+    return world.step().max_penetration;
+  };
+  const World reference = soft_world(scenes::column(20));
+  const double mass = reference.body(reference.body_ids().back()).mass();
+  const double g = length(reference.settings().gravity);
+  const double frame_rate = 1.0 / reference.settings().dt;
+  const auto spring_depth = [&](double hertz) {
+    const double omega = 2.0 * M_PI * hertz;
+    return 19.0 * mass * g / (0.5 * mass * omega * omega);
+  };
+  double drift4 = 0.0;
+  double drift6 = 0.0;
+  const double deep4 = deepest_at(4, drift4);
+  const double deep6 = deepest_at(6, drift6);
+  const double cap4 = 0.25 * 4.0 * frame_rate;
+  std::printf("column asking %g Hz: 4 substeps deepest %.4g m (spring at %g Hz %.4g m), 6 substeps %.4g m "
+              "(spring %.4g m); drift 1 s -> 5 s %.3g / %.3g m\n",
+              kAskedHertz, deep4, cap4, spring_depth(cap4), deep6, spring_depth(kAskedHertz), drift4, drift6);
+  EXPECT_NEAR(deep4, spring_depth(cap4), 0.01 * spring_depth(cap4));
+  EXPECT_NEAR(deep6, spring_depth(kAskedHertz), 0.01 * spring_depth(kAskedHertz));
+  EXPECT_LT(drift6, 1e-5);
+}
+
 TEST(WorldSoftStep, PyramidBoxesStayLevelOnTheirAnchors)
 {
   // Velocity-only friction lets each contact slip by round-off every pass,

@@ -184,82 +184,88 @@ TEST(WorldSoftStep, TwentyBoxColumnStands)
   EXPECT_LT(deepest, 0.02) << "the contacts' springs carry the column's weight";
 }
 
+/// A 20-box column stepped 1 s to settle, then 4 s more with `tune` applied
+/// to its settings.
+struct ColumnRest
+{
+  double drift = 0.0;    ///< largest move of a box from 1 s to 5 s (m)
+  double deepest = 0.0;  ///< deepest contact in the frame after (m)
+};
+
+template <class Tune>
+ColumnRest rest_column(Tune tune)
+{
+  Scene scene = scenes::column(20);
+  tune(scene.settings);
+  World world = soft_world(scene);
+  world.step(60);
+  const std::vector<Vec2> settled = test::positions(world);
+  world.step(240);
+  ColumnRest rest;
+  rest.drift = test::largest_move(world, settled, test::positions(world));
+  rest.deepest = world.step().max_penetration;
+  return rest;
+}
+
+/// How deep the column's lowest box-box contact rests on a spring of
+/// `hertz`: the 19 boxes' weight over m_rel omega^2, m_rel the two boxes'
+/// reduced mass.
+double column_spring_depth(double hertz)
+{
+  const World reference = soft_world(scenes::column(20));
+  const double mass = reference.body(reference.body_ids().back()).mass();
+  const double g = length(reference.settings().gravity);
+  const double omega = 2.0 * M_PI * hertz;
+  return 19.0 * mass * g / (0.5 * mass * omega * omega);
+}
+
 TEST(WorldSoftStep, MorePassesHoldAColumnAtTheStiffestContacts)
 {
   // At 60 Hz (the cap at 4 substeps) one solve and one relax pass a substep
   // leave the column's weight bouncing between its contacts; four carry it
-  // down each substep. Either way the lowest box-box contact, under the 19
-  // boxes above it, rests as deep as its spring needs: W / (m_rel omega^2)
-  // with m_rel the two boxes' reduced mass.
+  // down each substep. Either way the lowest box-box contact rests as deep
+  // as its spring needs.
   constexpr double kHertz = 60.0;
-  const auto run = [&](int passes, double& drift, double& deepest) {
-    Scene scene = scenes::column(20);
-    scene.settings.contact_hertz = kHertz;
-    scene.settings.soft_iterations = passes;
-    World world = soft_world(scene);
-    world.step(60);
-    const std::vector<Vec2> settled = test::positions(world);
-    world.step(240);
-    drift = test::largest_move(world, settled, test::positions(world));
-    deepest = world.step().max_penetration;
+  const auto at_passes = [&](int passes) {
+    return rest_column([&](WorldSettings& s) {
+      s.contact_hertz = kHertz;
+      s.soft_iterations = passes;
+    });
   };
-  double drift_one = 0.0;
-  double deep_one = 0.0;
-  double drift_four = 0.0;
-  double deep_four = 0.0;
-  run(1, drift_one, deep_one);
-  run(4, drift_four, deep_four);
-  const World reference = soft_world(scenes::column(20));
-  const double mass = reference.body(reference.body_ids().back()).mass();
-  const double g = length(reference.settings().gravity);
-  const double omega = 2.0 * M_PI * kHertz;
-  const double spring_depth = 19.0 * mass * g / (0.5 * mass * omega * omega);
+  const ColumnRest one = at_passes(1);
+  const ColumnRest four = at_passes(4);
+  const double spring_depth = column_spring_depth(kHertz);
   std::printf("column at %g Hz, drift 1 s -> 5 s: 1 pass %.3g m, 4 passes %.3g m; deepest %.4g / %.4g m, "
-              "spring %.4g m\n", kHertz, drift_one, drift_four, deep_one, deep_four, spring_depth);
-  EXPECT_LT(drift_four, 1e-5);
-  EXPECT_GT(drift_one, 10.0 * drift_four) << "the passes were not run";
-  EXPECT_NEAR(deep_four, spring_depth, 0.01 * spring_depth);
+              "spring %.4g m\n", kHertz, one.drift, four.drift, one.deepest, four.deepest, spring_depth);
+  EXPECT_LT(four.drift, 1e-5);
+  EXPECT_GT(one.drift, 10.0 * four.drift) << "the passes were not run";
+  EXPECT_NEAR(four.deepest, spring_depth, 0.01 * spring_depth);
 }
 
 TEST(WorldSoftStep, MoreSubstepsRaiseTheStiffnessCap)
 {
   // The tall-stack setting asks for 90 Hz: 4 substeps of a 60 Hz frame cap a
   // contact at a quarter of their rate (60 Hz), 6 substeps allow all of it.
-  // The lowest box-box contact shows which stiffness acted: it rests at
-  // W / (m_rel omega^2) under the 19 boxes above it.
+  // The lowest box-box contact's depth shows which stiffness acted.
   constexpr double kAskedHertz = 90.0;
-  const auto deepest_at = [&](int substeps, double& drift) {
-    Scene scene = scenes::column(20);
-    scene.settings.substeps = substeps;
-    scene.settings.contact_hertz = kAskedHertz;
-    scene.settings.contact_damping_ratio = 15.0;
-    scene.settings.soft_iterations = 2;
-    World world = soft_world(scene);
-    world.step(60);
-    const std::vector<Vec2> settled = test::positions(world);
-    world.step(240);
-    drift = test::largest_move(world, settled, test::positions(world));
-    return world.step().max_penetration;
+  const auto at_substeps = [&](int substeps) {
+    return rest_column([&](WorldSettings& s) {
+      s.substeps = substeps;
+      s.contact_hertz = kAskedHertz;
+      s.contact_damping_ratio = 15.0;
+      s.soft_iterations = 2;
+    });
   };
-  const World reference = soft_world(scenes::column(20));
-  const double mass = reference.body(reference.body_ids().back()).mass();
-  const double g = length(reference.settings().gravity);
-  const double frame_rate = 1.0 / reference.settings().dt;
-  const auto spring_depth = [&](double hertz) {
-    const double omega = 2.0 * M_PI * hertz;
-    return 19.0 * mass * g / (0.5 * mass * omega * omega);
-  };
-  double drift4 = 0.0;
-  double drift6 = 0.0;
-  const double deep4 = deepest_at(4, drift4);
-  const double deep6 = deepest_at(6, drift6);
-  const double cap4 = 0.25 * 4.0 * frame_rate;
+  const ColumnRest four = at_substeps(4);
+  const ColumnRest six = at_substeps(6);
+  const double cap4 = 0.25 * 4.0 / scenes::column(20).settings.dt;  // Hz
   std::printf("column asking %g Hz: 4 substeps deepest %.4g m (spring at %g Hz %.4g m), 6 substeps %.4g m "
               "(spring %.4g m); drift 1 s -> 5 s %.3g / %.3g m\n",
-              kAskedHertz, deep4, cap4, spring_depth(cap4), deep6, spring_depth(kAskedHertz), drift4, drift6);
-  EXPECT_NEAR(deep4, spring_depth(cap4), 0.01 * spring_depth(cap4));
-  EXPECT_NEAR(deep6, spring_depth(kAskedHertz), 0.01 * spring_depth(kAskedHertz));
-  EXPECT_LT(drift6, 1e-5);
+              kAskedHertz, four.deepest, cap4, column_spring_depth(cap4), six.deepest,
+              column_spring_depth(kAskedHertz), four.drift, six.drift);
+  EXPECT_NEAR(four.deepest, column_spring_depth(cap4), 0.01 * column_spring_depth(cap4));
+  EXPECT_NEAR(six.deepest, column_spring_depth(kAskedHertz), 0.01 * column_spring_depth(kAskedHertz));
+  EXPECT_LT(six.drift, 1e-5);
 }
 
 TEST(WorldSoftStep, PyramidBoxesStayLevelOnTheirAnchors)

@@ -5,7 +5,7 @@ throughput rows, worker speed-ups and scaling slopes."""
 import math
 import statistics
 
-from report_data import PEERS, SCENE_ORDER, is_ours, number
+from report_data import PEERS, SCENE_ORDER, is_ours, is_stiff, number
 from report_format import finite, label, setting
 
 
@@ -138,7 +138,7 @@ def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None,
     """The stack bench's row of an engine at a checkpoint (the longest by default); ours at the
     defaults, or with stiff=True the stiff soft-step row (CSV variant "stiff")."""
     rows = [r for r in stacks if r["scene"] == scene and r["engine"] == engine
-            and (pipeline is None or r["pipeline"] == pipeline) and (r.get("variant") == "stiff") == stiff]
+            and (pipeline is None or r["pipeline"] == pipeline) and is_stiff(r) == stiff]
     if seconds is None and rows:
         seconds = max(r["seconds"] for r in rows)
     rows = [r for r in rows if r["seconds"] == seconds]

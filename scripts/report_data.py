@@ -14,7 +14,9 @@ PIPELINES = ["soft", "fx2d"]
 PIPELINE_NAMES = {"soft": "soft step", "fx2d": "Fx2D"}
 PIPELINE_PHRASES = {"soft": "the soft step", "fx2d": "the Fx2D pipeline"}
 # The stack bench's stiff soft-step row (with_stiff_contacts in bench/sweep.cpp).
-STIFF_SETTING = "6 substeps, `contact_hertz` 90, `contact_damping_ratio` 15, `soft_iterations` 2"
+STIFF_SUBSTEPS, STIFF_HERTZ, STIFF_DAMPING_RATIO, STIFF_PASSES = 6, 90, 15, 2
+STIFF_SETTING = (f"{STIFF_SUBSTEPS} substeps, `contact_hertz` {STIFF_HERTZ}, "
+                 f"`contact_damping_ratio` {STIFF_DAMPING_RATIO}, `soft_iterations` {STIFF_PASSES}")
 PEER_NAMES = {"box2d": "Box2D 2.4.1", "chipmunk": "Chipmunk 7", "box2d_v3": "Box2D v3"}
 TIME_TARGET = 0.75          # our time / a peer run's at equal or better accuracy
 DRIFT_TARGET_M = 1e-3       # stacks stand 60 s with drift below this
@@ -47,7 +49,7 @@ KNOB_LABELS = {"warm_starting": "warm {}", "time_of_impact": "TOI {}", "position
                "contact_hertz": "{} Hz", "contact_damping_ratio": "damping ratio {}",
                "contact_push_speed": "push {} m/s", "speculative_margin": "margin {} m",
                "contact_reuse_distance": "reuse {} m", "sleeping": "sleeping {}",
-               "soft_iterations": "90 Hz, damping ratio 15, {} passes"}
+               "soft_iterations": f"{STIFF_HERTZ} Hz, damping ratio {STIFF_DAMPING_RATIO}, {{}} passes"}
 # Plot colours: ours per pipeline (all points, front), the peers.
 COLOURS = {"soft": ("#f1b6da", "#c51b7d"), "fx2d": ("#9ecae1", "#08519c"), "box2d": "#ff7f00",
            "chipmunk": "#238b45", "box2d_v3": "#6a3d9a"}
@@ -101,6 +103,11 @@ def throughput_rounds(scaling):
 
 def is_ours(run):
     return run["engine"] == "collision2d"
+
+
+def is_stiff(run):
+    """A stack bench row of ours with the stiff soft-step setting."""
+    return run.get("variant") == "stiff"
 
 
 def prepare(runs):

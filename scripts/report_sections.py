@@ -7,7 +7,7 @@ import platform
 import subprocess
 
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
-                         STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, number)
+                         STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number)
 from report_format import fmt, label, setting, table
 from report_analysis import (baseline, gas_rows, other, ours, ratio, scaling_slope, scene_names, time_target_rows,
                              time_target_scenes)
@@ -152,7 +152,7 @@ def scaling_section(scaling):
 
 
 def stack_engine_label(r):
-    if is_ours(r) and r.get("variant") == "stiff":
+    if is_ours(r) and is_stiff(r):
         return f"ours {PIPELINE_NAMES[r['pipeline']]}, {STIFF_SETTING}"
     if is_ours(r):
         return f"ours {PIPELINE_NAMES[r['pipeline']]}"
@@ -173,12 +173,12 @@ def stacks_section(stacks, default):
     rows = []
     order = {"collision2d": 0, "box2d": 1, "chipmunk": 2, "box2d_v3": 3}
     for scene in [s for s in STACK_SCENES if any(r["scene"] == s for r in stacks)]:
-        engines = sorted({(r["engine"], r["pipeline"], r.get("variant") == "stiff") for r in stacks
+        engines = sorted({(r["engine"], r["pipeline"], is_stiff(r)) for r in stacks
                           if r["scene"] == scene},
                          key=lambda eps: (order.get(eps[0], 9), eps[1] != default, eps[2]))
         for engine, pipeline, stiff in engines:
             at = {r["seconds"]: r for r in stacks if r["scene"] == scene and r["engine"] == engine
-                  and r["pipeline"] == pipeline and (r.get("variant") == "stiff") == stiff}
+                  and r["pipeline"] == pipeline and is_stiff(r) == stiff}
             last = at[max(at)]
             name = stack_engine_label(last) + (" (default)" if is_ours(last) and pipeline == default and not stiff
                                                else "")

@@ -1,4 +1,4 @@
-// ContactSolver residuals on random clusters (see solver_metrics.h).
+// ContactSolver residuals on random islands (see solver_metrics.h).
 #include "solver_metrics.h"
 
 #include <algorithm>

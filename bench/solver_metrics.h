@@ -1,4 +1,4 @@
-// The instantaneous ContactSolver on random contact clusters (random_scenes.h):
+// The instantaneous ContactSolver on random contact islands (random_scenes.h):
 // time per solve and the residuals of its contract, recomputed from the
 // velocities and impulses it returns.
 #pragma once

@@ -32,7 +32,7 @@ constexpr double kSoftStiffHertz = 120.0;
 void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
   runs.add("baseline", steps_text(base.substeps, base.velocity_iterations), base);
-  // The pyramid is one cluster of 210 boxes (~2400 complementarity rows):
+  // The pyramid is one island of 210 boxes (~2400 complementarity rows):
   // pivoting it did not finish 30 frames in several minutes, so it is left out.
   if (scene.name != "pyramid")
   {
@@ -99,7 +99,7 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
 void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
   runs.add("baseline", steps_text(base.substeps, base.velocity_iterations), base);
-  // The exact mode in the soft step: as in Fx2D, not on the pyramid's one big cluster.
+  // The exact mode in the soft step: as in Fx2D, not on the pyramid's one big island.
   if (scene.name != "pyramid")
   {
     add_exact(base, runs);
@@ -286,7 +286,7 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   stiff.contact_hertz = kSoftStiffHertz;
   runs.push_back(long_run("contact_hertz", text(kSoftStiffHertz), stiff, seconds));
   runs.push_back(long_run("soft_iterations", std::to_string(kStiffPasses), with_stiff_contacts(soft), seconds));
-  // The exact mode on the column (one cluster of 20 boxes), as in Fx2D below.
+  // The exact mode on the column (one island of 20 boxes), as in Fx2D below.
   if (!pyramid)
   {
     WorldSettings soft_exact = soft;
@@ -312,8 +312,8 @@ std::vector<RunSpec> stand_runs(const BenchScene& scene, bool quick)
   precise.position_iterations = kPrecisePositionIterations;
   precise.slop = kPreciseSlop;
   runs.push_back(long_run("precise", "16 position passes slop 1e-5", precise, seconds));
-  // The exact mode on the column (one cluster of 20 boxes); the pyramid's
-  // 210-box cluster is too costly to pivot for a minute within the budget.
+  // The exact mode on the column (one island of 20 boxes); the pyramid's
+  // 210-box island is too costly to pivot for a minute within the budget.
   if (!pyramid)
   {
     WorldSettings exact = fx2d;

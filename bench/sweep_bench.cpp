@@ -18,7 +18,7 @@
 //         defaults and matched to a few of our points, and ours at the same
 //         points in both pipelines, all in this one process;
 // stand:  the stacks for 60 s at a few settings of each pipeline (the drift target);
-// solver: the instantaneous ContactSolver on random clusters per mode,
+// solver: the instantaneous ContactSolver on random islands per mode,
 //         iteration cap and tolerance: Newton-target and complementarity residuals.
 // Progress goes to stderr; docs/performance.md explains every column.
 #include <cmath>
@@ -36,7 +36,7 @@ namespace
 using namespace collision2d;
 using namespace collision2d::bench;
 
-constexpr std::size_t kSolverScenes = 400;  // random clusters per solver point
+constexpr std::size_t kSolverScenes = 400;  // random islands per solver point
 constexpr std::size_t kQuickSolverScenes = 100;
 constexpr std::uint64_t kSolverSeed = 20240601;  // the same draws for every point
 constexpr int kQuickRepetitions = 3;

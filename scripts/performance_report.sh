@@ -114,7 +114,7 @@ part_done sweep
 throughput_rounds 2
 part_done "throughput rounds"
 
-log "solver residuals on random clusters"
+log "solver residuals on random islands"
 "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
 part_done solver
 

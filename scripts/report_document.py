@@ -13,7 +13,7 @@ from report_sections import (knob_section, machine_section, mass_ratio_section, 
 
 def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra=()):
     mode_note = ("The World's exact solver mode is swept in both pipelines on every scene but the "
-                 "pyramid: its one cluster of 210 boxes (about 2400 complementarity rows) did not finish 30 frames "
+                 "pyramid: its one island of 210 boxes (about 2400 complementarity rows) did not finish 30 frames "
                  "in exact mode within several minutes, so it is not measured there." if world_has_exact else
                  "`WorldSettings` has no solver mode in the build measured here, so the World is swept in its "
                  "iterative mode only; the exact mode is measured on the instantaneous `ContactSolver` (solver "
@@ -152,9 +152,9 @@ error is equal or better, and the time ratio. The target is a ratio of at most
 ## Mass ratios (heavy box on a light one)
 
 {mass_ratio_section(runs)}
-## ContactSolver on random clusters: residuals per mode
+## ContactSolver on random islands: residuals per mode
 
-Random multi-contact clusters from `RandomSceneGenerator` (chains, stars,
+Random multi-contact islands from `RandomSceneGenerator` (chains, stars,
 piles of disks and polygons, e and mu random per scene), the same draws for
 every row. Residuals are recomputed from the returned velocities and
 impulses: the shortfall below each contact's fixed Newton target; the normal

@@ -134,7 +134,7 @@ def guidance_stacks(runs, stacks, default):
         tail = ("  - The exact solver mode on the 20-box column: " +
                 "; ".join(f"{PIPELINE_NAMES[r['pipeline']]} drift {mm(r['err'])} at {fmt(r['cpu'])} ms a frame"
                           for r in exact) +
-                " (too costly for large clusters: the pyramid is not run exact). Let large resting scenes sleep "
+                " (too costly for large islands: the pyramid is not run exact). Let large resting scenes sleep "
                 "(Auto sleeps worlds of 256+ bodies)")
     lines.append(tail + ".")
     return "\n".join(lines)

@@ -181,7 +181,7 @@ def exact_target_row(runs, solver, world_has_exact):
     fallbacks = max(int(s["exact_fallbacks"]) for s in rows)
     return ["exact mode holds a 1e6 mass-ratio stack",
             f"WorldSettings has no solver mode in this build, so the World stack cannot run exact; "
-            f"ContactSolver exact on random clusters with masses up to 1e6: complementarity {fmt(worst)} m/s, "
+            f"ContactSolver exact on random islands with masses up to 1e6: complementarity {fmt(worst)} m/s, "
             f"{fallbacks} fallbacks", "not measurable in the World"]
 
 

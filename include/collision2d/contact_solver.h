@@ -13,13 +13,13 @@ namespace collision2d
 {
 struct SolveReport
 {
-  int iterations = 0;                 ///< sweeps done (largest over coupled clusters)
+  int iterations = 0;                 ///< sweeps done (largest over coupled islands)
   double max_residual = 0.0;          ///< complementarity residual at exit (m/s)
   double total_normal_impulse = 0.0;  ///< sum of normal impulses (N s)
   bool converged = true;              ///< residual fell below tol before the cap
   // Additions beyond the four original fields.
   std::size_t contact_count = 0;
-  std::size_t cluster_count = 0;         ///< coupled clusters (islands) solved
+  std::size_t island_count = 0;         ///< coupled islands solved
   double kinetic_energy_before = 0.0;    ///< J
   double kinetic_energy_after = 0.0;     ///< J
   double time_of_impact = 1.0;           ///< step(): the time moved to, in [0, 1]
@@ -58,7 +58,7 @@ public:
   static std::vector<Contact> detect_contacts(const std::vector<Body>& bodies, double touch_tolerance);
 
   /// Velocity solve. Writes the applied impulses per contact to `impulses`
-  /// when given. In SolverMode::Exact each coupled cluster is solved by
+  /// when given. In SolverMode::Exact each coupled island is solved by
   /// pivoting; if pivoting fails the iterative solve is used and the report's
   /// exact_fallback is set.
   SolveReport solve(std::vector<Body>& bodies, const std::vector<Contact>& contacts,

@@ -1,7 +1,7 @@
 // Dense linear complementarity problems solved by pivoting (Lemke's method).
 //
 // Find z such that  w = M z + q,  w >= 0,  z >= 0,  w . z = 0.
-// Used by the exact contact solver (one LCP per coupled cluster of contacts),
+// Used by the exact contact solver (one LCP per coupled island of contacts),
 // but independent of the contact model: any dense M and q work.
 #pragma once
 

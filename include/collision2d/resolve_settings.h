@@ -24,7 +24,7 @@ constexpr SettingRange kSolverIterationRange{1.0, kMaxSolverIterations, false};
   X(bias_factor, double, 0.2, kUnitInterval, "", "Fraction of the penetration beyond slop removed") \
   X(slop, double, 1e-3, kNonNegative, "m", "Penetration left uncorrected") \
   X(use_time_of_impact, bool, false, kAnyFinite, "", "Sweep to the earliest impact before resolving") \
-  X(mode, SolverMode, SolverMode::Iterative, kAnyFinite, "", "Velocity solve: iterative to a fixed point, or exact LCP per cluster")
+  X(mode, SolverMode, SolverMode::Iterative, kAnyFinite, "", "Velocity solve: iterative to a fixed point, or exact LCP per island")
 // clang-format on
 
 struct ResolveSettings

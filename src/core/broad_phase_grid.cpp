@@ -19,7 +19,7 @@ namespace collision2d
 {
 namespace
 {
-/// Buckets up to this size are compared all pairs; larger ones (a cluster in
+/// Buckets up to this size are compared all pairs; larger ones (a crowd in
 /// one cell) are sorted and swept along x.
 constexpr std::size_t kAllPairsBucket = 16;
 

@@ -125,7 +125,7 @@ struct ContactPoint
 
   // Bookkeeping of the solvers that own the point.
   std::uint32_t contact = 0;  ///< index into the caller's contact list
-  std::uint32_t cluster = 0;  ///< representative body of the coupled cluster
+  std::uint32_t island = 0;  ///< representative body of the coupled island
 
   /// perp(normal): tangential impulses act on b along it.
   Vec2 tangent() const { return perp(normal); }

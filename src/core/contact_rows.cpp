@@ -105,7 +105,7 @@ void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>
 {
   load_velocities(bodies, problem.state);
   build_rows(bodies, problem.state, contacts, restitution, mu, problem.rows);
-  partition_clusters(problem.state, problem.rows, problem.clusters, problem.parent);
+  partition_islands(problem.state, problem.rows, problem.islands, problem.parent);
 }
 
 void store_impulses(const std::vector<ContactPoint>& rows, std::size_t contact_count,
@@ -151,8 +151,8 @@ void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>
   }
 }
 
-void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
-                        std::vector<ClusterRange>& clusters, std::vector<std::size_t>& parent)
+void partition_islands(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
+                        std::vector<IslandRange>& islands, std::vector<std::size_t>& parent)
 {
   parent.resize(state.size());
   for (std::size_t i = 0; i < parent.size(); ++i)
@@ -161,12 +161,12 @@ void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<Cont
     if (is_dynamic(state[row.a]) && is_dynamic(state[row.b]))
       unite(parent, row.a, row.b);
   for (ContactPoint& row : rows)
-    row.cluster = find_root(parent, is_dynamic(state[row.a]) ? row.a : row.b);
+    row.island = find_root(parent, is_dynamic(state[row.a]) ? row.a : row.b);
 
   // Contact index last makes the order total, so the solve is deterministic.
   std::sort(rows.begin(), rows.end(), [](const ContactPoint& l, const ContactPoint& r) {
-    if (l.cluster != r.cluster)
-      return l.cluster < r.cluster;
+    if (l.island != r.island)
+      return l.island < r.island;
     if (l.a != r.a)
       return l.a < r.a;
     if (l.b != r.b)
@@ -174,14 +174,14 @@ void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<Cont
     return l.contact < r.contact;
   });
 
-  clusters.clear();
-  clusters.reserve(rows.size());
+  islands.clear();
+  islands.reserve(rows.size());
   for (std::size_t begin = 0; begin < rows.size();)
   {
     std::size_t end = begin + 1;
-    while (end < rows.size() && rows[end].cluster == rows[begin].cluster)
+    while (end < rows.size() && rows[end].island == rows[begin].island)
       ++end;
-    clusters.push_back({begin, end});
+    islands.push_back({begin, end});
     begin = end;
   }
 }

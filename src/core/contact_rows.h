@@ -1,5 +1,5 @@
 // Internal to the core: ContactSolver's setup around the kernel: input
-// checks, the kernel points of a contact list, the coupled clusters they form,
+// checks, the kernel points of a contact list, the coupled islands they form,
 // and loading and storing the bodies' velocities.
 #pragma once
 
@@ -15,8 +15,8 @@ namespace collision2d
 {
 namespace detail
 {
-/// Rows [begin, end) of the solver's row list form one coupled cluster.
-struct ClusterRange
+/// Rows [begin, end) of the solver's row list form one coupled island.
+struct IslandRange
 {
   std::size_t begin = 0;
   std::size_t end = 0;
@@ -83,12 +83,12 @@ double total_kinetic_energy(const std::vector<Body>& bodies);
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
                 const std::vector<Contact>& contacts, double restitution, double mu, std::vector<ContactPoint>& rows);
 
-/// Reorders `rows` so each coupled cluster is contiguous (and, inside it, rows
-/// of the same pair are adjacent) and fills `clusters`. Only dynamic bodies
+/// Reorders `rows` so each coupled island is contiguous (and, inside it, rows
+/// of the same pair are adjacent) and fills `islands`. Only dynamic bodies
 /// couple: contacts that share just a static or kinematic body stay apart,
 /// because that body's velocity never changes. `parent` is working storage.
-void partition_clusters(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
-                        std::vector<ClusterRange>& clusters, std::vector<std::size_t>& parent);
+void partition_islands(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
+                        std::vector<IslandRange>& islands, std::vector<std::size_t>& parent);
 
 /// Everything a velocity solve works on, sized once per call so the
 /// iterations allocate nothing.
@@ -96,12 +96,12 @@ struct ContactProblem
 {
   std::vector<BodyVelocity> state;
   std::vector<ContactPoint> rows;
-  std::vector<ClusterRange> clusters;
+  std::vector<IslandRange> islands;
   std::vector<std::size_t> parent;  ///< union-find working storage
 };
 
 /// Loads the velocities, builds the rows with their fixed Newton targets and
-/// groups them into coupled clusters: the setup both solver modes share.
+/// groups them into coupled islands: the setup both solver modes share.
 void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>& contacts, double restitution,
                      double mu, ContactProblem& problem);
 

@@ -41,7 +41,7 @@ SolveReport ContactSolver::solve(std::vector<Body>& bodies, const std::vector<Co
   detail::validate_bodies(bodies);
   if (mode_ == SolverMode::Exact)
   {
-    // solve_exact leaves every body untouched when any cluster fails to pivot,
+    // solve_exact leaves every body untouched when any island fails to pivot,
     // so the iterative solve below starts from the same input.
     SolveReport exact = solve_exact(bodies, contacts, e_, mu_, tol_, impulses);
     if (!exact.exact_fallback)
@@ -65,11 +65,11 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
   detail::prepare_problem(bodies, contacts, e_, mu_, problem);
   std::vector<detail::BodyVelocity>& state = problem.state;
   std::vector<detail::ContactPoint>& rows = problem.rows;
-  report.cluster_count = problem.clusters.size();
+  report.island_count = problem.islands.size();
 
-  for (const detail::ClusterRange& cluster : problem.clusters)
+  for (const detail::IslandRange& island : problem.islands)
   {
-    const detail::ClusterResult result = detail::solve_cluster_pgs(rows, cluster, state, mu_, iterations_, tol_);
+    const detail::IslandResult result = detail::solve_island_pgs(rows, island, state, mu_, iterations_, tol_);
     report.iterations = std::max(report.iterations, result.sweeps);
     report.max_residual = std::max(report.max_residual, result.residual);
     report.converged = report.converged && result.converged;

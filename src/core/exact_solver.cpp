@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "contact_rows.h"
-#include "exact_cluster_lcp.h"
-#include "exact_cluster_solve.h"
+#include "exact_island_lcp.h"
+#include "exact_island_solve.h"
 
 namespace collision2d
 {
@@ -36,22 +36,22 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   detail::prepare_problem(bodies, contacts, e, mu, problem);
   std::vector<detail::BodyVelocity>& state = problem.state;
   std::vector<detail::ContactPoint>& rows = problem.rows;
-  const std::vector<detail::ClusterRange>& clusters = problem.clusters;
-  report.cluster_count = clusters.size();
+  const std::vector<detail::IslandRange>& islands = problem.islands;
+  report.island_count = islands.size();
 
-  // Every cluster is solved before any impulse is applied, so a failure
+  // Every island is solved before any impulse is applied, so a failure
   // leaves the bodies exactly as they came in.
-  detail::ClusterLcp lcp;
+  detail::IslandLcp lcp;
   lcp.local_body.assign(bodies.size(), -1);
-  std::vector<double> speed_before(clusters.size());
-  for (std::size_t c = 0; c < clusters.size(); ++c)
+  std::vector<double> speed_before(islands.size());
+  for (std::size_t c = 0; c < islands.size(); ++c)
   {
     int pivots = 0;
-    const bool solved = detail::solve_cluster(rows, clusters[c], state, lcp, pivots);
+    const bool solved = detail::solve_island(rows, islands[c], state, lcp, pivots);
     report.iterations = std::max(report.iterations, pivots);
     if (!solved)
       return failed_report(report, contacts.size(), impulses);
-    speed_before[c] = detail::contact_speed_scale(rows, clusters[c], state);
+    speed_before[c] = detail::contact_speed_scale(rows, islands[c], state);
   }
 
   // Applied to the working copy only: the bodies change once all is checked.
@@ -60,14 +60,14 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
     detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent(), state);
     report.total_normal_impulse += row.lambda_n;
   }
-  for (std::size_t c = 0; c < clusters.size(); ++c)
+  for (std::size_t c = 0; c < islands.size(); ++c)
   {
-    // Judged against the speeds the cluster actually involves: at a 1e6 mass
+    // Judged against the speeds the island actually involves: at a 1e6 mass
     // ratio the light body's velocity is a difference of impulse effects a
     // million times larger, and double precision is relative to those.
-    const double scale = std::max({speed_before[c], detail::contact_speed_scale(rows, clusters[c], state),
-                                   detail::impulse_speed_scale(rows, clusters[c])});
-    const double residual = detail::cluster_residual(rows, clusters[c], state);
+    const double scale = std::max({speed_before[c], detail::contact_speed_scale(rows, islands[c], state),
+                                   detail::impulse_speed_scale(rows, islands[c])});
+    const double residual = detail::island_residual(rows, islands[c], state);
     if (!(residual <= kTrustedResidual * scale))
       return failed_report(report, contacts.size(), impulses);
     report.max_residual = std::max(report.max_residual, residual);

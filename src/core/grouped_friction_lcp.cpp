@@ -27,19 +27,19 @@ struct Layout
   Eigen::Index size() const { return points + 3 * groups; }
 };
 
-Layout layout_of(ClusterRange cluster, const GroupedLcp& lcp)
+Layout layout_of(IslandRange island, const GroupedLcp& lcp)
 {
-  return Layout{static_cast<Eigen::Index>(cluster.end - cluster.begin), static_cast<Eigen::Index>(lcp.groups.size())};
+  return Layout{static_cast<Eigen::Index>(island.end - island.begin), static_cast<Eigen::Index>(lcp.groups.size())};
 }
 
-void find_groups(const std::vector<ContactPoint>& rows, ClusterRange cluster, GroupedLcp& lcp)
+void find_groups(const std::vector<ContactPoint>& rows, IslandRange island, GroupedLcp& lcp)
 {
   lcp.groups.clear();
-  for (std::size_t r = cluster.begin; r < cluster.end;)
+  for (std::size_t r = island.begin; r < island.end;)
   {
     FrictionGroup g;
     g.first = r;
-    g.count = r + 1 < cluster.end && rows[r + 1].a == rows[r].a && rows[r + 1].b == rows[r].b ? 2 : 1;
+    g.count = r + 1 < island.end && rows[r + 1].a == rows[r].a && rows[r + 1].b == rows[r].b ? 2 : 1;
     g.r_a = g.count == 2 ? 0.5 * (rows[r].r_a + rows[r + 1].r_a) : rows[r].r_a;
     g.r_b = g.count == 2 ? 0.5 * (rows[r].r_b + rows[r + 1].r_b) : rows[r].r_b;
     lcp.groups.push_back(g);
@@ -47,13 +47,13 @@ void find_groups(const std::vector<ContactPoint>& rows, ClusterRange cluster, Gr
   }
 }
 
-void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange cluster,
+void assemble_delassus(const std::vector<ContactPoint>& rows, IslandRange island,
                        const std::vector<BodyVelocity>& state, GroupedLcp& lcp, Layout layout)
 {
-  begin_jacobian(rows, cluster, state, layout.points + layout.groups, lcp);
+  begin_jacobian(rows, island, state, layout.points + layout.groups, lcp);
   for (Eigen::Index i = 0; i < layout.points; ++i)
   {
-    const ContactPoint& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[island.begin + i];
     add_jacobian_entry(lcp, i, row.b, 1.0, row.normal, row.r_b);
     add_jacobian_entry(lcp, i, row.a, -1.0, row.normal, row.r_a);
   }
@@ -64,12 +64,12 @@ void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange clust
     add_jacobian_entry(lcp, layout.points + g, row.b, 1.0, row.tangent(), group.r_b);
     add_jacobian_entry(lcp, layout.points + g, row.a, -1.0, row.tangent(), group.r_a);
   }
-  finish_jacobian(rows, cluster, lcp);
+  finish_jacobian(rows, island, lcp);
 }
 
 /// Unscaled M and q; beta couples with +1 into the tangent rows and the cone
 /// row reads mu sum(lambda_n) - lambda_t+ - lambda_t-.
-void fill_unscaled(const std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
+void fill_unscaled(const std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
                    GroupedLcp& lcp, Layout layout)
 {
   const Eigen::Index points = layout.points;
@@ -84,7 +84,7 @@ void fill_unscaled(const std::vector<ContactPoint>& rows, ClusterRange cluster, 
       -lcp.M.block(points, 0, groups, layout.size() - groups);
   for (Eigen::Index i = 0; i < points; ++i)
   {
-    const ContactPoint& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[island.begin + i];
     lcp.q(i) = dot(relative_velocity(row, state), row.normal) - row.target;
   }
   for (Eigen::Index g = 0; g < groups; ++g)
@@ -99,31 +99,31 @@ void fill_unscaled(const std::vector<ContactPoint>& rows, ClusterRange cluster, 
     lcp.M(layout.beta(g), layout.t_plus(g)) = -1.0;
     lcp.M(layout.beta(g), layout.t_minus(g)) = -1.0;
     for (std::size_t k = 0; k < group.count; ++k)
-      lcp.M(layout.beta(g), static_cast<Eigen::Index>(group.first + k - cluster.begin)) = cone(row);
+      lcp.M(layout.beta(g), static_cast<Eigen::Index>(group.first + k - island.begin)) = cone(row);
   }
 }
 
 }  // namespace
 
-std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster)
+std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, IslandRange island)
 {
   constexpr std::size_t kUnknownsPerGroup = 3;  // lambda_t+, lambda_t-, beta
   std::size_t unknowns = 0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  for (std::size_t r = island.begin; r < island.end; ++r)
   {
-    const bool new_pair = r == cluster.begin || rows[r - 1].a != rows[r].a || rows[r - 1].b != rows[r].b;
+    const bool new_pair = r == island.begin || rows[r - 1].a != rows[r].a || rows[r - 1].b != rows[r].b;
     unknowns += 1 + (new_pair ? kUnknownsPerGroup : 0);
   }
   return unknowns;
 }
 
-void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
+void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
                           const std::vector<BodyVelocity>& state, GroupedLcp& lcp)
 {
-  find_groups(rows, cluster, lcp);
-  const Layout layout = layout_of(cluster, lcp);
-  assemble_delassus(rows, cluster, state, lcp, layout);
-  fill_unscaled(rows, cluster, state, lcp, layout);
+  find_groups(rows, island, lcp);
+  const Layout layout = layout_of(island, lcp);
+  assemble_delassus(rows, island, state, lcp, layout);
+  fill_unscaled(rows, island, state, lcp, layout);
   lcp.scale.resize(layout.size());
   for (Eigen::Index i = 0; i < layout.points + layout.groups; ++i)
     lcp.scale(i) = 1.0 / std::sqrt(lcp.delassus(i, i));
@@ -133,12 +133,12 @@ void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, ClusterRange cl
   lcp.q = lcp.scale.cwiseProduct(lcp.q);
 }
 
-void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, ClusterRange cluster,
+void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, IslandRange island,
                             std::vector<ContactPoint>& rows)
 {
-  const Layout layout = layout_of(cluster, lcp);
+  const Layout layout = layout_of(island, lcp);
   for (Eigen::Index i = 0; i < layout.points; ++i)
-    rows[cluster.begin + i].lambda_n = z(i) * lcp.scale(i);
+    rows[island.begin + i].lambda_n = z(i) * lcp.scale(i);
   for (Eigen::Index g = 0; g < layout.groups; ++g)
   {
     const FrictionGroup& group = lcp.groups[g];
@@ -149,7 +149,7 @@ void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, Clu
     const double t_minus = z(layout.t_minus(g)) * lcp.scale(layout.t_minus(g));
     const double bound = cone(rows[group.first]) * normal_sum;
     const bool sliding = z(layout.beta(g)) > 0.0 && std::abs(t_plus - t_minus) >= kConeReached * bound;
-    // On the cone exactly when sliding (see store_cluster_impulses).
+    // On the cone exactly when sliding (see store_island_impulses).
     const double total =
         sliding ? (t_plus >= t_minus ? 1.0 : -1.0) * bound : t_plus - t_minus;
     for (std::size_t k = 0; k < group.count; ++k)

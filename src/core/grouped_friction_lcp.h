@@ -1,4 +1,4 @@
-// Internal to the core: a cluster's frictional LCP with one friction row per
+// Internal to the core: an island's frictional LCP with one friction row per
 // body pair instead of one per contact point (the World's exact mode).
 //
 // The two points of a manifold lie on one face and share its tangent; two
@@ -13,16 +13,16 @@
 #include <Eigen/Dense>
 #include <vector>
 
-#include "cluster_jacobian.h"
+#include "island_jacobian.h"
 #include "contact_rows.h"
-#include "exact_cluster_lcp.h"
+#include "exact_island_lcp.h"
 
 namespace collision2d
 {
 namespace detail
 {
 /// A friction group: the rows [first, first + count) of one body pair (count
-/// 1 or 2, adjacent after partition_clusters), sharing one friction row at
+/// 1 or 2, adjacent after partition_islands), sharing one friction row at
 /// the midpoint of their contact points, with the first row's mu.
 struct FrictionGroup
 {
@@ -32,16 +32,16 @@ struct FrictionGroup
   Vec2 r_b;
 };
 
-/// Work arrays of one cluster's grouped LCP.
+/// Work arrays of one island's grouped LCP.
 ///
 /// Unknowns: every point's lambda_n, then per group lambda_t+, lambda_t- and
 /// the sliding-speed slack beta. Rows complementary to them: vn - target;
 /// beta + vt and beta - vt at the group's midpoint; mu sum(lambda_n) -
 /// lambda_t+ - lambda_t-. Impulses are scaled by the square root of their
-/// row's inverse effective mass and beta by its inverse (as in ClusterLcp),
+/// row's inverse effective mass and beta by its inverse (as in IslandLcp),
 /// so the Delassus part has unit diagonal whatever the masses.
 /// The jacobian has the point normal rows, then the group tangent rows.
-struct GroupedLcp : ClusterJacobian
+struct GroupedLcp : IslandJacobian
 {
   std::vector<FrictionGroup> groups;
   Eigen::VectorXd scale;  ///< per unknown: impulse = scale * z (beta: speed = scale * z)
@@ -49,21 +49,21 @@ struct GroupedLcp : ClusterJacobian
   Eigen::VectorXd q;
 };
 
-/// Unknowns of the cluster's grouped LCP: one per point, three per body pair.
-std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster);
+/// Unknowns of the island's grouped LCP: one per point, three per body pair.
+std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, IslandRange island);
 
-/// Fills groups, M and q for rows [cluster.begin, cluster.end) at the
+/// Fills groups, M and q for rows [island.begin, island.end) at the
 /// pre-solve velocities in `state`.
-void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
+void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
                           const std::vector<BodyVelocity>& state, GroupedLcp& lcp);
 
 /// Writes solution z into the rows: lambda_n per point, the group's
 /// tangential impulse split in proportion to the normal impulses (each point
 /// inside its share of the cone), sliding when the group slides.
-void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, ClusterRange cluster,
+void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, IslandRange island,
                             std::vector<ContactPoint>& rows);
 
-/// Residual (m/s) of the solved cluster at `state` (the velocities after the
+/// Residual (m/s) of the solved island at `state` (the velocities after the
 /// impulses): per point the normal part of row_residual, per group its
 /// friction part at the midpoint against the group's summed impulses.
 double grouped_residual(const std::vector<ContactPoint>& rows, const GroupedLcp& lcp,

@@ -12,15 +12,15 @@ namespace
 {
 bool same_pair(const ContactPoint& l, const ContactPoint& r) { return l.a == r.a && l.b == r.b; }
 
-/// One pass over the cluster; returns whether any impulse changed.
-bool sweep(std::vector<ContactPoint>& rows, ClusterRange cluster, std::vector<BodyVelocity>& state, double mu)
+/// One pass over the island; returns whether any impulse changed.
+bool sweep(std::vector<ContactPoint>& rows, IslandRange island, std::vector<BodyVelocity>& state, double mu)
 {
   bool changed = false;
-  for (std::size_t i = cluster.begin; i < cluster.end;)
+  for (std::size_t i = island.begin; i < island.end;)
   {
     // Rows of one pair are adjacent; exactly two of them form a manifold.
-    const bool manifold = i + 1 < cluster.end && same_pair(rows[i], rows[i + 1]) &&
-                          (i + 2 == cluster.end || !same_pair(rows[i], rows[i + 2]));
+    const bool manifold = i + 1 < island.end && same_pair(rows[i], rows[i + 1]) &&
+                          (i + 2 == island.end || !same_pair(rows[i], rows[i + 2]));
     const std::size_t count = manifold ? 2 : 1;
     if (!manifold || !solve_normal_block(rows[i], rows[i + 1], state, changed))
       for (std::size_t k = i; k < i + count; ++k)
@@ -33,26 +33,26 @@ bool sweep(std::vector<ContactPoint>& rows, ClusterRange cluster, std::vector<Bo
   return changed;
 }
 
-double cluster_residual(const std::vector<ContactPoint>& rows, ClusterRange cluster,
+double island_residual(const std::vector<ContactPoint>& rows, IslandRange island,
                         const std::vector<BodyVelocity>& state, double mu)
 {
   double residual = 0.0;
-  for (std::size_t i = cluster.begin; i < cluster.end; ++i)
+  for (std::size_t i = island.begin; i < island.end; ++i)
     residual = std::max(residual, point_residual(rows[i], state, mu));
   return residual;
 }
 }  // namespace
 
-ClusterResult solve_cluster_pgs(std::vector<ContactPoint>& rows, ClusterRange cluster,
+IslandResult solve_island_pgs(std::vector<ContactPoint>& rows, IslandRange island,
                                 std::vector<BodyVelocity>& state, double mu, int max_sweeps, double tol)
 {
-  ClusterResult result;
+  IslandResult result;
   result.residual = std::numeric_limits<double>::infinity();
   while (result.sweeps < max_sweeps)
   {
-    const bool changed = sweep(rows, cluster, state, mu);
+    const bool changed = sweep(rows, island, state, mu);
     ++result.sweeps;
-    result.residual = cluster_residual(rows, cluster, state, mu);
+    result.residual = island_residual(rows, island, state, mu);
     if (result.residual < tol)
     {
       result.converged = true;

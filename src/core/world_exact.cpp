@@ -1,7 +1,7 @@
 // SolverMode::Exact: each island of the substep's contacts (dynamic bodies
 // linked by contacts; static and kinematic bodies do not link) is solved as
 // one linear complementarity problem by pivoting, with the machinery of the
-// exact ContactSolver mode (exact_cluster_solve.h).
+// exact ContactSolver mode (exact_island_solve.h).
 //
 // Velocities: the world's per-contact Newton targets and Coulomb cones. Which
 // friction coefficient: the LCP has one cone per contact, and the world's
@@ -31,7 +31,7 @@
 #include "collision2d/exact_solver.h"
 #include "world_impl.h"
 #include "contact_rows.h"
-#include "exact_cluster_solve.h"
+#include "exact_island_solve.h"
 #include "grouped_friction_lcp.h"
 
 namespace collision2d
@@ -46,9 +46,9 @@ struct ExactIslands
 {
   std::vector<detail::BodyVelocity> state;
   std::vector<detail::ContactPoint> rows;
-  std::vector<detail::ClusterRange> clusters;
+  std::vector<detail::IslandRange> islands;
   std::vector<std::size_t> parent;
-  detail::ClusterLcp lcp;
+  detail::IslandLcp lcp;
   detail::GroupedLcp grouped;
 };
 
@@ -92,38 +92,38 @@ void build_islands(const std::vector<detail::BodyVelocity>& velocity, const std:
     }
     out.rows.push_back(copy);
   }
-  detail::partition_clusters(out.state, out.rows, out.clusters, out.parent);
+  detail::partition_islands(out.state, out.rows, out.islands, out.parent);
   out.lcp.local_body.assign(velocity.size(), -1);
 }
 
 /// Pivots the island's velocity LCP and stores the impulses in its rows;
 /// false when pivoting failed or the island is too large. With friction the
 /// grouped form is used (grouped_friction_lcp.h).
-bool pivot_velocity_island(ExactIslands& islands, detail::ClusterRange cluster)
+bool pivot_velocity_island(ExactIslands& islands, detail::IslandRange island)
 {
   int pivots = 0;
-  if (!detail::cluster_has_friction(islands.rows, cluster))
+  if (!detail::island_has_friction(islands.rows, island))
   {
-    return detail::solve_cluster(islands.rows, cluster, islands.state, islands.lcp, pivots);
+    return detail::solve_island(islands.rows, island, islands.state, islands.lcp, pivots);
   }
-  if (detail::grouped_unknowns(islands.rows, cluster) > kMaxExactUnknowns)
+  if (detail::grouped_unknowns(islands.rows, island) > kMaxExactUnknowns)
   {
     return false;
   }
-  detail::assemble_grouped_lcp(islands.rows, cluster, islands.state, islands.grouped);
+  detail::assemble_grouped_lcp(islands.rows, island, islands.state, islands.grouped);
   const LcpResult result = detail::pivot_with_retry(islands.grouped.M, islands.grouped.q, pivots);
   if (result.solved())
   {
-    detail::store_grouped_impulses(result.z, islands.grouped, cluster, islands.rows);
+    detail::store_grouped_impulses(result.z, islands.grouped, island, islands.rows);
   }
   return result.solved();
 }
 
-double island_residual(const ExactIslands& islands, detail::ClusterRange cluster)
+double island_residual(const ExactIslands& islands, detail::IslandRange island)
 {
-  return detail::cluster_has_friction(islands.rows, cluster)
+  return detail::island_has_friction(islands.rows, island)
              ? detail::grouped_residual(islands.rows, islands.grouped, islands.state)
-             : detail::cluster_residual(islands.rows, cluster, islands.state);
+             : detail::island_residual(islands.rows, island, islands.state);
 }
 
 /// Velocity solve of one island: impulses in the rows and velocities in
@@ -131,25 +131,25 @@ double island_residual(const ExactIslands& islands, detail::ClusterRange cluster
 /// The residual recomputed from the velocities must be round-off of the
 /// speeds involved, as in solve_exact.
 bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, ExactIslands& islands,
-                           detail::ClusterRange cluster)
+                           detail::IslandRange island)
 {
-  if (!pivot_velocity_island(islands, cluster))
+  if (!pivot_velocity_island(islands, island))
   {
     return false;
   }
-  const double speed_before = detail::contact_speed_scale(islands.rows, cluster, islands.state);
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  const double speed_before = detail::contact_speed_scale(islands.rows, island, islands.state);
+  for (std::size_t r = island.begin; r < island.end; ++r)
   {
     const detail::ContactPoint& row = islands.rows[r];
     detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent(), islands.state);
   }
-  const double scale = std::max({speed_before, detail::contact_speed_scale(islands.rows, cluster, islands.state),
-                                 detail::impulse_speed_scale(islands.rows, cluster)});
-  if (island_residual(islands, cluster) <= kTrustedResidual * scale)
+  const double scale = std::max({speed_before, detail::contact_speed_scale(islands.rows, island, islands.state),
+                                 detail::impulse_speed_scale(islands.rows, island)});
+  if (island_residual(islands, island) <= kTrustedResidual * scale)
   {
     return true;
   }
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  for (std::size_t r = island.begin; r < island.end; ++r)
   {
     for (std::size_t i : {islands.rows[r].a, islands.rows[r].b})
     {
@@ -168,11 +168,11 @@ void WorldImpl::solve_exact_islands(StepReport& report, const std::vector<double
   // hold just what that pass pushes, not the substep's load.
   ExactIslands islands;
   build_islands(velocity_, points_, !add, targets, islands);
-  for (const detail::ClusterRange& cluster : islands.clusters)
+  for (const detail::IslandRange& island : islands.islands)
   {
-    const bool solved = solve_velocity_island(velocity_, islands, cluster);
+    const bool solved = solve_velocity_island(velocity_, islands, island);
     ++(solved ? report.exact_islands : report.exact_fallbacks);
-    for (std::size_t r = cluster.begin; solved && r < cluster.end; ++r)
+    for (std::size_t r = island.begin; solved && r < island.end; ++r)
     {
       const detail::ContactPoint& row = islands.rows[r];
       ContactPoint& w = points_[row.contact];
@@ -193,20 +193,20 @@ void WorldImpl::solve_position_islands(double softness, StepReport& report)
 {
   ExactIslands islands;
   build_islands(velocity_, points_, false, nullptr, islands);
-  detail::ClusterLcp& lcp = islands.lcp;
-  for (const detail::ClusterRange& cluster : islands.clusters)
+  detail::IslandLcp& lcp = islands.lcp;
+  for (const detail::IslandRange& island : islands.islands)
   {
-    if (detail::cluster_unknowns(islands.rows, cluster) > kMaxExactUnknowns)
+    if (detail::island_unknowns(islands.rows, island) > kMaxExactUnknowns)
     {
       ++report.exact_fallbacks;
       continue;
     }
     // The frictionless velocity LCP's matrix is the position problem's too;
     // only the right-hand side (depths left) and the compliance differ.
-    detail::assemble_cluster_lcp(islands.rows, cluster, islands.state, lcp);
-    for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+    detail::assemble_island_lcp(islands.rows, island, islands.state, lcp);
+    for (std::size_t r = island.begin; r < island.end; ++r)
     {
-      const Eigen::Index i = static_cast<Eigen::Index>(r - cluster.begin);
+      const Eigen::Index i = static_cast<Eigen::Index>(r - island.begin);
       const double scale = 1.0 / std::sqrt(islands.rows[r].k_n);
       lcp.q(i) = -(current_depth(points_[islands.rows[r].contact]) - settings_.slop) * scale;
       lcp.M(i, i) += softness * scale * scale;
@@ -214,9 +214,9 @@ void WorldImpl::solve_position_islands(double softness, StepReport& report)
     int pivots = 0;
     const LcpResult result = detail::pivot_with_retry(lcp.M, lcp.q, pivots);
     ++(result.solved() ? report.exact_islands : report.exact_fallbacks);
-    for (std::size_t r = cluster.begin; result.solved() && r < cluster.end; ++r)
+    for (std::size_t r = island.begin; result.solved() && r < island.end; ++r)
     {
-      const Eigen::Index i = static_cast<Eigen::Index>(r - cluster.begin);
+      const Eigen::Index i = static_cast<Eigen::Index>(r - island.begin);
       ContactPoint& w = points_[islands.rows[r].contact];
       const double lambda = result.z(i) / std::sqrt(islands.rows[r].k_n);
       displace(w.a, -lambda, w.normal, w.r_a, w.inv_mass_a, w.inv_inertia_a);

@@ -68,7 +68,7 @@ SolverReport solver_report_to_msg(const SolveReport& report, const Totals& befor
   msg.converged = report.converged;
   msg.exact_fallback = report.exact_fallback;
   msg.contact_count = static_cast<std::uint32_t>(report.contact_count);
-  msg.cluster_count = static_cast<std::uint32_t>(report.cluster_count);
+  msg.island_count = static_cast<std::uint32_t>(report.island_count);
   fill_totals(msg, before, after);
   return msg;
 }

@@ -32,9 +32,9 @@ constexpr double kChainWander = 0.5;
 /// hints are tried before the least overlapping one is kept.
 constexpr double kMaxIncidentalOverlap = 0.1;
 constexpr int kPlacementTries = 16;
-/// Spacing between the two clusters of a two-cluster scene, in units of the
+/// Spacing between the two islands of a two-island scene, in units of the
 /// largest body size per body: far enough that they never touch.
-constexpr double kClusterSpacingPerBody = 4.0;
+constexpr double kIslandSpacingPerBody = 4.0;
 /// Chances that e is exactly 0 or exactly 1, and that mu is exactly 0.
 constexpr double kPerfectlyPlasticProbability = 0.2;
 constexpr double kPerfectlyElasticProbability = 0.2;
@@ -218,8 +218,8 @@ void choose_attachment(Draw& draw, RandomLayout layout, Vec2 axis, std::size_t b
   }
 }
 
-/// Lays out bodies [begin, end) as one cluster whose first body sits at `origin`.
-void lay_out_cluster(Draw& draw, const RandomSceneOptions& options, RandomLayout layout, Vec2 origin,
+/// Lays out bodies [begin, end) as one island whose first body sits at `origin`.
+void lay_out_island(Draw& draw, const RandomSceneOptions& options, RandomLayout layout, Vec2 origin,
                      std::vector<Body>& bodies, std::size_t begin, std::size_t end)
 {
   bodies[begin].set_position(origin);
@@ -283,12 +283,12 @@ RandomScene RandomSceneGenerator::next()
     scene.bodies.push_back(random_body(draw, options_));
 
   const std::size_t n = scene.bodies.size();
-  const bool two_clusters = n >= 4 && draw.chance(options_.second_cluster_probability);
-  const std::size_t split = two_clusters ? n / 2 : n;
-  const double spacing = kClusterSpacingPerBody * options_.max_size * static_cast<double>(n);
-  lay_out_cluster(draw, options_, scene.layout, Vec2{}, scene.bodies, 0, split);
-  if (two_clusters)
-    lay_out_cluster(draw, options_, scene.layout, Vec2{spacing, 0.0}, scene.bodies, split, n);
+  const bool two_islands = n >= 4 && draw.chance(options_.second_island_probability);
+  const std::size_t split = two_islands ? n / 2 : n;
+  const double spacing = kIslandSpacingPerBody * options_.max_size * static_cast<double>(n);
+  lay_out_island(draw, options_, scene.layout, Vec2{}, scene.bodies, 0, split);
+  if (two_islands)
+    lay_out_island(draw, options_, scene.layout, Vec2{spacing, 0.0}, scene.bodies, split, n);
 
   if (draw.chance(options_.static_probability))
   {

@@ -36,7 +36,7 @@ constexpr std::uint32_t kMaxFramesPerStep = 3;    ///< a client's k-th step asks
 constexpr double kServiceWait = 30.0;             ///< s, node start-up under a loaded machine
 constexpr double kMomentumTolerance = 1e-9;       ///< relative to the momentum scale of the scene
 constexpr std::uint64_t kSeedBase = 20240917;
-constexpr int kMinSceneBodies = 10;   ///< per request; multi-contact clusters
+constexpr int kMinSceneBodies = 10;   ///< per request; multi-contact islands
 constexpr int kMaxSceneBodies = 100;
 
 scenes::RandomSceneOptions scene_options()

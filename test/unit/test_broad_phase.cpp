@@ -209,7 +209,7 @@ TEST(BroadPhase, MixedSizesWithHugeGroundAndWalls)
   }
 }
 
-TEST(BroadPhase, ClusterInsideOneCellOfLargerBodies)
+TEST(BroadPhase, CrowdInsideOneCellOfLargerBodies)
 {
   // Most boxes are 1 m wide (so the cells are), and 200 tiny ones crowd into
   // a 0.4 m patch: one cell holds them all, only some of them overlap.
@@ -231,7 +231,7 @@ TEST(BroadPhase, ClusterInsideOneCellOfLargerBodies)
   broad_phase.find_pairs(boxes, pairs);
   const std::vector<BodyPair> want = brute_force(boxes);
   EXPECT_EQ(pairs, want);
-  EXPECT_LT(want.size(), 900u * 899u / 4u) << "the cluster should not be all-overlapping";
+  EXPECT_LT(want.size(), 900u * 899u / 4u) << "the crowd should not be all-overlapping";
 }
 
 TEST(BroadPhase, EveryBoxInOneSpotPairsWithAll)

@@ -41,7 +41,7 @@ TEST(ExactSolver, SpecThreeDisksReachTheFixedPoint)
   EXPECT_NEAR(out.report.total_normal_impulse, 1.9, 1e-14);
   EXPECT_TRUE(out.report.converged);
   EXPECT_FALSE(out.report.exact_fallback);
-  EXPECT_EQ(out.report.cluster_count, 1u);
+  EXPECT_EQ(out.report.island_count, 1u);
   EXPECT_EQ(out.report.contact_count, 2u);
   EXPECT_GE(out.report.iterations, 1);
   EXPECT_LE(out.report.max_residual, 1e-15);

@@ -85,8 +85,8 @@ void check_large_scene(long full, long reduced)
   const long bound = (kBaseKib + kKibPerBody * static_cast<long>(scene.bodies.size())) *
                      (test::sanitizer_build() ? kSanitizerMemoryFactor : 1);
   EXPECT_LE(peak, bound);
-  std::printf("%zu bodies: %d frames, %zu world contacts, %zu solver contacts in %zu clusters\n",
-              scene.bodies.size(), kFrames, report.contact_count, solve.contact_count, solve.cluster_count);
+  std::printf("%zu bodies: %d frames, %zu world contacts, %zu solver contacts in %zu islands\n",
+              scene.bodies.size(), kFrames, report.contact_count, solve.contact_count, solve.island_count);
   test::print_figure("peak resident memory so far, VmHWM (KiB)", static_cast<double>(peak),
                      static_cast<double>(bound));
 }

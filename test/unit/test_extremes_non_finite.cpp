@@ -277,7 +277,7 @@ TEST(ExtremesNonFinite, SceneYamlNamesTheKey)
   }
 }
 
-// Finite in, finite out: random clustered scenes (the solver soak's
+// Finite in, finite out: random multi-contact scenes (the solver soak's
 // generator) through resolve, step and a few world frames.
 TEST(ExtremesNonFinite, RandomSoakGivesFiniteOutput)
 {

@@ -1,5 +1,5 @@
 // Randomized soak of the velocity solve: thousands of mixed disk/polygon scenes
-// with multi-contact clusters, detected by detect_contacts and solved, then
+// with multi-contact islands, detected by detect_contacts and solved, then
 // checked against the contract recomputed from the bodies and impulses that
 // come back (momentum, Newton targets, complementarity, Coulomb, energy).
 #include <gtest/gtest.h>
@@ -52,7 +52,7 @@ struct SoakStats
   int energy_rose = 0;  ///< scenes where an initially non-approaching contact pushed and energy rose
   int energy_rose_by_friction = 0;  ///< frictional scenes without such a contact where energy rose
   std::size_t contacts = 0;
-  std::size_t coupled_clusters = 0;  ///< scenes' contacts minus clusters: rows sharing a cluster
+  std::size_t coupled_islands = 0;  ///< scenes' contacts minus islands: rows sharing an island
   int max_sweeps = 0;
   long total_sweeps = 0;
   double max_momentum_error = 0.0;        ///< relative
@@ -194,20 +194,20 @@ bool check_energy(const SoakCase& s, const std::vector<Body>& after, const std::
 void print(const SoakStats& st)
 {
   std::printf(
-      "[soak] scenes %d, contacts %zu (rows sharing a cluster %zu), converged %d/%d, sweeps max %d total %ld\n"
+      "[soak] scenes %d, contacts %zu (rows sharing an island %zu), converged %d/%d, sweeps max %d total %ld\n"
       "[soak] largest relative momentum error %.3e, angular momentum %.3e (over %d scenes without static bodies)\n"
       "[soak] converged scenes: largest Newton-target violation %.3e m/s, complementarity %.3e m/s, friction "
       "residual %.3e m/s\n"
       "[soak] scenes at the cap (all frictional): largest recomputed residual %.3e m/s\n"
       "[soak] energy non-increase checked in %d scenes; %d scenes gained energy via a pushed non-approaching "
       "contact, %d frictional scenes without one; energy identity error %.3e\n",
-      st.scenes, st.contacts, st.coupled_clusters, st.converged, st.scenes, st.max_sweeps, st.total_sweeps,
+      st.scenes, st.contacts, st.coupled_islands, st.converged, st.scenes, st.max_sweeps, st.total_sweeps,
       st.max_momentum_error, st.max_angular_momentum_error, st.momentum_checked, st.max_target_violation,
       st.max_complementarity, st.max_friction_residual, st.max_unconverged_residual, st.energy_checked, st.energy_rose, st.energy_rose_by_friction,
       st.max_energy_identity_error);
 }
 
-TEST(SolverSoak, RandomClustersSatisfyTheContactContract)
+TEST(SolverSoak, RandomIslandsSatisfyTheContactContract)
 {
   scenes::RandomSceneOptions options;
   options.static_probability = kStaticBodyProbability;
@@ -226,7 +226,7 @@ TEST(SolverSoak, RandomClustersSatisfyTheContactContract)
     ASSERT_TRUE(all_finite(after));
     ASSERT_EQ(impulses.size(), s.contacts.size());
     // Projected Gauss-Seidel provably converges without friction; with
-    // Coulomb friction it can cycle in rare clusters (counted, bounded below).
+    // Coulomb friction it can cycle in rare islands (counted, bounded below).
     if (s.mu == 0.0)
     {
       EXPECT_TRUE(report.converged) << "residual " << report.max_residual << " after " << report.iterations;
@@ -235,7 +235,7 @@ TEST(SolverSoak, RandomClustersSatisfyTheContactContract)
     stats.scenes += 1;
     stats.converged += report.converged ? 1 : 0;
     stats.contacts += s.contacts.size();
-    stats.coupled_clusters += s.contacts.size() - report.cluster_count;
+    stats.coupled_islands += s.contacts.size() - report.island_count;
     stats.max_sweeps = std::max(stats.max_sweeps, report.iterations);
     stats.total_sweeps += report.iterations;
     check_momentum(s.before, after, impulses, stats);
@@ -243,9 +243,9 @@ TEST(SolverSoak, RandomClustersSatisfyTheContactContract)
     check_energy(s, after, impulses, stats);
   }
   print(stats);
-  // The soak must exercise what it claims to: coupled clusters and the
+  // The soak must exercise what it claims to: coupled islands and the
   // energy-rise exception as well as the guaranteed non-increase.
-  EXPECT_GT(stats.coupled_clusters, static_cast<std::size_t>(kScenes));
+  EXPECT_GT(stats.coupled_islands, static_cast<std::size_t>(kScenes));
   EXPECT_GT(stats.energy_checked, kScenes / 20);
   EXPECT_GT(stats.momentum_checked, kScenes / 2);
   EXPECT_GE(stats.converged, kScenes - kScenes / kMaxUnconvergedFraction);

@@ -196,7 +196,7 @@ TEST_P(WorldGolden, TrajectoryHashIsPinned)
   EXPECT_EQ(hash, g.expected) << g.name;
 }
 
-/// ContactSolver's entry points on the soak's random clusters: resolve and
+/// ContactSolver's entry points on the soak's random islands: resolve and
 /// step in both modes, hashed over every body and the report.
 std::uint64_t contact_solver_hash(SolverMode mode, bool step)
 {

@@ -1,5 +1,5 @@
 // Deterministic random scenes of disks and convex polygons arranged in
-// multi-contact clusters (chains, stars, piles) with slight overlaps: the
+// multi-contact islands (chains, stars, piles) with slight overlaps: the
 // shared input of the solver soak tests and the benchmarks. The same seed
 // gives the same draws with every standard library (the distributions are
 // mapped here from the raw engine output, not taken from <random>, whose
@@ -31,7 +31,7 @@ struct RandomSceneOptions
   double max_mass_ratio = 100.0;        ///< masses are log-uniform in [base, base * ratio]
   double max_speed = 2.0;               ///< m/s
   double max_spin = 2.0;                ///< rad/s
-  double second_cluster_probability = 0.25;  ///< chance the bodies form two far-apart clusters
+  double second_island_probability = 0.25;  ///< chance the bodies form two far-apart islands
   double static_probability = 0.0;      ///< chance the first body is static (zero velocity)
 };
 

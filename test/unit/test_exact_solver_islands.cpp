@@ -1,6 +1,6 @@
-// Exact (pivoting) contact solve on clusters: stacks at extreme mass ratios,
-// infeasible and oversized clusters falling back, clusters coupled only through
-// dynamic bodies, and random clusters, each against the solver's contract.
+// Exact (pivoting) contact solve on islands: stacks at extreme mass ratios,
+// infeasible and oversized islands falling back, islands coupled only through
+// dynamic bodies, and random islands, each against the solver's contract.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -112,9 +112,9 @@ TEST(ExactSolver, InfeasiblePinchFallsBackWithoutTouchingBodies)
   EXPECT_EQ(report.kinetic_energy_after, report.kinetic_energy_before);
 }
 
-TEST(ExactSolver, OversizedClusterFallsBackAndSmallerOnesSolve)
+TEST(ExactSolver, OversizedIslandFallsBackAndSmallerOnesSolve)
 {
-  // A touching row of disks: one cluster of n - 1 contacts, 4 unknowns each
+  // A touching row of disks: one island of n - 1 contacts, 4 unknowns each
   // with friction. Above kMaxExactUnknowns the call reports failure at once.
   const std::size_t n = kMaxExactUnknowns / 4 + 2;
   std::vector<Body> bodies;
@@ -136,10 +136,10 @@ TEST(ExactSolver, OversizedClusterFallsBackAndSmallerOnesSolve)
   expect_contract(bodies, smooth.bodies, contacts, smooth.impulses, 1.0, 0.0, kContractTol);
 }
 
-TEST(ExactSolver, StaticBodiesDoNotCoupleClustersAndKinematicOnesKeepTheirVelocity)
+TEST(ExactSolver, StaticBodiesDoNotCoupleIslandsAndKinematicOnesKeepTheirVelocity)
 {
-  // Two disks on one static floor (two clusters), a kinematic paddle hitting
-  // a third disk (one cluster), and a contact between floor and paddle (no
+  // Two disks on one static floor (two islands), a kinematic paddle hitting
+  // a third disk (one island), and a contact between floor and paddle (no
   // dynamic body: no impulse).
   std::vector<Body> bodies = {static_box(10.0, 0.5, {0, -0.5}), disk(1.0, 0.5, {-3, 0.5}, {0, -1}),
                               disk(2.0, 0.5, {3, 0.5}, {0, -2}), box(1.0, 0.5, 0.5, {6, 0.5}, {-1, 0}),
@@ -149,7 +149,7 @@ TEST(ExactSolver, StaticBodiesDoNotCoupleClustersAndKinematicOnesKeepTheirVeloci
       make_contact(0, 1, {0, 1}, {-3, 0}, 0.0), make_contact(0, 2, {0, 1}, {3, 0}, 0.0),
       make_contact(0, 3, {0, 1}, {6, 0}, 0.0), make_contact(3, 4, {-1, 0}, {5.5, 0.5}, 0.0)};
   const Outcome out = solve(bodies, contacts, 0.5, 0.0);
-  EXPECT_EQ(out.report.cluster_count, 3u);
+  EXPECT_EQ(out.report.island_count, 3u);
   EXPECT_EQ(out.impulses[2].normal, 0.0);
   EXPECT_EQ(out.bodies[3].velocity(), bodies[3].velocity());
   EXPECT_NEAR(out.bodies[1].velocity().y, 0.5, 1e-15);
@@ -169,7 +169,7 @@ bool only_approaching_contacts_push(const std::vector<Body>& before, const std::
   return true;
 }
 
-TEST(ExactSolver, RandomClustersHonourTheContract)
+TEST(ExactSolver, RandomIslandsHonourTheContract)
 {
   scenes::RandomSceneOptions options;
   options.max_bodies = 12;

@@ -1,4 +1,4 @@
-#include "exact_cluster_solve.h"
+#include "exact_island_solve.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@ namespace detail
 namespace
 {
 /// A second pivoting run after a failure, with tolerances that treat more
-/// near-zero tableau entries as zero: on clusters with many redundant
+/// near-zero tableau entries as zero: on islands with many redundant
 /// contacts round-off can steer the first run into a false ray.
 LemkeSettings conservative_settings()
 {
@@ -35,25 +35,25 @@ LcpResult pivot_with_retry(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, i
   return result;
 }
 
-bool solve_cluster(std::vector<ContactPoint>& rows, ClusterRange cluster, const std::vector<BodyVelocity>& state,
-                   ClusterLcp& lcp, int& pivots)
+bool solve_island(std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
+                   IslandLcp& lcp, int& pivots)
 {
   pivots = 0;
-  if (cluster_unknowns(rows, cluster) > kMaxExactUnknowns)
+  if (island_unknowns(rows, island) > kMaxExactUnknowns)
     return false;
-  assemble_cluster_lcp(rows, cluster, state, lcp);
+  assemble_island_lcp(rows, island, state, lcp);
   const LcpResult result = pivot_with_retry(lcp.M, lcp.q, pivots);
   if (!result.solved())
     return false;
-  store_cluster_impulses(result.z, cluster, rows);
+  store_island_impulses(result.z, island, rows);
   return true;
 }
 
-double contact_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange cluster,
+double contact_speed_scale(const std::vector<ContactPoint>& rows, IslandRange island,
                            const std::vector<BodyVelocity>& state)
 {
   double scale = 0.0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  for (std::size_t r = island.begin; r < island.end; ++r)
   {
     const Vec2 dv = relative_velocity(rows[r], state);
     scale = std::max({scale, std::abs(dot(dv, rows[r].normal)), std::abs(dot(dv, rows[r].tangent())),
@@ -62,19 +62,19 @@ double contact_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange c
   return scale;
 }
 
-double impulse_speed_scale(const std::vector<ContactPoint>& rows, ClusterRange cluster)
+double impulse_speed_scale(const std::vector<ContactPoint>& rows, IslandRange island)
 {
   double scale = 0.0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  for (std::size_t r = island.begin; r < island.end; ++r)
     scale = std::max({scale, rows[r].lambda_n * rows[r].k_n, std::abs(rows[r].lambda_t) * rows[r].k_t});
   return scale;
 }
 
-double cluster_residual(const std::vector<ContactPoint>& rows, ClusterRange cluster,
+double island_residual(const std::vector<ContactPoint>& rows, IslandRange island,
                         const std::vector<BodyVelocity>& state)
 {
   double residual = 0.0;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  for (std::size_t r = island.begin; r < island.end; ++r)
     residual = std::max(residual, point_residual(rows[r], state, cone(rows[r])));
   return residual;
 }

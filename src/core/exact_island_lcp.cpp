@@ -1,4 +1,4 @@
-#include "exact_cluster_lcp.h"
+#include "exact_island_lcp.h"
 
 #include <cmath>
 
@@ -8,54 +8,54 @@ namespace detail
 {
 namespace
 {
-/// G = J W J^T over the cluster's normal and tangent directions.
-void assemble_delassus(const std::vector<ContactPoint>& rows, ClusterRange cluster,
-                       const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+/// G = J W J^T over the island's normal and tangent directions.
+void assemble_delassus(const std::vector<ContactPoint>& rows, IslandRange island,
+                       const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
-  const Eigen::Index contacts = static_cast<Eigen::Index>(cluster.end - cluster.begin);
-  begin_jacobian(rows, cluster, state, 2 * contacts, lcp);
+  const Eigen::Index contacts = static_cast<Eigen::Index>(island.end - island.begin);
+  begin_jacobian(rows, island, state, 2 * contacts, lcp);
   for (Eigen::Index i = 0; i < contacts; ++i)
   {
-    const ContactPoint& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[island.begin + i];
     add_jacobian_entry(lcp, 2 * i, row.b, 1.0, row.normal, row.r_b);
     add_jacobian_entry(lcp, 2 * i, row.a, -1.0, row.normal, row.r_a);
     add_jacobian_entry(lcp, 2 * i + 1, row.b, 1.0, row.tangent(), row.r_b);
     add_jacobian_entry(lcp, 2 * i + 1, row.a, -1.0, row.tangent(), row.r_a);
   }
-  finish_jacobian(rows, cluster, lcp);
+  finish_jacobian(rows, island, lcp);
 }
 
-void assemble_frictionless(const std::vector<ContactPoint>& rows, ClusterRange cluster,
-                           const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+void assemble_frictionless(const std::vector<ContactPoint>& rows, IslandRange island,
+                           const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
-  const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
+  const Eigen::Index m = static_cast<Eigen::Index>(island.end - island.begin);
   lcp.M.resize(m, m);
   lcp.q.resize(m);
   for (Eigen::Index i = 0; i < m; ++i)
   {
-    const ContactPoint& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[island.begin + i];
     const double s_i = 1.0 / std::sqrt(row.k_n);
     for (Eigen::Index j = 0; j < m; ++j)
-      lcp.M(i, j) = lcp.delassus(2 * i, 2 * j) * s_i / std::sqrt(rows[cluster.begin + j].k_n);
+      lcp.M(i, j) = lcp.delassus(2 * i, 2 * j) * s_i / std::sqrt(rows[island.begin + j].k_n);
     lcp.q(i) = (dot(relative_velocity(row, state), row.normal) - row.target) * s_i;
   }
 }
 
-void assemble_frictional(const std::vector<ContactPoint>& rows, ClusterRange cluster,
-                         const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+void assemble_frictional(const std::vector<ContactPoint>& rows, IslandRange island,
+                         const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
-  const Eigen::Index m = static_cast<Eigen::Index>(cluster.end - cluster.begin);
+  const Eigen::Index m = static_cast<Eigen::Index>(island.end - island.begin);
   const Eigen::Index k = kFrictionalUnknowns;
   lcp.M.setZero(k * m, k * m);
   lcp.q.resize(k * m);
   for (Eigen::Index i = 0; i < m; ++i)
   {
-    const ContactPoint& row = rows[cluster.begin + i];
+    const ContactPoint& row = rows[island.begin + i];
     const double s_i = 1.0 / std::sqrt(row.k_n);
     const Eigen::Index n_i = k * i;  // then t+ at n_i + 1, t- at n_i + 2, beta at n_i + 3
     for (Eigen::Index j = 0; j < m; ++j)
     {
-      const double scale = s_i / std::sqrt(rows[cluster.begin + j].k_n);
+      const double scale = s_i / std::sqrt(rows[island.begin + j].k_n);
       const double g_nn = lcp.delassus(2 * i, 2 * j) * scale;
       const double g_nt = lcp.delassus(2 * i, 2 * j + 1) * scale;
       const double g_tn = lcp.delassus(2 * i + 1, 2 * j) * scale;
@@ -83,37 +83,37 @@ void assemble_frictional(const std::vector<ContactPoint>& rows, ClusterRange clu
 }
 }  // namespace
 
-bool cluster_has_friction(const std::vector<ContactPoint>& rows, ClusterRange cluster)
+bool island_has_friction(const std::vector<ContactPoint>& rows, IslandRange island)
 {
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  for (std::size_t r = island.begin; r < island.end; ++r)
     if (cone(rows[r]) > 0.0)
       return true;
   return false;
 }
 
-std::size_t cluster_unknowns(const std::vector<ContactPoint>& rows, ClusterRange cluster)
+std::size_t island_unknowns(const std::vector<ContactPoint>& rows, IslandRange island)
 {
-  const int k = cluster_has_friction(rows, cluster) ? kFrictionalUnknowns : kFrictionlessUnknowns;
-  return (cluster.end - cluster.begin) * static_cast<std::size_t>(k);
+  const int k = island_has_friction(rows, island) ? kFrictionalUnknowns : kFrictionlessUnknowns;
+  return (island.end - island.begin) * static_cast<std::size_t>(k);
 }
 
-void assemble_cluster_lcp(const std::vector<ContactPoint>& rows, ClusterRange cluster,
-                          const std::vector<BodyVelocity>& state, ClusterLcp& lcp)
+void assemble_island_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
+                          const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
-  assemble_delassus(rows, cluster, state, lcp);
-  if (cluster_has_friction(rows, cluster))
-    assemble_frictional(rows, cluster, state, lcp);
+  assemble_delassus(rows, island, state, lcp);
+  if (island_has_friction(rows, island))
+    assemble_frictional(rows, island, state, lcp);
   else
-    assemble_frictionless(rows, cluster, state, lcp);
+    assemble_frictionless(rows, island, state, lcp);
 }
 
-void store_cluster_impulses(const Eigen::VectorXd& z, ClusterRange cluster, std::vector<ContactPoint>& rows)
+void store_island_impulses(const Eigen::VectorXd& z, IslandRange island, std::vector<ContactPoint>& rows)
 {
-  const int k = cluster_has_friction(rows, cluster) ? kFrictionalUnknowns : kFrictionlessUnknowns;
-  for (std::size_t r = cluster.begin; r < cluster.end; ++r)
+  const int k = island_has_friction(rows, island) ? kFrictionalUnknowns : kFrictionlessUnknowns;
+  for (std::size_t r = island.begin; r < island.end; ++r)
   {
     ContactPoint& row = rows[r];
-    const Eigen::Index n_i = k * static_cast<Eigen::Index>(r - cluster.begin);
+    const Eigen::Index n_i = k * static_cast<Eigen::Index>(r - island.begin);
     const double s = 1.0 / std::sqrt(row.k_n);
     row.lambda_n = z(n_i) * s;
     row.lambda_t = 0.0;

@@ -112,6 +112,17 @@ passes fell short on the base-60 (1.95 and 1.11 mm). Six substeps with 2 passes 
 and penetration target in about two thirds of the time of 4 substeps with
 6 passes; 8 substeps buy about a third of the drift for a fifth more time.
 
+Nor does a second biased pass without a second relax hold the tallest stack
+at 4 substeps. Measured at commit e9f669c (not this run) with a scratch
+driver that ran the relax once while `soft_iterations` passes pushed out;
+drift 1 s -> 60 s / largest penetration, mm: 60 Hz, damping ratio 10, 2
+biased passes and 1 relax: column 0.0017 / 2.67, base-20 0.132 / 1.26,
+base-60 4.09 / 4.03, base-100 858 / 8.57 (it fell); at 50 Hz: 0.0001 /
+3.85, 0.170 / 1.81, 2.18 / 5.65, 113 / 10.5. Over 10 s, 60 Hz with 3
+biased and 2 relax passes came closest on the base-60 pyramid (1.08 mm,
+1.57 times the defaults' time a frame). At 4 substeps only the defaults' 40 Hz
+held the base-100 pyramid within its drift target.
+
 Why a nudged column (`stack_column_20_nudged`, the column with its top box
 1 um off centre): the exact column is symmetric to the last bit, so nothing
 can start it tipping, and its drift says nothing about a user's column.
@@ -356,4 +367,26 @@ With glibc's transparent huge pages for its large blocks
 frame and took 7.5 to 9.1 ms on one worker and 6.3 to 7.1 ms on two. Fewer
 bytes per contact (the memory target) would cut these faults in proportion;
 the library does not ask for huge pages itself.
+
+A tenth, on where the rain's frames 60 to 110 go (scratch drivers at
+commit e9f669c, not committed, timing each stage of the soft step and
+counting page faults around it; 1 worker). Finding the contacts took 55%
+of the frame: sizing the frame's points, contacts and manifolds 27% (a
+buffer that grows is value-initialised on the calling thread, its pages
+touched for the first time there: 6800 of the 9000 page faults of the 50
+frames), pairs and narrow phase 18%, adding the manifolds 7%; packing the
+rows 12% (1700 faults), the solve and relax passes 17%, moving the bodies
+7%. On 2 workers the window took 5.8 to 7.9 ms a frame against 6.2 to 6.5
+on 1, and even its passes, which fault nothing, gained little (32.5 to 33
+ms over the 50 frames on 1 worker, 29 to 38 ms on 2, for a reason not
+found), while they halved once the rain had landed (frames 200 to 230: 22.0
+and 12.3 ms). Page faults themselves
+share out on an idle machine: 20000 pages first touched by two threads,
+half each, took 6.1 to 6.3 us a page, by one thread 10.7 to 11.1. Keeping
+freed blocks in the process (glibc's mmap and trim thresholds raised) or
+reserving 4, 8 or 16 times a buffer's count when it grows cut the window's
+faults by at most a third (180 to 122 a frame) and its time by at most
+11%, so the buffers still grow by twice. The levers are fewer bytes per
+contact and first touches in the stages the workers share (buffers that
+are not value-initialised, so that the workers' writes touch their pages).
 """

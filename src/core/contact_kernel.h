@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "collision2d/vec2.h"
+#include "scratch_buffer.h"
 
 namespace collision2d
 {
@@ -130,6 +131,10 @@ struct ContactPoint
   /// perp(normal): tangential impulses act on b along it.
   Vec2 tangent() const { return perp(normal); }
 };
+
+/// The contact points of a frame or a solve: a per-frame buffer, written
+/// in full by the stage that sizes it (scratch_buffer.h).
+using ContactPoints = FrameBuffer<ContactPoint>;
 
 /// Inverse effective mass of an impulse along `dir` at lever arms r_a, r_b (1/kg).
 inline double inverse_effective_mass(const ContactPoint& p, Vec2 r_a, Vec2 r_b, Vec2 dir)

@@ -108,7 +108,7 @@ void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>
   partition_islands(problem.state, problem.rows, problem.islands, problem.parent);
 }
 
-void store_impulses(const std::vector<ContactPoint>& rows, std::size_t contact_count,
+void store_impulses(const ContactPoints& rows, std::size_t contact_count,
                     std::vector<ContactImpulse>& impulses)
 {
   impulses.assign(contact_count, ContactImpulse{});
@@ -117,7 +117,7 @@ void store_impulses(const std::vector<ContactPoint>& rows, std::size_t contact_c
 }
 
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
-                const std::vector<Contact>& contacts, double restitution, double mu, std::vector<ContactPoint>& rows)
+                const std::vector<Contact>& contacts, double restitution, double mu, ContactPoints& rows)
 {
   rows.clear();
   rows.reserve(contacts.size());
@@ -151,7 +151,7 @@ void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>
   }
 }
 
-void partition_islands(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
+void partition_islands(const std::vector<BodyVelocity>& state, ContactPoints& rows,
                         std::vector<IslandRange>& islands, std::vector<std::size_t>& parent)
 {
   parent.resize(state.size());

@@ -81,13 +81,13 @@ double total_kinetic_energy(const std::vector<Body>& bodies);
 /// now, before any impulse.
 /// Throws std::invalid_argument for a contact naming a missing or the same body.
 void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>& state,
-                const std::vector<Contact>& contacts, double restitution, double mu, std::vector<ContactPoint>& rows);
+                const std::vector<Contact>& contacts, double restitution, double mu, ContactPoints& rows);
 
 /// Reorders `rows` so each coupled island is contiguous (and, inside it, rows
 /// of the same pair are adjacent) and fills `islands`. Only dynamic bodies
 /// couple: contacts that share just a static or kinematic body stay apart,
 /// because that body's velocity never changes. `parent` is working storage.
-void partition_islands(const std::vector<BodyVelocity>& state, std::vector<ContactPoint>& rows,
+void partition_islands(const std::vector<BodyVelocity>& state, ContactPoints& rows,
                         std::vector<IslandRange>& islands, std::vector<std::size_t>& parent);
 
 /// Everything a velocity solve works on, sized once per call so the
@@ -95,7 +95,7 @@ void partition_islands(const std::vector<BodyVelocity>& state, std::vector<Conta
 struct ContactProblem
 {
   std::vector<BodyVelocity> state;
-  std::vector<ContactPoint> rows;
+  ContactPoints rows;
   std::vector<IslandRange> islands;
   std::vector<std::size_t> parent;  ///< union-find working storage
 };
@@ -106,7 +106,7 @@ void prepare_problem(const std::vector<Body>& bodies, const std::vector<Contact>
                      double mu, ContactProblem& problem);
 
 /// One ContactImpulse per input contact (zero for contacts that made no row).
-void store_impulses(const std::vector<ContactPoint>& rows, std::size_t contact_count,
+void store_impulses(const ContactPoints& rows, std::size_t contact_count,
                     std::vector<ContactImpulse>& impulses);
 
 }  // namespace detail

@@ -64,7 +64,7 @@ SolveReport ContactSolver::solve_iterative(std::vector<Body>& bodies, const std:
   detail::ContactProblem problem;
   detail::prepare_problem(bodies, contacts, e_, mu_, problem);
   std::vector<detail::BodyVelocity>& state = problem.state;
-  std::vector<detail::ContactPoint>& rows = problem.rows;
+  detail::ContactPoints& rows = problem.rows;
   report.island_count = problem.islands.size();
 
   for (const detail::IslandRange& island : problem.islands)

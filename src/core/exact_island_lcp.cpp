@@ -9,7 +9,7 @@ namespace detail
 namespace
 {
 /// G = J W J^T over the island's normal and tangent directions.
-void assemble_delassus(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_delassus(const ContactPoints& rows, IslandRange island,
                        const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
   const Eigen::Index contacts = static_cast<Eigen::Index>(island.end - island.begin);
@@ -25,7 +25,7 @@ void assemble_delassus(const std::vector<ContactPoint>& rows, IslandRange island
   finish_jacobian(rows, island, lcp);
 }
 
-void assemble_frictionless(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_frictionless(const ContactPoints& rows, IslandRange island,
                            const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
   const Eigen::Index m = static_cast<Eigen::Index>(island.end - island.begin);
@@ -41,7 +41,7 @@ void assemble_frictionless(const std::vector<ContactPoint>& rows, IslandRange is
   }
 }
 
-void assemble_frictional(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_frictional(const ContactPoints& rows, IslandRange island,
                          const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
   const Eigen::Index m = static_cast<Eigen::Index>(island.end - island.begin);
@@ -83,7 +83,7 @@ void assemble_frictional(const std::vector<ContactPoint>& rows, IslandRange isla
 }
 }  // namespace
 
-bool island_has_friction(const std::vector<ContactPoint>& rows, IslandRange island)
+bool island_has_friction(const ContactPoints& rows, IslandRange island)
 {
   for (std::size_t r = island.begin; r < island.end; ++r)
     if (cone(rows[r]) > 0.0)
@@ -91,13 +91,13 @@ bool island_has_friction(const std::vector<ContactPoint>& rows, IslandRange isla
   return false;
 }
 
-std::size_t island_unknowns(const std::vector<ContactPoint>& rows, IslandRange island)
+std::size_t island_unknowns(const ContactPoints& rows, IslandRange island)
 {
   const int k = island_has_friction(rows, island) ? kFrictionalUnknowns : kFrictionlessUnknowns;
   return (island.end - island.begin) * static_cast<std::size_t>(k);
 }
 
-void assemble_island_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_island_lcp(const ContactPoints& rows, IslandRange island,
                           const std::vector<BodyVelocity>& state, IslandLcp& lcp)
 {
   assemble_delassus(rows, island, state, lcp);
@@ -107,7 +107,7 @@ void assemble_island_lcp(const std::vector<ContactPoint>& rows, IslandRange isla
     assemble_frictionless(rows, island, state, lcp);
 }
 
-void store_island_impulses(const Eigen::VectorXd& z, IslandRange island, std::vector<ContactPoint>& rows)
+void store_island_impulses(const Eigen::VectorXd& z, IslandRange island, ContactPoints& rows)
 {
   const int k = island_has_friction(rows, island) ? kFrictionalUnknowns : kFrictionlessUnknowns;
   for (std::size_t r = island.begin; r < island.end; ++r)

@@ -39,22 +39,22 @@ inline int unknowns_per_contact(double mu) { return mu > 0.0 ? kFrictionalUnknow
 /// True when any row of the island has a friction cone (row.mu > 0): the
 /// island is then assembled with friction unknowns for every contact, and a
 /// row with mu = 0 gets a cone that admits no tangential impulse.
-bool island_has_friction(const std::vector<ContactPoint>& rows, IslandRange island);
+bool island_has_friction(const ContactPoints& rows, IslandRange island);
 
 /// Unknowns of the island's LCP.
-std::size_t island_unknowns(const std::vector<ContactPoint>& rows, IslandRange island);
+std::size_t island_unknowns(const ContactPoints& rows, IslandRange island);
 
 /// Fills lcp.M and lcp.q for rows [island.begin, island.end) at the
 /// velocities in `state` (the pre-solve ones: targets are already fixed in
 /// the rows). Each contact's cone uses its row.mu.
-void assemble_island_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_island_lcp(const ContactPoints& rows, IslandRange island,
                           const std::vector<BodyVelocity>& state, IslandLcp& lcp);
 
 /// Writes the impulses of solution z into the rows' lambda_n, lambda_t and
 /// sliding. A sliding contact (beta > 0) is put exactly on its cone,
 /// |lambda_t| = mu lambda_n: the LCP says so, and the solve's round-off must
 /// not move it strictly inside, where the contact would count as sticking.
-void store_island_impulses(const Eigen::VectorXd& z, IslandRange island, std::vector<ContactPoint>& rows);
+void store_island_impulses(const Eigen::VectorXd& z, IslandRange island, ContactPoints& rows);
 
 }  // namespace detail
 }  // namespace collision2d

@@ -35,7 +35,7 @@ LcpResult pivot_with_retry(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, i
   return result;
 }
 
-bool solve_island(std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
+bool solve_island(ContactPoints& rows, IslandRange island, const std::vector<BodyVelocity>& state,
                    IslandLcp& lcp, int& pivots)
 {
   pivots = 0;
@@ -49,7 +49,7 @@ bool solve_island(std::vector<ContactPoint>& rows, IslandRange island, const std
   return true;
 }
 
-double contact_speed_scale(const std::vector<ContactPoint>& rows, IslandRange island,
+double contact_speed_scale(const ContactPoints& rows, IslandRange island,
                            const std::vector<BodyVelocity>& state)
 {
   double scale = 0.0;
@@ -62,7 +62,7 @@ double contact_speed_scale(const std::vector<ContactPoint>& rows, IslandRange is
   return scale;
 }
 
-double impulse_speed_scale(const std::vector<ContactPoint>& rows, IslandRange island)
+double impulse_speed_scale(const ContactPoints& rows, IslandRange island)
 {
   double scale = 0.0;
   for (std::size_t r = island.begin; r < island.end; ++r)
@@ -70,7 +70,7 @@ double impulse_speed_scale(const std::vector<ContactPoint>& rows, IslandRange is
   return scale;
 }
 
-double island_residual(const std::vector<ContactPoint>& rows, IslandRange island,
+double island_residual(const ContactPoints& rows, IslandRange island,
                         const std::vector<BodyVelocity>& state)
 {
   double residual = 0.0;

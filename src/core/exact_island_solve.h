@@ -21,18 +21,18 @@ LcpResult pivot_with_retry(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, i
 /// impulses in its rows (each contact's cone from row.mu). Returns false when
 /// pivoting failed or the island has more than kMaxExactUnknowns unknowns;
 /// sets `pivots` to the pivots done.
-bool solve_island(std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
+bool solve_island(ContactPoints& rows, IslandRange island, const std::vector<BodyVelocity>& state,
                    IslandLcp& lcp, int& pivots);
 
 /// Largest contact speed (normal or tangential, or target) in the island at `state`.
-double contact_speed_scale(const std::vector<ContactPoint>& rows, IslandRange island,
+double contact_speed_scale(const ContactPoints& rows, IslandRange island,
                            const std::vector<BodyVelocity>& state);
 
 /// Largest speed change an impulse of the island causes on its own contact.
-double impulse_speed_scale(const std::vector<ContactPoint>& rows, IslandRange island);
+double impulse_speed_scale(const ContactPoints& rows, IslandRange island);
 
 /// Largest row_residual over the island (each row against its own mu).
-double island_residual(const std::vector<ContactPoint>& rows, IslandRange island,
+double island_residual(const ContactPoints& rows, IslandRange island,
                         const std::vector<BodyVelocity>& state);
 
 }  // namespace detail

@@ -35,7 +35,7 @@ SolveReport solve_exact(std::vector<Body>& bodies, const std::vector<Contact>& c
   detail::ContactProblem problem;
   detail::prepare_problem(bodies, contacts, e, mu, problem);
   std::vector<detail::BodyVelocity>& state = problem.state;
-  std::vector<detail::ContactPoint>& rows = problem.rows;
+  detail::ContactPoints& rows = problem.rows;
   const std::vector<detail::IslandRange>& islands = problem.islands;
   report.island_count = islands.size();
 

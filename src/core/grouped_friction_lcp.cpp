@@ -32,7 +32,7 @@ Layout layout_of(IslandRange island, const GroupedLcp& lcp)
   return Layout{static_cast<Eigen::Index>(island.end - island.begin), static_cast<Eigen::Index>(lcp.groups.size())};
 }
 
-void find_groups(const std::vector<ContactPoint>& rows, IslandRange island, GroupedLcp& lcp)
+void find_groups(const ContactPoints& rows, IslandRange island, GroupedLcp& lcp)
 {
   lcp.groups.clear();
   for (std::size_t r = island.begin; r < island.end;)
@@ -47,7 +47,7 @@ void find_groups(const std::vector<ContactPoint>& rows, IslandRange island, Grou
   }
 }
 
-void assemble_delassus(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_delassus(const ContactPoints& rows, IslandRange island,
                        const std::vector<BodyVelocity>& state, GroupedLcp& lcp, Layout layout)
 {
   begin_jacobian(rows, island, state, layout.points + layout.groups, lcp);
@@ -69,7 +69,7 @@ void assemble_delassus(const std::vector<ContactPoint>& rows, IslandRange island
 
 /// Unscaled M and q; beta couples with +1 into the tangent rows and the cone
 /// row reads mu sum(lambda_n) - lambda_t+ - lambda_t-.
-void fill_unscaled(const std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
+void fill_unscaled(const ContactPoints& rows, IslandRange island, const std::vector<BodyVelocity>& state,
                    GroupedLcp& lcp, Layout layout)
 {
   const Eigen::Index points = layout.points;
@@ -105,7 +105,7 @@ void fill_unscaled(const std::vector<ContactPoint>& rows, IslandRange island, co
 
 }  // namespace
 
-std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, IslandRange island)
+std::size_t grouped_unknowns(const ContactPoints& rows, IslandRange island)
 {
   constexpr std::size_t kUnknownsPerGroup = 3;  // lambda_t+, lambda_t-, beta
   std::size_t unknowns = 0;
@@ -117,7 +117,7 @@ std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, IslandRange 
   return unknowns;
 }
 
-void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_grouped_lcp(const ContactPoints& rows, IslandRange island,
                           const std::vector<BodyVelocity>& state, GroupedLcp& lcp)
 {
   find_groups(rows, island, lcp);
@@ -134,7 +134,7 @@ void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, IslandRange isl
 }
 
 void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, IslandRange island,
-                            std::vector<ContactPoint>& rows)
+                            ContactPoints& rows)
 {
   const Layout layout = layout_of(island, lcp);
   for (Eigen::Index i = 0; i < layout.points; ++i)
@@ -162,7 +162,7 @@ void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, Isl
   }
 }
 
-double grouped_residual(const std::vector<ContactPoint>& rows, const GroupedLcp& lcp,
+double grouped_residual(const ContactPoints& rows, const GroupedLcp& lcp,
                         const std::vector<BodyVelocity>& state)
 {
   double residual = 0.0;

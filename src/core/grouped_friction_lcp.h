@@ -50,23 +50,23 @@ struct GroupedLcp : IslandJacobian
 };
 
 /// Unknowns of the island's grouped LCP: one per point, three per body pair.
-std::size_t grouped_unknowns(const std::vector<ContactPoint>& rows, IslandRange island);
+std::size_t grouped_unknowns(const ContactPoints& rows, IslandRange island);
 
 /// Fills groups, M and q for rows [island.begin, island.end) at the
 /// pre-solve velocities in `state`.
-void assemble_grouped_lcp(const std::vector<ContactPoint>& rows, IslandRange island,
+void assemble_grouped_lcp(const ContactPoints& rows, IslandRange island,
                           const std::vector<BodyVelocity>& state, GroupedLcp& lcp);
 
 /// Writes solution z into the rows: lambda_n per point, the group's
 /// tangential impulse split in proportion to the normal impulses (each point
 /// inside its share of the cone), sliding when the group slides.
 void store_grouped_impulses(const Eigen::VectorXd& z, const GroupedLcp& lcp, IslandRange island,
-                            std::vector<ContactPoint>& rows);
+                            ContactPoints& rows);
 
 /// Residual (m/s) of the solved island at `state` (the velocities after the
 /// impulses): per point the normal part of row_residual, per group its
 /// friction part at the midpoint against the group's summed impulses.
-double grouped_residual(const std::vector<ContactPoint>& rows, const GroupedLcp& lcp,
+double grouped_residual(const ContactPoints& rows, const GroupedLcp& lcp,
                         const std::vector<BodyVelocity>& state);
 
 }  // namespace detail

@@ -10,7 +10,7 @@ namespace
 constexpr int kDofPerBody = 3;  // vx, vy, omega
 }  // namespace
 
-void begin_jacobian(const std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
+void begin_jacobian(const ContactPoints& rows, IslandRange island, const std::vector<BodyVelocity>& state,
                     Eigen::Index directions, IslandJacobian& j)
 {
   if (j.local_body.size() < state.size())
@@ -40,7 +40,7 @@ void add_jacobian_entry(IslandJacobian& j, Eigen::Index row, std::size_t body, d
   j.jacobian(row, column + 2) = sign * cross(r, dir);
 }
 
-void finish_jacobian(const std::vector<ContactPoint>& rows, IslandRange island, IslandJacobian& j)
+void finish_jacobian(const ContactPoints& rows, IslandRange island, IslandJacobian& j)
 {
   for (std::size_t r = island.begin; r < island.end; ++r)
   {

@@ -26,7 +26,7 @@ struct IslandJacobian
 /// Numbers the island's dynamic bodies (static and kinematic ones get no
 /// columns: their velocities never change), fills W and sets the jacobian to
 /// zero with `directions` rows.
-void begin_jacobian(const std::vector<ContactPoint>& rows, IslandRange island, const std::vector<BodyVelocity>& state,
+void begin_jacobian(const ContactPoints& rows, IslandRange island, const std::vector<BodyVelocity>& state,
                     Eigen::Index directions, IslandJacobian& j);
 
 /// Writes sign * (dir, r x dir) into row `row` at the body's columns; nothing
@@ -35,7 +35,7 @@ void add_jacobian_entry(IslandJacobian& j, Eigen::Index row, std::size_t body, d
 
 /// Computes the Delassus matrix and forgets the numbering, leaving
 /// local_body all -1 for the next island.
-void finish_jacobian(const std::vector<ContactPoint>& rows, IslandRange island, IslandJacobian& j);
+void finish_jacobian(const ContactPoints& rows, IslandRange island, IslandJacobian& j);
 
 }  // namespace detail
 }  // namespace collision2d

@@ -13,7 +13,7 @@ namespace
 bool same_pair(const ContactPoint& l, const ContactPoint& r) { return l.a == r.a && l.b == r.b; }
 
 /// One pass over the island; returns whether any impulse changed.
-bool sweep(std::vector<ContactPoint>& rows, IslandRange island, std::vector<BodyVelocity>& state, double mu)
+bool sweep(ContactPoints& rows, IslandRange island, std::vector<BodyVelocity>& state, double mu)
 {
   bool changed = false;
   for (std::size_t i = island.begin; i < island.end;)
@@ -33,7 +33,7 @@ bool sweep(std::vector<ContactPoint>& rows, IslandRange island, std::vector<Body
   return changed;
 }
 
-double island_residual(const std::vector<ContactPoint>& rows, IslandRange island,
+double island_residual(const ContactPoints& rows, IslandRange island,
                         const std::vector<BodyVelocity>& state, double mu)
 {
   double residual = 0.0;
@@ -43,7 +43,7 @@ double island_residual(const std::vector<ContactPoint>& rows, IslandRange island
 }
 }  // namespace
 
-IslandResult solve_island_pgs(std::vector<ContactPoint>& rows, IslandRange island,
+IslandResult solve_island_pgs(ContactPoints& rows, IslandRange island,
                                 std::vector<BodyVelocity>& state, double mu, int max_sweeps, double tol)
 {
   IslandResult result;

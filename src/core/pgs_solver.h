@@ -21,7 +21,7 @@ struct IslandResult
 /// sweeps are done (or a sweep changes no impulse, when more sweeps cannot
 /// help). Normal impulses stay >= 0 and tangential ones inside mu times the
 /// normal one. Allocates nothing.
-IslandResult solve_island_pgs(std::vector<ContactPoint>& rows, IslandRange island,
+IslandResult solve_island_pgs(ContactPoints& rows, IslandRange island,
                                 std::vector<BodyVelocity>& state, double mu, int max_sweeps, double tol);
 
 }  // namespace detail

@@ -123,7 +123,7 @@ void fill_padding(Batch& r, int j, std::uint32_t spare)
 /// A lane of either kind of batch: manifold `first`'s rows, or padding
 /// (SIZE_MAX) whose masses are 1, so no division meets a zero.
 template <class Batch>
-void fill_manifold(Batch& r, int j, const std::vector<ContactPoint>& points, std::size_t first, bool friction,
+void fill_manifold(Batch& r, int j, const ContactPoints& points, std::size_t first, bool friction,
                    std::uint32_t spare)
 {
   constexpr bool pair = std::is_same_v<Batch, RowBatch>;
@@ -156,7 +156,7 @@ void fill_manifold(Batch& r, int j, const std::vector<ContactPoint>& points, std
 
 /// The padding lanes of a colour's last batch of one kind.
 template <class Batch>
-void pad_batches(const RowRange& range, std::vector<Batch>& batches, std::uint32_t spare)
+void pad_batches(const RowRange& range, FrameBuffer<Batch>& batches, std::uint32_t spare)
 {
   for (std::size_t slot = range.lanes; slot < (range.end - range.begin) * kRowLanes; ++slot)
   {
@@ -179,7 +179,7 @@ std::size_t SoftRows::place_batches(Kind kind)
   return batches;
 }
 
-void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+void SoftRows::pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, bool friction,
                     WorkerPool& workers)
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
@@ -205,7 +205,7 @@ void SoftRows::pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>
   }
 }
 
-void SoftRows::place_rows(const std::vector<ContactPoint>& points, bool friction, WorkerPool& workers)
+void SoftRows::place_rows(const ContactPoints& points, bool friction, WorkerPool& workers)
 {
   const std::size_t parts = parts_for(workers);
   part_others_.resize(parts);
@@ -229,7 +229,7 @@ void SoftRows::place_rows(const std::vector<ContactPoint>& points, bool friction
   }
 }
 
-void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const std::vector<ContactPoint>& points,
+void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const ContactPoints& points,
                                bool friction, WorkerPool& workers)
 {
   // Within a colour the rows share no body, so their places are free: in
@@ -281,7 +281,7 @@ void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const std::v
   }
 }
 
-void SoftRows::fill_lane(const std::vector<ContactPoint>& points, std::size_t first, const Note& m, std::size_t slot,
+void SoftRows::fill_lane(const ContactPoints& points, std::size_t first, const Note& m, std::size_t slot,
                          bool friction)
 {
   const std::size_t lane = range_of(m.colour, m.kind).begin * kRowLanes + slot;  // over all batches
@@ -308,7 +308,7 @@ namespace
 {
 /// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches of one kind.
 template <class Batch, class F>
-void each_batch(const RowRange& c, std::vector<Batch>& rows, std::size_t part, std::size_t parts, F f)
+void each_batch(const RowRange& c, FrameBuffer<Batch>& rows, std::size_t part, std::size_t parts, F f)
 {
   const std::size_t n = c.end - c.begin;
   for (std::size_t r = c.begin + n * part / parts; r < c.begin + n * (part + 1) / parts; ++r)

@@ -112,7 +112,7 @@ public:
   /// set), the highest first; the lanes are filled by the workers. Below
   /// kMinColouredManifolds they are only ordered, the highest first.
   /// `velocity` gains one spare body at its end for the padding lanes.
-  void pack(std::vector<ContactPoint>& points, std::vector<BodyVelocity>& velocity, bool friction,
+  void pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, bool friction,
             WorkerPool& workers);
   /// Colours in use: the greedy colouring takes the lowest free one, so
   /// they are 0 .. colour_count() - 1.
@@ -199,12 +199,12 @@ private:
   void colour_manifolds(std::size_t bodies);
   /// Gives each row manifold its place in its colour's batches, in point
   /// order, and fills its lane; in parts on the workers for a large frame.
-  void place_rows(const std::vector<ContactPoint>& points, bool friction, WorkerPool& workers);
+  void place_rows(const ContactPoints& points, bool friction, WorkerPool& workers);
   /// Part `part` of `parts` of place_rows, over its share of the points.
-  void place_rows_part(std::size_t part, std::size_t parts, const std::vector<ContactPoint>& points, bool friction,
+  void place_rows_part(std::size_t part, std::size_t parts, const ContactPoints& points, bool friction,
                        WorkerPool& workers);
   /// A row manifold's lane: `slot` among its colour's rows of its kind.
-  void fill_lane(const std::vector<ContactPoint>& points, std::size_t first, const Note& m, std::size_t slot,
+  void fill_lane(const ContactPoints& points, std::size_t first, const Note& m, std::size_t slot,
                  bool friction);
   /// The first colour free of bodies a and b (kFixed: one that cannot
   /// move), now taken by them; kMaxColours when none is free.
@@ -237,8 +237,8 @@ private:
     return &rows_[at / (2 * kRowLanes)].point[at % 2];
   }
 
-  std::vector<RowBatch> rows_;
-  std::vector<RowSingle> singles_;
+  FrameBuffer<RowBatch> rows_;
+  FrameBuffer<RowSingle> singles_;
   std::vector<RowColour> colours_;
   std::size_t used_colours_ = 0;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order
@@ -249,11 +249,11 @@ private:
   std::vector<std::uint32_t> lane_of_;
   static constexpr std::uint32_t kNoLane = UINT32_MAX;
   static constexpr std::uint32_t kSingleLane = 0x80000000U;
-  std::vector<Note> notes_;  ///< per point, written at prepare
+  FrameBuffer<Note> notes_;  ///< per point, written at prepare
   /// Scratch: per manifold, its height key (high half) and its first point
   /// (low half), sorted.
-  std::vector<std::uint64_t> order_;
-  std::vector<std::uint64_t> sort_scratch_;
+  FrameBuffer<std::uint64_t> order_;
+  FrameBuffer<std::uint64_t> sort_scratch_;
   /// Scratch of the work in parts: each part's count of whatever it counts
   /// before the parts meet (manifolds, digits of a sort pass, or rows by
   /// colour and kind), kPartCounts entries a part, two sets used in turn.

@@ -34,7 +34,7 @@ std::size_t digit(std::uint64_t key, int d)
 /// are distinct and ascending, so a comparison sort of the whole keys gives
 /// the same order: below kRadixSortFrom keys it is cheaper than clearing and
 /// summing the digit counts.
-void sort_by_height(std::vector<std::uint64_t>& keys, std::vector<std::uint64_t>& scratch)
+void sort_by_height(FrameBuffer<std::uint64_t>& keys, FrameBuffer<std::uint64_t>& scratch)
 {
   if (keys.size() < kRadixSortFrom)
   {

@@ -45,7 +45,7 @@ namespace
 struct ExactIslands
 {
   std::vector<detail::BodyVelocity> state;
-  std::vector<detail::ContactPoint> rows;
+  detail::ContactPoints rows;
   std::vector<detail::IslandRange> islands;
   std::vector<std::size_t> parent;
   detail::IslandLcp lcp;
@@ -56,7 +56,7 @@ struct ExactIslands
 /// comes from its points: a frictionless disk's points drop it
 /// (prepare_points), and so must its LCP; every copy then sees the island's
 /// one inertia per body. Without friction (positions) the copies carry no cone.
-void build_islands(const std::vector<detail::BodyVelocity>& velocity, const std::vector<detail::ContactPoint>& points,
+void build_islands(const std::vector<detail::BodyVelocity>& velocity, const detail::ContactPoints& points,
                    bool friction, const std::vector<double>* targets, ExactIslands& out)
 {
   out.state.resize(velocity.size());

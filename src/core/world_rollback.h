@@ -39,7 +39,7 @@ struct Rollback
   double sleeping_penetration = 0.0;
   std::vector<std::uint32_t> island_label;
   std::uint32_t next_island_label = 0;
-  std::vector<ContactPoint> points;  ///< only when a prediction reads them next step
+  ContactPoints points;  ///< only when a prediction reads them next step
   double cache_h = 0.0;
   double time = 0.0;
   std::uint64_t frame_count = 0;

@@ -71,8 +71,8 @@ struct WorldState
   std::vector<Aabb> boxes_;
   std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)
   double margin_ = 0.0;               ///< this detection's speculative margin (m)
-  std::vector<Manifold> manifolds_;
-  std::vector<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
+  FrameBuffer<Manifold> manifolds_;
+  FrameBuffer<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
   /// Soft step: each pair's first cached contact when its manifold is kept, else kNotKept.
   std::vector<std::size_t> kept_from_;
   double reuse_distance_ = 0.0;         ///< this detection's contact_reuse_distance (m), 0: none
@@ -108,7 +108,7 @@ struct WorldState
   std::vector<double> swept_reach_sq_;  ///< soft step: sweep_reach_sq per body, set for the frame
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact this substep
-  std::vector<ContactPoint> points_;  ///< this substep's contact points
+  ContactPoints points_;  ///< this substep's contact points
   std::vector<BodyVelocity> velocity_;  ///< velocities during the velocity stage
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
   std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared

@@ -281,8 +281,8 @@ namespace
 /// Copies `from` into `to`, growing `to` geometrically: a plain assignment
 /// allocates the exact size, so a count that creeps up would allocate each
 /// time. The workers copy a long list in parts.
-template <typename T>
-void keep_copy(const std::vector<T>& from, std::vector<T>& to, WorkerPool& workers)
+template <typename T, typename Allocator>
+void keep_copy(const std::vector<T, Allocator>& from, std::vector<T, Allocator>& to, WorkerPool& workers)
 {
   resize_to_overwrite(to, from.size());
   workers.parallel_for(from.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {

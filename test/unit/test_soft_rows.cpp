@@ -37,7 +37,7 @@ bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; 
 struct Scene
 {
   std::vector<BodyVelocity> bodies;
-  std::vector<ContactPoint> points;
+  detail::ContactPoints points;
 };
 
 /// A point's masses from its bodies and the soft step's default softness.

@@ -6,7 +6,8 @@ from report_format import fmt
 from report_analysis import baseline
 from report_targets import earlier_targets_section, targets_section
 from report_guidance import guidance_section
-from report_notes import FX2D_COLUMN_NOTES, PROFILE_NOTES, STACK_NOTES
+from report_notes import FX2D_COLUMN_NOTES, STACK_NOTES
+from report_profile_notes import PROFILE_NOTES
 from report_sections import (knob_section, machine_section, mass_ratio_section, peers_section, scaling_section,
                              solver_section, stacks_section, stand_section, throughput_section, time_target_section)
 

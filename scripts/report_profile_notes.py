@@ -214,17 +214,23 @@ bodies: ours 4.4 million, its finishing of the bodies 2.1, its broad phase
 million instructions a frame, not the solver.
 
 A twelfth, on the rain of 1e4 on 2 workers after commit 9f8ee65 (frames 60
-to 110; a scratch copy of the worker pool timing each job and the serial
-stretch before it, not committed): 7.0 ms a frame under the timers, 5.2 ms
-in the jobs and 1.8 ms between them. The longest serial stretch, 1.0 ms, is
-before the points are added: the published contacts' buffer (the public
-`WorldContact`, whose vector `World::contacts()` returns) grows and is
-value-initialised there, its new pages first touched on the calling
-thread. Then the pairs' bookkeeping before the narrow phase (0.19 ms), the
-greedy colouring (0.16 ms), the enlarged boxes' check and the broad phase's
-grid (0.11 ms each). The jobs themselves ran about 1.3 times faster than
-on one worker: the new pages they touch cost 6.2 us each with two threads
-faulting against 11 us with one. 1.7 times needs both the serial part under
-a fifth of the frame and fewer pages touched a frame, that is fewer bytes
-a contact.
+to 110; scratch copies of the worker pool and of detection timing each job
+and the serial stretches between them, not committed): 7.0 ms a frame under
+the timers, 5.2 ms in the jobs and 1.8 ms between them. The longest serial
+stretch is the published contacts' buffer (the public `WorldContact`, whose
+vector `World::contacts()` returns) growing and being value-initialised,
+its new pages first touched on the calling thread: 0.73 ms a frame on 1
+and on 2 workers. Then the pairs' bookkeeping before the narrow phase (0.19
+ms), the greedy colouring (0.16 ms), the enlarged boxes' check and the
+broad phase's grid (0.11 ms each). Tried and not kept: the World's own
+contact lists as non-initialising buffers, with `World::contacts()`
+copying them on each call. The 0.73 ms went, and adding the points took
+0.36 ms more on 2 workers (0.67 ms more on 1), where their first writes now
+touch the pages: 2 workers 0.947 times the time (median of 15 alternating
+pairs) in one state of the machine and 1.00 times (10 pairs) in another,
+not enough for a copy on every call. The jobs themselves ran about 1.3
+times faster than on one worker: the new pages they touch cost 6.2 us each
+with two threads faulting against 11 us with one. 1.7 times needs both the
+serial part under a fifth of the frame and fewer pages touched a frame,
+that is fewer bytes a contact.
 """

@@ -32,6 +32,7 @@ def main():
     # Re-rendering saved CSVs: the commit and load average of the run that measured them.
     parser.add_argument("--commit", default="")
     parser.add_argument("--load", default="")
+    parser.add_argument("--pinned-cpu", default="", help="the core the single-threaded runs were pinned to")
     args = parser.parse_args()
 
     runs = prepare(read_csv(os.path.join(args.perf_dir, "runs.csv")))

@@ -71,6 +71,16 @@ if [[ $BUILD_FIRST == 1 ]]; then
   grep "Box2D v3" "$BUILD.cmake.log" >&2 || true
   cmake --build "$BUILD" -j"$JOBS" --target collision2d_sweep_bench collision2d_scaling_bench collision2d_stack_bench
 fi
+# Every single-threaded run (ours with 1 worker and every peer) goes to the
+# same core: on a virtual machine the cores can differ in speed, and a run
+# left to the scheduler lands on either (docs/performance.md, *Timing*).
+# COLLISION2D_PERF_CPU picks the core; the default is the last one.
+ONE_CORE=()
+PERF_CPU=""
+if command -v taskset > /dev/null && (( $(nproc) > 1 )); then
+  PERF_CPU="${COLLISION2D_PERF_CPU:-$(( $(nproc) - 1 ))}"
+  ONE_CORE=(taskset -c "$PERF_CPU")
+fi
 SWEEP="$BUILD/bench/collision2d_sweep_bench"
 SCALING="$BUILD/bench/collision2d_scaling_bench"
 STACK="$BUILD/bench/collision2d_stack_bench"
@@ -95,7 +105,9 @@ throughput_rounds() {  # $1: how many rounds to run now
     for scene in pyramid rain; do
       for n in "${THROUGHPUT_SIZES[@]}"; do
         for workers in 1 2; do
-          "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
+          local pin=()
+          (( workers == 1 )) && pin=(${ONE_CORE[@]+"${ONE_CORE[@]}"})
+          ${pin[@]+"${pin[@]}"} "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
             grep "^collision2d," >> "$THROUGHPUT_ROWS" || log "throughput: ours at $scene $n not measured"
         done
       done
@@ -109,17 +121,17 @@ throughput_rounds 2
 part_done "throughput rounds"
 
 log "sweep: our knobs in both pipelines, the peers and the 60 s stacks (progress in $BUILD/sweep.log)"
-"$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
+${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
 part_done sweep
 throughput_rounds 2
 part_done "throughput rounds"
 
 log "solver residuals on random islands"
-"$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
+${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
 part_done solver
 
 log "stacks: ours (both pipelines) and every peer built in, ${STACK_SECONDS} s"
-"$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --soft-step both --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
+${ONE_CORE[@]+"${ONE_CORE[@]}"} "$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --soft-step both --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
   2> "$BUILD/stacks.log" || { tail "$BUILD/stacks.log" >&2; exit 1; }
 part_done stacks
 throughput_rounds 2
@@ -130,7 +142,7 @@ log "scaling: one process per engine and size"
 for n in "${SCALING_SIZES[@]}"; do
   for engine in "${SCALING_ENGINES[@]}"; do
     # The packaged Chipmunk prints a banner on stdout: keep the CSV rows only.
-    "$SCALING" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" | grep "^$engine," >> "$OUT/scaling.csv" ||
+    ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SCALING" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" | grep "^$engine," >> "$OUT/scaling.csv" ||
       log "scaling: $engine at $n bodies not measured (not built in?)"
   done
 done
@@ -142,7 +154,7 @@ cat "$THROUGHPUT_ROWS" >> "$OUT/scaling.csv"
 if [[ -n $BOX2D_V3_DIR ]]; then
   for scene in pyramid rain; do
     for n in "${THROUGHPUT_SIZES[@]}"; do
-      "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
+      ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
         grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n not measured"
     done
   done
@@ -155,7 +167,7 @@ for n in "${RESTING_SIZES[@]}"; do
   [[ " ${THROUGHPUT_SIZES[*]} " == *" $n "* ]] || scenes+=(pyramid)
   for scene in "${scenes[@]}"; do
     for engine in collision2d ${BOX2D_V3_DIR:+box2d_v3}; do
-      "$SCALING" --scene "$scene" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" |
+      ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SCALING" --scene "$scene" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" |
         grep "^$engine," >> "$OUT/scaling.csv" || log "resting: $engine $scene at $n not measured"
     done
   done
@@ -167,5 +179,5 @@ log "measured in ${ELAPSED} s; writing plots and docs/performance.md"
 # The renderer needs only the standard library; the system interpreter, not
 # whichever python3 comes first on PATH.
 "$SYSTEM_PYTHON" "$ROOT/scripts/performance_report.py" --perf-dir "$OUT" --doc "$ROOT/docs/performance.md" \
-  --elapsed "$ELAPSED" ${QUICK[@]+"${QUICK[@]}"}
+  --elapsed "$ELAPSED" ${PERF_CPU:+--pinned-cpu "$PERF_CPU"} ${QUICK[@]+"${QUICK[@]}"}
 log "done: docs/performance.md"

@@ -78,6 +78,10 @@ Box2D v3*; the time ratio is CPU time per frame, wall in the table).
   the peers were timed in the same process, scene by scene. The two cores
   were shared with other processes during the run, so wall times carry noise
   (compare the wall and CPU columns; CPU time excludes time spent preempted).
+  Every single-threaded run goes to one core (the machine line names it):
+  on this virtual machine the two cores differ in speed for work that
+  streams memory, and a run left to the scheduler lands on either (the
+  thirteenth profile note).
 - **Both pipelines.** Every run of ours sets `soft_step` explicitly: the
   soft step (contacts found once a frame within a speculative margin, solved
   as damped springs, relaxed every substep, restitution at the end of each substep)

@@ -235,11 +235,15 @@ serial part under a fifth of the frame and fewer pages touched a frame,
 that is fewer bytes a contact.
 
 A thirteenth, on the gas of 1e5 disks in the scaling table: on this
-machine the same build steps it in one of two times. Three alternating
-pairs of `collision2d_scaling_bench --bodies 100000 --scene gas` built at
-commit 8cd10fb and at b130e16 (before and after the frame buffers) read
-54.8, 36.9; 36.8, 54.7; 55.2, 37.2 ms a frame (the median of each
-process's repetitions), both builds in both modes. The run at b130e16 drew
-the slow one (58.4 ms; 36.0 ms at b63ff74): with 37 ms the slope of this
-run's four sizes would be 1.07 instead of 1.13.
+machine the same build steps it in one of two times, by the core it runs
+on. Three alternating pairs of `collision2d_scaling_bench --bodies 100000
+--scene gas` built at commit 8cd10fb and at b130e16 (before and after the
+frame buffers) read 54.8, 36.9; 36.8, 54.7; 55.2, 37.2 ms a frame, both
+builds in both modes. On the idle machine, pinned with `taskset` at
+bfe1318: core 0 43.4, 42.6, 43.0 ms, core 1 36.3, 36.3, 35.4 ms; the
+bullet against a wall (a frame that stays in cache) took 0.25 us on
+either. The run at b130e16 drew the slow mode for the gas (58.4 ms; 36.0 ms
+at b63ff74); with 37 ms the slope of its four sizes would have been 1.07
+instead of 1.13. The script now runs every
+single-threaded measurement on one core (the machine line names it).
 """

@@ -18,6 +18,14 @@ def has_v3(runs, stacks, scaling):
     return any(r["engine"] == "box2d_v3" for r in list(runs) + list(stacks) + list(scaling))
 
 
+def pinned_line(args):
+    """Where the single-threaded runs ran, when the script pinned them."""
+    if not getattr(args, "pinned_cpu", ""):
+        return ""
+    return (f"- Every single-threaded run (ours with 1 worker, every peer) ran on core {args.pinned_cpu} "
+            f"(`taskset`); ours with 2 workers on both cores.\n")
+
+
 def machine_section(args, runs, stacks, scaling, default):
     model = "unknown CPU"
     try:
@@ -43,6 +51,7 @@ def machine_section(args, runs, stacks, scaling, default):
           "there are no ratios to it")
     return (f"- Machine: {model}, {os.cpu_count()} logical cores, {platform.system()} {platform.release()}; "
             f"load average at report time {load} (the cores were shared with other work, see *Timing*).\n"
+            f"{pinned_line(args)}"
             f"- Measured {today} at commit `{commit}` (plus any uncommitted changes in the tree), {grid} grids, "
             f"all measurements in one run of `scripts/performance_report.sh` taking {args.elapsed} s.\n"
             f"- Peers: Box2D 2.4.1 and Chipmunk 7 in every part; {v3}.\n"

@@ -244,6 +244,6 @@ bfe1318: core 0 43.4, 42.6, 43.0 ms, core 1 36.3, 36.3, 35.4 ms; the
 bullet against a wall (a frame that stays in cache) took 0.25 us on
 either. The run at b130e16 drew the slow mode for the gas (58.4 ms; 36.0 ms
 at b63ff74); with 37 ms the slope of its four sizes would have been 1.07
-instead of 1.13. The script now runs every
-single-threaded measurement on one core (the machine line names it).
+instead of 1.13. The script now runs every single-threaded measurement on
+one core (the machine line names it).
 """

@@ -81,6 +81,8 @@ if command -v taskset > /dev/null && (( $(nproc) > 1 )); then
   PERF_CPU="${COLLISION2D_PERF_CPU:-$(( $(nproc) - 1 ))}"
   ONE_CORE=(taskset -c "$PERF_CPU")
 fi
+# Runs a command on that core (where it lands when none was chosen).
+on_one_core() { ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$@"; }
 SWEEP="$BUILD/bench/collision2d_sweep_bench"
 SCALING="$BUILD/bench/collision2d_scaling_bench"
 STACK="$BUILD/bench/collision2d_stack_bench"
@@ -105,9 +107,9 @@ throughput_rounds() {  # $1: how many rounds to run now
     for scene in pyramid rain; do
       for n in "${THROUGHPUT_SIZES[@]}"; do
         for workers in 1 2; do
-          local pin=()
-          (( workers == 1 )) && pin=(${ONE_CORE[@]+"${ONE_CORE[@]}"})
-          ${pin[@]+"${pin[@]}"} "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
+          local runner=command  # 2 workers take both cores
+          (( workers == 1 )) && runner=on_one_core
+          "$runner" "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
             grep "^collision2d," >> "$THROUGHPUT_ROWS" || log "throughput: ours at $scene $n not measured"
         done
       done
@@ -121,17 +123,17 @@ throughput_rounds 2
 part_done "throughput rounds"
 
 log "sweep: our knobs in both pipelines, the peers and the 60 s stacks (progress in $BUILD/sweep.log)"
-${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
+on_one_core "$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
 part_done sweep
 throughput_rounds 2
 part_done "throughput rounds"
 
 log "solver residuals on random islands"
-${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
+on_one_core "$SWEEP" solver "${QUICK[@]}" --out "$OUT/solver.csv" 2> "$BUILD/solver.log" || { tail "$BUILD/solver.log" >&2; exit 1; }
 part_done solver
 
 log "stacks: ours (both pipelines) and every peer built in, ${STACK_SECONDS} s"
-${ONE_CORE[@]+"${ONE_CORE[@]}"} "$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --soft-step both --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
+on_one_core "$STACK" --seconds "$STACK_SECONDS" --reps "$STACK_REPS" --soft-step both --csv "$OUT/stacks.csv" > "$BUILD/stacks.md" \
   2> "$BUILD/stacks.log" || { tail "$BUILD/stacks.log" >&2; exit 1; }
 part_done stacks
 throughput_rounds 2
@@ -142,7 +144,7 @@ log "scaling: one process per engine and size"
 for n in "${SCALING_SIZES[@]}"; do
   for engine in "${SCALING_ENGINES[@]}"; do
     # The packaged Chipmunk prints a banner on stdout: keep the CSV rows only.
-    ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SCALING" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" | grep "^$engine," >> "$OUT/scaling.csv" ||
+    on_one_core "$SCALING" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" | grep "^$engine," >> "$OUT/scaling.csv" ||
       log "scaling: $engine at $n bodies not measured (not built in?)"
   done
 done
@@ -154,7 +156,7 @@ cat "$THROUGHPUT_ROWS" >> "$OUT/scaling.csv"
 if [[ -n $BOX2D_V3_DIR ]]; then
   for scene in pyramid rain; do
     for n in "${THROUGHPUT_SIZES[@]}"; do
-      ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
+      on_one_core "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 2>> "$BUILD/scaling.log" |
         grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n not measured"
     done
   done
@@ -167,7 +169,7 @@ for n in "${RESTING_SIZES[@]}"; do
   [[ " ${THROUGHPUT_SIZES[*]} " == *" $n "* ]] || scenes+=(pyramid)
   for scene in "${scenes[@]}"; do
     for engine in collision2d ${BOX2D_V3_DIR:+box2d_v3}; do
-      ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$SCALING" --scene "$scene" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" |
+      on_one_core "$SCALING" --scene "$scene" --bodies "$n" --engine "$engine" 2>> "$BUILD/scaling.log" |
         grep "^$engine," >> "$OUT/scaling.csv" || log "resting: $engine $scene at $n not measured"
     done
   done

@@ -20,7 +20,7 @@ def has_v3(runs, stacks, scaling):
 
 def pinned_line(args):
     """Where the single-threaded runs ran, when the script pinned them."""
-    if not getattr(args, "pinned_cpu", ""):
+    if not args.pinned_cpu:
         return ""
     return (f"- Every single-threaded run (ours with 1 worker, every peer) ran on core {args.pinned_cpu} "
             f"(`taskset`); ours with 2 workers on both cores.\n")

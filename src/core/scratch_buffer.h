@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <memory>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace collision2d
@@ -30,17 +29,13 @@ struct FrameAllocator : std::allocator<T>
   FrameAllocator(const FrameAllocator<U>& /*other*/) noexcept
   {
   }
-  /// resize()'s new elements: left as they are (plain data only).
+  /// resize()'s new elements: left as they are (plain data only). Copies
+  /// and other constructions go through std::allocator_traits' placement new.
   template <typename U>
   void construct(U* /*p*/) noexcept
   {
     static_assert(std::is_trivially_copyable<U>::value && std::is_trivially_destructible<U>::value,
                   "a frame buffer holds plain data");
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
 

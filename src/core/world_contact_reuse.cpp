@@ -85,15 +85,10 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
   return true;
 }
 
-void WorldImpl::set_point_origin(std::size_t k, int c, ContactOrigin& o) const
+void WorldImpl::set_new_origin(std::size_t k, int c, ContactOrigin& o) const
 {
   // In place: an origin returned by value came back through the stack in
   // pieces and was read back whole, a store the load could not forward.
-  if (kept(k))
-  {
-    o = cache_[kept_from_[k] + static_cast<std::size_t>(c)].origin;
-    return;
-  }
   const Body& a = bodies_[pairs_[k].first];
   const Body& b = bodies_[pairs_[k].second];
   const Manifold& m = manifolds_[k];

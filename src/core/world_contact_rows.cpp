@@ -120,9 +120,12 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
   const std::size_t i = pairs_[k].first;
   const std::size_t j = pairs_[k].second;
   const Manifold& m = manifolds_[k];
+  // A kept manifold's points are its cached contacts, in order.
+  const WorldContact* kept_first = kept(k) ? &cache_[kept_from_[k]] : nullptr;
   for (int c = 0; c < m.count; ++c)
   {
     ContactPoint& row = points_[pair_rows_[k] + static_cast<std::size_t>(c)];
+    const WorldContact* kept_point = kept_first != nullptr ? kept_first + c : nullptr;
     // Default-initialised in place: each member takes its initialiser by
     // plain stores. `row = ContactPoint{}` first clears all of it with
     // `rep stos`, whose start-up costs more than the stores (docs/performance.md).
@@ -139,21 +142,23 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     {
       // Into the contact the point will be published as (detect sized the list).
       ContactOrigin& origin = contacts_[pair_rows_[k] + static_cast<std::size_t>(c)].origin;
-      set_point_origin(k, c, origin);
-      row.kept = kept(k);
+      row.kept = kept_point != nullptr;
       if (row.kept)
       {
+        origin = kept_point->origin;
         row.r_a = origin.r_a;
         row.r_b = origin.r_b;
       }
+      else
+      {
+        set_new_origin(k, c, origin);  // world_contact_reuse.cpp
+      }
     }
     deepest = std::max(deepest, row.penetration);
-    // A kept manifold's points are its cached contacts, in order.
     const WorldContact* cached = nullptr;
     if (warm_scale > 0.0 || friction)
     {
-      cached = row.kept ? &cache_[kept_from_[k] + static_cast<std::size_t>(c)]
-                        : find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature);
+      cached = row.kept ? kept_point : find_cached(pair_cache_[k], ids_[i], ids_[j], row.feature);
     }
     if (cached != nullptr)
     {

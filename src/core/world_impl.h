@@ -211,9 +211,9 @@ struct WorldImpl : WorldState
   /// moved little since they were detected (world_contact_reuse.cpp);
   /// `cursor` as cached_pair's.
   bool keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::size_t& cursor);
-  /// Where pair k's manifold point c was detected (world_contact_reuse.cpp),
-  /// written in place.
-  void set_point_origin(std::size_t k, int c, ContactOrigin& o) const;
+  /// Where pair k's manifold point c was detected, for a manifold the narrow
+  /// phase found this frame (world_contact_reuse.cpp), written in place.
+  void set_new_origin(std::size_t k, int c, ContactOrigin& o) const;
   /// Whether pair k's manifold was kept (its points are cache_ from kept_from_[k]).
   bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }
   /// How far apart the pair's points are kept (m): margin and reach, or touching.

@@ -135,7 +135,8 @@ bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
       continue;
     }
     p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
-    const bool both_move = bodies_[p.a].type() == BodyType::Dynamic && bodies_[p.b].type() == BodyType::Dynamic;
+    // Only a dynamic body has an inverse mass (> 0, Body checks it).
+    const bool both_move = p.inv_mass_a != 0.0 && p.inv_mass_b != 0.0;
     p.softness = both_move ? moving : fixed;
     bounces = bounces || p.restitution > 0.0;
   }

@@ -110,6 +110,7 @@ struct ContactPoint
   bool exact = false;            ///< World: solved by its island's LCP this substep
   bool position_solved = false;  ///< World: penetration corrected by its island's LCP
   bool kept = false;             ///< World, soft step: its manifold kept from an earlier frame (lever arms set)
+  bool origin_known = false;     ///< World, soft step: the origin fields below are set
   std::uint32_t feature = 0;     ///< detection's feature id (beside the flags: no padding)
 
   // Detection.
@@ -123,6 +124,12 @@ struct ContactPoint
   double tangent_mass = 0.0;  ///< 1 / k_t (kg)
   double target = 0.0;        ///< post-solve normal separation speed (m/s)
   double restitution = 0.0;   ///< the pair's e
+
+  // World, soft step: where the point's manifold was detected, published
+  // with the contact (its ContactOrigin; the lever arms there are r_a, r_b).
+  double origin_separation = 0.0;  ///< m
+  double origin_theta_a = 0.0;     ///< rad
+  double origin_theta_b = 0.0;
 
   // Bookkeeping of the solvers that own the point.
   std::uint32_t contact = 0;  ///< index into the caller's contact list

@@ -339,7 +339,6 @@ void WorldImpl::clear()
   contacts_.clear();
   sleeping_contacts_.clear();
   sleeping_penetration_ = 0.0;
-  cache_.clear();
   points_.clear();
   refresh_inner_radii();
 }

@@ -38,11 +38,11 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
   const BodyId id_a = ids_[i];
   const BodyId id_b = ids_[j];
   const std::size_t at = cached_pair(cursor, id_a, id_b);
-  if (at >= cache_.size() || !same_pair(cache_[at], id_a, id_b) || !cache_[at].origin.known)
+  if (at >= contacts_.size() || !same_pair(contacts_[at], id_a, id_b) || !contacts_[at].origin.known)
   {
     return false;
   }
-  const auto first = cache_.begin() + static_cast<std::ptrdiff_t>(at);
+  const auto first = contacts_.begin() + static_cast<std::ptrdiff_t>(at);
   const ContactOrigin& o = first->origin;
   const double turn_a = a.theta() - o.theta_a;
   const double turn_b = b.theta() - o.theta_b;
@@ -73,7 +73,7 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
   Manifold& m = manifolds_[k];
   kept_from_[k] = at;
   m.normal = first->contact.normal;
-  m.count = first + 1 != cache_.end() && same_pair(first[1], id_a, id_b) ? 2 : 1;
+  m.count = first + 1 != contacts_.end() && same_pair(first[1], id_a, id_b) ? 2 : 1;
   for (int c = 0; c < m.count; ++c)
   {
     const WorldContact& cached = first[c];
@@ -85,19 +85,16 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
   return true;
 }
 
-void WorldImpl::set_new_origin(std::size_t k, int c, ContactOrigin& o) const
+void WorldImpl::set_new_origin(std::size_t k, ContactPoint& row) const
 {
-  // In place: an origin returned by value came back through the stack in
-  // pieces and was read back whole, a store the load could not forward.
   const Body& a = bodies_[pairs_[k].first];
   const Body& b = bodies_[pairs_[k].second];
-  const Manifold& m = manifolds_[k];
-  o.r_a = m.points[c].point - a.position();
-  o.r_b = m.points[c].point - b.position();
-  o.separation = m.points[c].separation;
-  o.theta_a = a.theta();
-  o.theta_b = b.theta();
-  o.known = true;
+  row.r_a = row.point - a.position();
+  row.r_b = row.point - b.position();
+  row.origin_separation = row.separation;
+  row.origin_theta_a = a.theta();
+  row.origin_theta_b = b.theta();
+  row.origin_known = true;
 }
 
 }  // namespace detail

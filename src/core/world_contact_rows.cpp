@@ -73,7 +73,7 @@ void WorldImpl::place_pairs_part(std::size_t part, std::size_t parts, bool cache
   // A local, stored at the end: the parts' placements share a cache line,
   // which each lookup below would otherwise write.
   PairPlacement placed;
-  const std::size_t c = cache_.size();
+  const std::size_t c = contacts_.size();
   std::size_t cursor = c + 1;  // the first lookup searches
   const std::size_t n = pairs_.size();
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
@@ -104,7 +104,7 @@ void WorldImpl::place_pairs_in_order(bool cached)
       continue;
     }
     const int count = manifolds_[k].count;
-    pair_cache_[k] = cache_.size();
+    pair_cache_[k] = contacts_.size();
     if (cached && count > 0)
     {
       pair_cache_[k] = first_cached(k, cache_cursor_);
@@ -121,7 +121,7 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
   const std::size_t j = pairs_[k].second;
   const Manifold& m = manifolds_[k];
   // A kept manifold's points are its cached contacts, in order.
-  const WorldContact* kept_first = kept(k) ? &cache_[kept_from_[k]] : nullptr;
+  const WorldContact* kept_first = kept(k) ? &contacts_[kept_from_[k]] : nullptr;
   for (int c = 0; c < m.count; ++c)
   {
     ContactPoint& row = points_[pair_rows_[k] + static_cast<std::size_t>(c)];
@@ -140,18 +140,15 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     row.count = m.count;
     if (reuse_distance_ > 0.0)
     {
-      // Into the contact the point will be published as (detect sized the list).
-      ContactOrigin& origin = contacts_[pair_rows_[k] + static_cast<std::size_t>(c)].origin;
+      // The lever arms are fixed for the frame from here.
       row.kept = kept_point != nullptr;
       if (row.kept)
       {
-        origin = kept_point->origin;
-        row.r_a = origin.r_a;
-        row.r_b = origin.r_b;
+        set_kept_origin(kept_point->origin, row);
       }
       else
       {
-        set_new_origin(k, c, origin);  // world_contact_reuse.cpp
+        set_new_origin(k, row);  // world_contact_reuse.cpp
       }
     }
     deepest = std::max(deepest, row.penetration);
@@ -182,16 +179,16 @@ std::size_t WorldImpl::cached_pair(std::size_t& cursor, BodyId a, BodyId b) cons
   // The cache is in (a, b) order because contacts are published in broad-phase
   // pair order and dense indices follow ids; detection asks in that order too,
   // so the cursor only moves forward (a search covers any other order).
-  if (cursor > cache_.size() || (cursor > 0 && !pair_less(cache_[cursor - 1], a, b)))
+  if (cursor > contacts_.size() || (cursor > 0 && !pair_less(contacts_[cursor - 1], a, b)))
   {
-    const auto found = std::lower_bound(cache_.begin(), cache_.end(), std::make_pair(a, b),
+    const auto found = std::lower_bound(contacts_.begin(), contacts_.end(), std::make_pair(a, b),
                                         [](const WorldContact& c, const std::pair<BodyId, BodyId>& key) {
                                           return pair_less(c, key.first, key.second);
                                         });
-    cursor = static_cast<std::size_t>(found - cache_.begin());
+    cursor = static_cast<std::size_t>(found - contacts_.begin());
     return cursor;
   }
-  while (cursor < cache_.size() && pair_less(cache_[cursor], a, b))
+  while (cursor < contacts_.size() && pair_less(contacts_[cursor], a, b))
   {
     ++cursor;
   }
@@ -200,7 +197,7 @@ std::size_t WorldImpl::cached_pair(std::size_t& cursor, BodyId a, BodyId b) cons
 
 const WorldContact* WorldImpl::find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const
 {
-  for (auto it = cache_.begin() + first; it != cache_.end() && it->a == a && it->b == b; ++it)
+  for (auto it = contacts_.begin() + first; it != contacts_.end() && it->a == a && it->b == b; ++it)
   {
     if (it->contact.feature == feature)
     {

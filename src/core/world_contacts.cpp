@@ -71,9 +71,6 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   const bool friction = ctx.effects.friction;
   const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
   resize_to_overwrite(points_, rows);  // add_manifold writes every row
-  // One contact per point, published by publish_contacts; a soft frame's
-  // add_manifold writes each origin there first.
-  resize_to_overwrite(contacts_, rows);
   if (prepare != nullptr)
   {
     soft_rows_.expect_points(rows);
@@ -283,7 +280,7 @@ bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Man
 void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
 {
   WorldImpl& w = *static_cast<WorldImpl*>(world);
-  std::size_t cursor = w.cache_.size() + 1;  // the range's first lookup searches
+  std::size_t cursor = w.contacts_.size() + 1;  // the range's first lookup searches
   for (std::size_t k = begin; k < end; ++k)
   {
     const std::size_t i = w.pairs_[k].first;
@@ -320,9 +317,15 @@ double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
 void WorldImpl::publish_contacts(bool soft_frame)
 {
   // One pass for all: each point is read (and written) once while in cache,
-  // into the contact detect set aside for it.
+  // into its contact, over the last frame's (detection was their last reader).
   std::atomic<double> deepest{0.0};
   const bool packed = soft_frame && rows_on();
+  const bool origins = soft_frame && reuse_distance_ > 0.0;
+  size_contacts(points_.size());
+  if (rollback_.active)
+  {
+    rollback_.contacts_published = true;
+  }
   workers_.parallel_for(points_.size(), kMinSharedPoints, [&](std::size_t begin, std::size_t end) {
     double range_deepest = 0.0;
     for (std::size_t k = begin; k < end; ++k)
@@ -353,15 +356,34 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.impulse.tangent = row.lambda_t;
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
-      if (!soft_frame || reuse_distance_ <= 0.0)
+      if (origins)
       {
-        c.origin = ContactOrigin{};  // else add_manifold wrote it in place
+        publish_origin(row, c.origin);
+      }
+      else
+      {
+        c.origin = ContactOrigin{};
       }
     }
     raise_to(deepest, range_deepest);
   });
   followed_known_ = soft_frame;
   followed_deepest_ = deepest.load();
+}
+
+void WorldImpl::size_contacts(std::size_t n)
+{
+  // The last contacts are dead here, but a new block is taken before the old
+  // one goes: a step refused for want of memory still finds them in place.
+  if (n <= contacts_.capacity())
+  {
+    contacts_.resize(n);
+    return;
+  }
+  std::vector<WorldContact> grown;
+  grown.reserve(2 * n);  // as resize_to_overwrite: a creeping count reallocates rarely
+  grown.resize(n);
+  contacts_.swap(grown);
 }
 
 double WorldImpl::measure_penetration() const

@@ -47,16 +47,15 @@ struct WorldImpl : WorldState
   void advance_body(std::size_t i, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
-  /// Throws std::overflow_error naming the first body whose state is not finite.
+  /// Throws std::overflow_error naming the first body whose state is not
+  /// finite. Each frame checks before it publishes its contacts: a step that
+  /// publishes once then keeps its starting contacts in place (save_motion).
   void require_finite_state();
   /// Keeps aside what a step of `frames` frames changes.
   void save_motion(int frames);
   void restore_motion();
   /// Body i's motion and rest time into the rollback buffers.
   void keep_body(std::size_t i);
-  /// The last contacts become the cache that warm starting reads; swapping
-  /// keeps both buffers' capacity.
-  void swap_contact_buffers();
 
   // Sharing a stage among the workers (worker_pool.h): results are the same
   // for any number of them.
@@ -211,10 +210,30 @@ struct WorldImpl : WorldState
   /// moved little since they were detected (world_contact_reuse.cpp);
   /// `cursor` as cached_pair's.
   bool keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::size_t& cursor);
-  /// Where pair k's manifold point c was detected, for a manifold the narrow
-  /// phase found this frame (world_contact_reuse.cpp), written in place.
-  void set_new_origin(std::size_t k, int c, ContactOrigin& o) const;
-  /// Whether pair k's manifold was kept (its points are cache_ from kept_from_[k]).
+  /// A point's lever arms and where it was detected (world_contact_reuse.cpp):
+  /// for a manifold the narrow phase found this frame, from the bodies now;
+  /// for a kept one, from its cached contact. Both set the point in place.
+  void set_new_origin(std::size_t k, ContactPoint& row) const;
+  static void set_kept_origin(const ContactOrigin& origin, ContactPoint& row)
+  {
+    row.r_a = origin.r_a;
+    row.r_b = origin.r_b;
+    row.origin_separation = origin.separation;
+    row.origin_theta_a = origin.theta_a;
+    row.origin_theta_b = origin.theta_b;
+    row.origin_known = origin.known;
+  }
+  /// The point's origin as its published contact carries it.
+  static void publish_origin(const ContactPoint& row, ContactOrigin& origin)
+  {
+    origin.r_a = row.r_a;
+    origin.r_b = row.r_b;
+    origin.separation = row.origin_separation;
+    origin.theta_a = row.origin_theta_a;
+    origin.theta_b = row.origin_theta_b;
+    origin.known = row.origin_known;
+  }
+  /// Whether pair k's manifold was kept (its points are contacts_ from kept_from_[k]).
   bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
@@ -235,13 +254,16 @@ struct WorldImpl : WorldState
   /// Pair k's first cached contact: where its kept manifold came from, else
   /// cached_pair's answer; `cursor` as cached_pair's.
   std::size_t first_cached(std::size_t k, std::size_t& cursor) const;
-  /// The contact of pair (a, b) with `feature` among its cached contacts from cache_[first] on.
+  /// The contact of pair (a, b) with `feature` among its cached contacts from contacts_[first] on.
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
-  /// The frame's points become contacts_ (the next frame's warm-start cache).
+  /// The frame's points become contacts_ (the next frame's warm-start cache),
+  /// in place of the last ones, which nothing reads after detection.
   /// After a soft frame each point first takes its impulses back from its
   /// row, an active point's slip is carried (carry_slip) and the deepest
   /// followed gap kept for the report.
   void publish_contacts(bool soft_frame = false);
+  /// contacts_ resized to n contacts, to be overwritten.
+  void size_contacts(std::size_t n);
   double measure_penetration() const;
 
   // world_solve.cpp: the velocity stage on the contact-solver kernel.

@@ -31,9 +31,9 @@ struct Rollback
   std::vector<BodyMotion> motion;
   std::vector<bool> asleep;
   std::vector<double> rest_time;
-  std::vector<WorldContact> contacts;  ///< unless contacts_in_cache
-  bool contacts_in_cache = false;      ///< the step's contacts before it are in cache_ after its one swap
-  int contact_swaps = 0;               ///< swaps of the contact buffers since save_motion
+  std::vector<WorldContact> contacts;  ///< unless contacts_in_place
+  bool contacts_in_place = false;      ///< the step's contacts before it stay in contacts_ until its one publish
+  bool contacts_published = false;     ///< ... which has happened (they are gone)
   bool sleeping_kept = false;          ///< the step changed what sleeps; the state before is kept below
   std::vector<WorldContact> sleeping_contacts;
   double sleeping_penetration = 0.0;

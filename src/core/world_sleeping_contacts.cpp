@@ -116,7 +116,7 @@ void WorldImpl::wake_island(std::uint32_t label, std::vector<WorldContact>& into
   sleeping_contacts_.erase(kept, sleeping_contacts_.end());
   merge_into(into, moved_contacts_, merge_scratch_);
   measure_sleeping_penetration();
-  cache_cursor_ = cache_.size() + 1;  // the cache may have changed: the next lookup searches
+  cache_cursor_ = contacts_.size() + 1;  // the cache may have changed: the next lookup searches
 }
 
 std::size_t WorldImpl::asleep_bodies()
@@ -164,7 +164,7 @@ bool WorldImpl::wake_reached_islands()
       {
         keep_sleeping_for_rollback(true);
         rest_time_[i] = 0.0;  // being reached is not resting
-        wake_island(island_label_[i], cache_);
+        wake_island(island_label_[i], contacts_);
         woke = true;
       }
     }
@@ -176,10 +176,12 @@ void WorldImpl::keep_sleeping_for_rollback(bool starting_contacts)
 {
   // Woken contacts join the cache, which may hold the step's starting
   // contacts: those are kept too.
-  if (rollback_.active && starting_contacts && rollback_.contacts_in_cache)
+  // Once published over, they are gone; nothing can refuse the step after
+  // its one publish (require_finite_state comes first).
+  if (rollback_.active && starting_contacts && rollback_.contacts_in_place && !rollback_.contacts_published)
   {
-    rollback_.contacts = rollback_.contact_swaps == 1 ? cache_ : contacts_;
-    rollback_.contacts_in_cache = false;
+    rollback_.contacts = contacts_;
+    rollback_.contacts_in_place = false;
   }
   if (!rollback_.active || rollback_.sleeping_kept)
   {

@@ -49,7 +49,6 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   ctx.warm = ctx.warm_available;
   // 1. Collide once: contacts within the margin, impulses from the last
   // frame, each pair's points prepared (masses, softness) as they are added.
-  swap_contact_buffers();                                 // world_step.cpp
   const PointPreparation preparation = point_preparation(ctx);
   detect(ctx, settings_.speculative_margin, report, &preparation);  // world_contacts.cpp
   // 2. Prepare the bodies; the rows from the prepared points.
@@ -81,6 +80,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   }
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();
+  require_finite_state();                                 // world_step.cpp: before the contacts are published
   publish_contacts(true);                                 // slips carried, gaps followed
   cache_h_ = ctx.h;
 }

@@ -53,7 +53,7 @@ void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t be
     }
     const Body& a = bodies_[p.a];
     const Body& b = bodies_[p.b];
-    if (!p.kept)
+    if (!p.origin_known)  // else set where the point was added (set_new_origin, set_kept_origin)
     {
       p.r_a = p.point - a.position();
       p.r_b = p.point - b.position();

@@ -37,8 +37,9 @@ struct WorldState
   bool rest_finish_known_ = false;  ///< the last step ended at the rest state; no frame stepped since
   StepReport rest_finish_;     ///< finish_report's figures at rest
   /// Contacts of pairs with a mover, in (a, b) order: published in pair
-  /// order, put aside and woken by merging, sorted by set_step_state. A soft frame's
-  /// detection writes each point's origin here before publish fills the rest.
+  /// order, put aside and woken by merging, sorted by set_step_state. The
+  /// next detection reads them as its warm-start cache (every lookup relies
+  /// on the order); the frame then publishes its own over them.
   std::vector<WorldContact> contacts_;
   /// Contacts of sleeping islands (with each other, static and still
   /// kinematic bodies), in (a, b) order: nothing in a step reads them until
@@ -81,7 +82,7 @@ struct WorldState
   std::vector<std::size_t> posed_offset_;
   std::vector<Vec2> posed_vertices_;
   std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
-  std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in cache_
+  std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in contacts_
   std::vector<double> partial_max_;      ///< max_over's result of each part
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
@@ -126,9 +127,6 @@ struct WorldState
   std::vector<double> prev_theta_;
   std::vector<Vec2> moved_;           ///< position correction applied this substep (m)
   std::vector<double> turned_;        ///< rotation correction applied this substep (rad)
-  /// Previous substep's contacts, for warm starting: contacts_ swapped in,
-  /// so in (a, b) order too (every lookup relies on it).
-  std::vector<WorldContact> cache_;
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
   bool bounces_ = false;               ///< soft step: some point of the frame can bounce
   std::vector<BouncePoint> bounce_points_;  ///< ... those points
@@ -137,7 +135,7 @@ struct WorldState
   /// by publish_contacts (nothing changes the points or poses after it).
   bool followed_known_ = false;
   double followed_deepest_ = 0.0;  ///< m
-  mutable std::size_t cache_cursor_ = 0;  ///< the rows' cached_pair cursor in cache_, kept between lookups
+  mutable std::size_t cache_cursor_ = 0;  ///< the rows' cached_pair cursor in contacts_, kept between lookups
   std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
   std::vector<double> kicked_omega_;
   std::vector<std::size_t> island_;   ///< union-find parents for sleeping

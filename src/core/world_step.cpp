@@ -52,7 +52,6 @@ StepReport WorldImpl::step(int frames)
     for (int f = 0; f < frames; ++f)
     {
       step_frame(report);
-      require_finite_state();
     }
   }
   catch (...)
@@ -109,10 +108,13 @@ void WorldImpl::fx2d_frame(StepContext& ctx, StepReport& report)
 {
   for (int k = 0; k < settings_.substeps; ++k)
   {
-    swap_contact_buffers();
     ctx.first = k == 0;
     ctx.warm = ctx.warm_available;
     substep(ctx, report);
+    if (k + 1 == settings_.substeps)
+    {
+      require_finite_state();                             // before the frame's contacts are published
+    }
     publish_contacts();                                   // world_contacts.cpp
     cache_h_ = ctx.h;
   }
@@ -270,7 +272,7 @@ void WorldImpl::require_finite_state()
   if (i != n)
   {
     std::ostringstream msg;
-    msg << "step: body " << ids_[i] << " overflowed to a non-finite state in frame " << frame_count_
+    msg << "step: body " << ids_[i] << " overflowed to a non-finite state in frame " << frame_count_ + 1
         << " (its speed, size or mass lies far beyond the supported ranges)";
     throw std::overflow_error(msg.str());
   }
@@ -292,12 +294,6 @@ void keep_copy(const std::vector<T, Allocator>& from, std::vector<T, Allocator>&
 }
 }  // namespace
 
-void WorldImpl::swap_contact_buffers()
-{
-  cache_.swap(contacts_);
-  ++rollback_.contact_swaps;
-}
-
 void WorldImpl::save_motion(int frames)
 {
   // Only what a step changes is kept aside (no outlines, no scratch), in
@@ -314,12 +310,13 @@ void WorldImpl::save_motion(int frames)
       keep_body(rollback_.movers_only ? movers_[k] : k);
     }
   });
-  // A step that swaps the contact buffers once leaves the contacts it started
-  // from untouched in cache_ (detection only reads it): no copy is needed.
-  const int swaps = frames * (settings_.soft_step ? 1 : settings_.substeps);
-  rollback_.contacts_in_cache = swaps == 1;
-  rollback_.contact_swaps = 0;
-  if (!rollback_.contacts_in_cache)
+  // A step that publishes its contacts once leaves the contacts it started
+  // from untouched until that publish (detection only reads them), and
+  // checks its bodies are finite before it: no copy is needed.
+  const int publishes = frames * (settings_.soft_step ? 1 : settings_.substeps);
+  rollback_.contacts_in_place = publishes == 1;
+  rollback_.contacts_published = false;
+  if (!rollback_.contacts_in_place)
   {
     keep_copy(contacts_, rollback_.contacts, workers_);
   }
@@ -358,13 +355,9 @@ void WorldImpl::restore_motion()
     b.set_omega(m.omega);
     rest_time_[i] = rollback_.rest_time[i];
   }
-  if (!rollback_.contacts_in_cache)
+  if (!rollback_.contacts_in_place)
   {
     contacts_.swap(rollback_.contacts);
-  }
-  else if (rollback_.contact_swaps == 1)
-  {
-    contacts_.swap(cache_);
   }
   asleep_.swap(rollback_.asleep);
   ++sleep_stamp_;

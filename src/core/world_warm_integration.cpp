@@ -22,7 +22,7 @@ bool WorldImpl::previous_point_matches(std::size_t k) const
   // cache lacks (lever arms, masses, friction state). Bodies removed since
   // shift the dense indices: such rows are left out.
   const ContactPoint& row = points_[k];
-  return row.a < ids_.size() && row.b < ids_.size() && ids_[row.a] == cache_[k].a && ids_[row.b] == cache_[k].b;
+  return row.a < ids_.size() && row.b < ids_.size() && ids_[row.a] == contacts_[k].a && ids_[row.b] == contacts_[k].b;
 }
 
 void WorldImpl::predict_velocities(const StepContext& ctx)
@@ -37,7 +37,7 @@ void WorldImpl::predict_velocities(const StepContext& ctx)
   // The rows must line up with the cache; right after an island fell asleep
   // or woke (its contacts put aside or brought back) they do not, and that
   // substep is not predicted.
-  if (points_.size() != cache_.size())
+  if (points_.size() != contacts_.size())
   {
     return;
   }

@@ -246,4 +246,21 @@ either. The run at b130e16 drew the slow mode for the gas (58.4 ms; 36.0 ms
 at b63ff74); with 37 ms the slope of its four sizes would have been 1.07
 instead of 1.13. The script now runs every single-threaded measurement on
 one core (the machine line names it).
+
+A fourteenth, on the seventh's layouts (commit c02e9cf): the published
+contacts were kept twice, the list `World::contacts()` returns and the
+warm-start cache it was swapped with each frame. Detection now reads the
+list itself and the frame publishes over it (nothing reads the last
+contacts after detection), each point carrying where it was detected in
+24 more bytes (296 in all). Same bits. Measured against commit db95764
+with scratch drivers (not committed): peak memory above the empty world,
+pyramid of 9870 boxes after 30 frames 6836 -> 5976 bytes a body, of 99681
+after 8 frames 6713 -> 5852, rain of 1e4 after 120 frames 3904 -> 3557;
+the base-100 pyramid's frames 61 to 180, 12 alternating runs on one core,
+5.86 -> 5.65 ms a frame (median ratio 0.955), and 648.9 -> 635.2 million
+instructions over its frames 61 to 70 (with commit aaa61fd before it); the
+rain of 1e4 on 2 workers, frames 60 to 110, 8 alternating runs, median
+ratio 0.959, its page faults 184 -> 171 a frame. Four layouts are left:
+the solver's point 296 bytes, the published contact 168, the rows 144 and
+the manifold 52, 660 bytes a point.
 """

@@ -263,4 +263,20 @@ rain of 1e4 on 2 workers, frames 60 to 110, 8 alternating runs, median
 ratio 0.959, its page faults 184 -> 171 a frame. Four layouts are left:
 the solver's point 296 bytes, the published contact 168, the rows 144 and
 the manifold 52, 660 bytes a point.
+
+A fifteenth, on small worlds given 2 workers (commit after c48642b): the
+narrow phase and the posing of outlines woke the second worker for any
+count above one, and the soft passes met once a colour from 512 coloured
+manifolds. Now the first two share only from `kMinSharedPairs` pairs and
+`kMinSharedBodies` bodies, as the other stages, and the passes from 1024
+manifolds. Measured with a scratch driver (not committed), wall ms a frame,
+6 alternating runs each, 2 workers: rain of 100 (frames 61 to 360) 0.053
+-> 0.036 (1 worker 0.036); rain of 1000 (frames 61 to 160) 0.62 -> 0.49
+(1 worker 0.375); pyramids of 990, 2016 and 9870 boxes unchanged (0.94,
+1.64 and 7.9 ms). The passes' threshold, tried at 512, 1024, 2048, 4096
+and never (4 runs each): the rain of 1000 took 0.54, 0.45, 0.45, 0.46,
+0.45 ms, the pyramid of 990 0.88, 0.88, 0.90, 1.03, 1.00, the pyramid of
+2016 1.56, 1.57, 1.56, 1.57, 2.02. The rain of 1000 on 2 workers is still
+slower than on 1: its stages over points and pairs share from 1024, and a
+worker woken on this machine starts late.
 """

@@ -170,7 +170,8 @@ void WorldImpl::find_mover_pairs()
   resize_to_overwrite(manifolds_, pairs_.size());  // collide_range writes every slot
   resize_to_overwrite(collided_, pairs_.size());
   kept_from_.assign(pairs_.size(), kNotKept);
-  workers_.run(pairs_.size(), &WorldImpl::collide_range, this);
+  workers_.parallel_for(pairs_.size(), kMinSharedPairs,
+                        [this](std::size_t begin, std::size_t end) { collide_range(this, begin, end); });
 }
 
 void set_full_body_passes(bool full) { g_full_body_passes.store(full, std::memory_order_relaxed); }
@@ -238,7 +239,8 @@ void WorldImpl::pose_bodies()
     total += 2 * bodies_[i].vertex_count();
   }
   posed_vertices_.resize(total);
-  workers_.run(n, &WorldImpl::pose_range, this);
+  workers_.parallel_for(n, kMinSharedBodies,
+                        [this](std::size_t begin, std::size_t end) { pose_range(this, begin, end); });
 }
 
 void WorldImpl::pose_range(void* world, std::size_t begin, std::size_t end)

@@ -14,8 +14,9 @@ namespace detail
 namespace
 {
 /// Coloured manifolds below which a pass is too short to share among workers
-/// (a meeting per colour costs about a microsecond).
-constexpr std::size_t kMinTeamManifolds = 512;
+/// (the workers meet once a colour): a rain of 1000 bodies, about 600 of
+/// them, stepped faster on one (docs/performance.md, profile notes).
+constexpr std::size_t kMinTeamManifolds = 1024;
 
 /// Part `part` of `parts` of [0, n).
 std::size_t part_begin(std::size_t n, std::size_t part, std::size_t parts) { return n * part / parts; }

@@ -13,9 +13,9 @@ namespace detail
 {
 namespace
 {
-/// Coloured manifolds below which a pass is too short to share among workers
-/// (the workers meet once a colour): a rain of 1000 bodies, about 600 of
-/// them, stepped faster on one (docs/performance.md, profile notes).
+/// Coloured manifolds below which a pass is too short to share among workers:
+/// they meet once a colour, which costs more than a short colour's work
+/// (measured in docs/performance.md, profile notes).
 constexpr std::size_t kMinTeamManifolds = 1024;
 
 /// Part `part` of `parts` of [0, n).

@@ -171,7 +171,7 @@ void WorldImpl::find_mover_pairs()
   resize_to_overwrite(collided_, pairs_.size());
   kept_from_.assign(pairs_.size(), kNotKept);
   workers_.parallel_for(pairs_.size(), kMinSharedPairs,
-                        [this](std::size_t begin, std::size_t end) { collide_range(this, begin, end); });
+                        [this](std::size_t begin, std::size_t end) { collide_range(begin, end); });
 }
 
 void set_full_body_passes(bool full) { g_full_body_passes.store(full, std::memory_order_relaxed); }
@@ -228,7 +228,7 @@ void WorldImpl::pose_bodies()
   if (!body_pass_full_ && posed_offset_.size() == n)
   {
     // A resting body's outline is where the frame that made it rest put it.
-    for_each_body([this](std::size_t i) { pose_range(this, i, i + 1); });
+    for_each_body([this](std::size_t i) { pose_range(i, i + 1); });
     return;
   }
   posed_offset_.resize(n);
@@ -240,16 +240,15 @@ void WorldImpl::pose_bodies()
   }
   posed_vertices_.resize(total);
   workers_.parallel_for(n, kMinSharedBodies,
-                        [this](std::size_t begin, std::size_t end) { pose_range(this, begin, end); });
+                        [this](std::size_t begin, std::size_t end) { pose_range(begin, end); });
 }
 
-void WorldImpl::pose_range(void* world, std::size_t begin, std::size_t end)
+void WorldImpl::pose_range(std::size_t begin, std::size_t end)
 {
-  WorldImpl& w = *static_cast<WorldImpl*>(world);
   for (std::size_t i = begin; i < end; ++i)
   {
-    const Body& b = w.bodies_[i];
-    Vec2* vertices = w.posed_vertices_.data() + w.posed_offset_[i];
+    const Body& b = bodies_[i];
+    Vec2* vertices = posed_vertices_.data() + posed_offset_[i];
     pose_polygon(b, vertices, vertices + b.vertex_count());
   }
 }
@@ -279,26 +278,25 @@ bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Man
   return posed_now ? collide_posed(posed(i), posed(j), m, tolerance) : collide(a, b, m, tolerance);
 }
 
-void WorldImpl::collide_range(void* world, std::size_t begin, std::size_t end)
+void WorldImpl::collide_range(std::size_t begin, std::size_t end)
 {
-  WorldImpl& w = *static_cast<WorldImpl*>(world);
-  std::size_t cursor = w.contacts_.size() + 1;  // the range's first lookup searches
+  std::size_t cursor = contacts_.size() + 1;  // the range's first lookup searches
   for (std::size_t k = begin; k < end; ++k)
   {
-    const std::size_t i = w.pairs_[k].first;
-    const std::size_t j = w.pairs_[k].second;
-    Collided& result = w.collided_[k];
+    const std::size_t i = pairs_[k].first;
+    const std::size_t j = pairs_[k].second;
+    Collided& result = collided_[k];
     result = Collided::NotTried;
-    if (!w.dynamic_pair(i, j))
+    if (!dynamic_pair(i, j))
     {
       continue;  // every pair found has a mover (find_mover_pairs)
     }
-    if (w.keep_manifold(k, i, j, cursor))                 // world_contact_reuse.cpp
+    if (keep_manifold(k, i, j, cursor))                 // world_contact_reuse.cpp
     {
       result = Collided::Hit;
       continue;
     }
-    result = w.collide_pair(i, j, w.pair_tolerance(i, j), w.manifolds_[k], true) ? Collided::Hit : Collided::Miss;
+    result = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k], true) ? Collided::Hit : Collided::Miss;
   }
 }
 

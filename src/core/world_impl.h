@@ -201,10 +201,10 @@ struct WorldImpl : WorldState
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const;
   /// Every polygon's outline at its pose now, into posed_vertices_ (workers share it).
   void pose_bodies();
-  static void pose_range(void* world, std::size_t begin, std::size_t end);
+  void pose_range(std::size_t begin, std::size_t end);
   PosedPolygon posed(std::size_t i) const;
-  /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (a WorkerPool job).
-  static void collide_range(void* world, std::size_t begin, std::size_t end);
+  /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (the workers share it).
+  void collide_range(std::size_t begin, std::size_t end);
   bool dynamic_pair(std::size_t i, std::size_t j) const;
   /// Soft step: pair k's manifold from its cached contacts when the pair has
   /// moved little since they were detected (world_contact_reuse.cpp);

@@ -33,7 +33,9 @@ struct Rollback
   std::vector<double> rest_time;
   std::vector<WorldContact> contacts;  ///< unless contacts_in_place
   bool contacts_in_place = false;      ///< the step's contacts before it stay in contacts_ until its one publish
-  bool contacts_published = false;     ///< ... which has happened (they are gone)
+  /// ... which has happened: they are gone. The overflow check comes before
+  /// it, so only running out of memory after it (update_sleep) finds them gone.
+  bool contacts_published = false;
   bool sleeping_kept = false;          ///< the step changed what sleeps; the state before is kept below
   std::vector<WorldContact> sleeping_contacts;
   double sleeping_penetration = 0.0;

@@ -320,7 +320,6 @@ void WorldImpl::publish_contacts(bool soft_frame)
   // into its contact, over the last frame's (detection was their last reader).
   std::atomic<double> deepest{0.0};
   const bool packed = soft_frame && rows_on();
-  const bool origins = soft_frame && reuse_distance_ > 0.0;
   size_contacts(points_.size());
   if (rollback_.active)
   {
@@ -356,7 +355,7 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.impulse.tangent = row.lambda_t;
       c.sliding = row.sliding;
       c.anchor_drift = row.anchor_drift;
-      if (origins)
+      if (row.origin_known)  // a soft frame's point, contacts kept (add_manifold)
       {
         publish_origin(row, c.origin);
       }

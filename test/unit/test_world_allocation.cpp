@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <new>
 #include <string>
 
 #include "collision2d/scene.h"
@@ -118,6 +119,15 @@ TEST(WorldAllocation, TheCounterSeesAllocations)
   const long before = test::g_allocations.load();
   World world = make_world(scenes::pyramid(3));
   EXPECT_GT(test::g_allocations.load() - before, 0);
+}
+
+TEST(WorldAllocation, TheCounterSeesAlignedAllocations)
+{
+  // The soft rows ask for over-aligned blocks (four lanes of doubles).
+  const long before = test::g_allocations.load();
+  const std::align_val_t alignment{32};
+  ::operator delete(::operator new(96, alignment), alignment);
+  EXPECT_EQ(test::g_allocations.load() - before, 1);
 }
 
 }  // namespace

@@ -279,4 +279,24 @@ and never (4 runs each): the rain of 1000 took 0.54, 0.45, 0.45, 0.46,
 2016 1.56, 1.57, 1.56, 1.57, 2.02. The rain of 1000 on 2 workers is still
 slower than on 1: its stages over points and pairs share from 1024, and a
 worker woken on this machine starts late.
+
+A sixteenth, on asking the kernel for huge pages (scratch change at commit
+bcddd4e, not kept): the frame buffers' blocks of 2 MiB and up, aligned to
+2 MiB and given `madvise(MADV_HUGEPAGE)`. Memory first touched costs 15.0
+to 15.5 us a 4 kB page on this machine today (100 MB written a page at a
+time, three rounds), 0.23 us on huge pages once the host has backed them,
+and 6.0 to 6.7 us with `MADV_POPULATE_WRITE`. The growing rain gained:
+rain of 1e4 (`collision2d_scaling_bench`, 6 alternating runs against a
+build of bcddd4e) 1 worker 8.99 -> 7.03 ms a frame (medians), 2 workers
+5.25 -> 4.42, its page faults (frames 60 to 110) 166 -> 67 a frame, peak
+memory above the empty process 3.86 -> 3.52 kB a body; rain of 1e5 (2
+runs) 1 worker 60.0 and 58.1 -> 71.0 and 50.9 ms, 2 workers 34.2 and 33.3
+-> 26.7 and 28.5 ms. The settled pyramids did not: the base-100 pyramid's
+frames 61 to 180 (8 alternating runs on one core) median ratio 0.98, the
+pyramid of 9870 boxes unchanged in time with 5.49 -> 5.96 kB a body, and
+the pyramid of 99681 boxes slower, 180 -> 232 to 265 ms a frame on one
+worker (3 runs), in frames that fault no page at all (185 to 346 ms
+against 173 to 183). The same aligned blocks without the `madvise` took
+173 to 176 ms: on this virtual machine the huge pages themselves slow a
+working set of that size, so the library keeps to ordinary pages.
 """

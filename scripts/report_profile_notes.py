@@ -285,7 +285,9 @@ bcddd4e, not kept): the frame buffers' blocks of 2 MiB and up, aligned to
 2 MiB and given `madvise(MADV_HUGEPAGE)`. Memory first touched costs 15.0
 to 15.5 us a 4 kB page on this machine today (100 MB written a page at a
 time, three rounds), 0.23 us on huge pages once the host has backed them,
-and 6.0 to 6.7 us with `MADV_POPULATE_WRITE`. The growing rain gained:
+and 5.5 to 6.7 us with `MADV_POPULATE_WRITE` (0.6 us in the call, the rest
+at the first write, which faults nothing the process can count: the
+host's share). The growing rain gained:
 rain of 1e4 (`collision2d_scaling_bench`, 6 alternating runs against a
 build of bcddd4e) 1 worker 8.99 -> 7.03 ms a frame (medians), 2 workers
 5.25 -> 4.42, its page faults (frames 60 to 110) 166 -> 67 a frame, peak

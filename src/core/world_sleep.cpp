@@ -79,6 +79,7 @@ void WorldImpl::update_sleep()
   if (fell_asleep)
   {
     ++sleep_stamp_;
+    keep_sleeping_for_rollback(false);                    // before the labels change
     label_new_sleepers();                                 // world_sleeping_contacts.cpp
     put_contacts_aside();
   }

@@ -223,6 +223,79 @@ TEST(WorldSleeping, RefusedStepPutsTheKeptContactsBack)
   }
 }
 
+/// Two boxes on a ground with a plank across them: one island until the
+/// plank goes.
+struct BridgeWorld
+{
+  World world{WorldSettings{}};
+  BodyId left = 0;
+  BodyId right = 0;
+  BodyId plank = 0;
+};
+
+BridgeWorld bridge(bool soft)
+{
+  Scene scene;
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.soft_step = soft;
+  scene.bodies.push_back(SceneBody{scenes::make_static_box(40.0, 1.0, {0.0, -0.5}), Material{}, "ground"});
+  scene.bodies.push_back(SceneBody{scenes::make_box(1.0, 1.0, 1.0, {-2.0, 0.5}), Material{}, "left"});
+  scene.bodies.push_back(SceneBody{scenes::make_box(1.0, 1.0, 1.0, {2.0, 0.5}), Material{}, "right"});
+  scene.bodies.push_back(SceneBody{scenes::make_box(0.5, 6.0, 0.2, {0.0, 1.1}), Material{}, "plank"});
+  BridgeWorld b;
+  b.world = make_world(scene);
+  const std::vector<BodyId> ids = b.world.body_ids();
+  b.left = ids[1];
+  b.right = ids[2];
+  b.plank = ids[3];
+  return b;
+}
+
+TEST(WorldSleeping, RefusedStepInWhichAnIslandFellAsleepLeavesNoIslandBehind)
+{
+  // The bridge falls asleep in the first frame of a refused two-frame step.
+  // Put back, it must be as a copy that never tried the step: once the plank
+  // is gone and the two boxes sleep apart, waking one leaves the other asleep.
+  for (const bool soft : {true, false})
+  {
+    BridgeWorld b = bridge(soft);
+    std::vector<World> history{b.world, b.world};
+    int frames_left = 600;
+    while (!b.world.is_sleeping(b.left) && --frames_left > 0)
+    {
+      history = {history[1], b.world};
+      b.world.step();
+    }
+    ASSERT_GT(frames_left, 0) << "soft " << soft << ": the bridge never fell asleep";
+    World world = history[1];  // the frame before it sleeps
+    const double speed = kFarSpeed;
+    const BodyId thrown =
+        world.add_body(Body(1.0, kDiskRadius, {kLargest - 1.5 * speed * kFrame, 0.0}, {speed, 0.0}), Material{});
+    const World before = world;
+    EXPECT_THROW(world.step(2), std::overflow_error) << "soft " << soft;
+    ASSERT_FALSE(world.is_sleeping(b.left)) << "soft " << soft;
+    World copy = before;
+    for (World* w : {&world, &copy})
+    {
+      w->remove_body(thrown);
+      w->remove_body(b.plank);
+      int frames = 0;
+      while (!(w->is_sleeping(b.left) && w->is_sleeping(b.right)) && frames++ < 600)
+      {
+        w->step();
+      }
+      ASSERT_LT(frames, 600) << "soft " << soft << ": the boxes never fell asleep apart";
+      // An edit wakes the body's island, and only that.
+      w->set_body_state(b.left, w->body(b.left).position(), w->body(b.left).theta(), {0.0, 0.0}, 0.0);
+    }
+    EXPECT_FALSE(copy.is_sleeping(b.left)) << "soft " << soft;
+    EXPECT_TRUE(copy.is_sleeping(b.right)) << "soft " << soft;
+    EXPECT_FALSE(world.is_sleeping(b.left)) << "soft " << soft;
+    EXPECT_TRUE(world.is_sleeping(b.right)) << "soft " << soft << ": the refused step left one island label on both";
+    EXPECT_TRUE(same_bodies(world, copy)) << "soft " << soft;
+  }
+}
+
 TEST(WorldSleeping, SnapshotOfASleepingIslandResumesExactly)
 {
   for (const bool soft : {true, false})

@@ -2,7 +2,9 @@
 # AddressSanitizer + UndefinedBehaviorSanitizer build of the ROS-free core and
 # every unit test, run with ctest. Any sanitizer report aborts the test that
 # made it (-fno-sanitize-recover=all, halt_on_error), so the script fails on
-# the first report. Idempotent: re-running reuses and refreshes the build in
+# the first report. The standard library checks every index too
+# (_GLIBCXX_ASSERTIONS): a read one past a vector's end within its capacity
+# is no heap overflow to AddressSanitizer. Idempotent: re-running reuses and refreshes the build in
 # <repo>/.build/asan (or $COLLISION2D_BUILD_ROOT/asan).
 #
 # Usage: scripts/sanitize.sh            (from anywhere; needs cmake, g++, gtest,
@@ -14,7 +16,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/asan"
 JOBS="${COLLISION2D_JOBS:-2}"
-SANITIZE_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
+SANITIZE_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all -D_GLIBCXX_ASSERTIONS"
 
 log() { printf '[sanitize] %s\n' "$*" >&2; }
 

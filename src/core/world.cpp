@@ -261,6 +261,10 @@ void WorldImpl::append_body(BodyId id, const Body& body, const Material& materia
   asleep_.push_back(false);
   island_label_.push_back(0);
   rest_time_.push_back(0.0);
+  if (clamping_)
+  {
+    toi_.push_back(1.0);  // the next detection reads it: a new body was not stopped
+  }
   append_inner_radius(bodies_.back());
 }
 
@@ -291,6 +295,10 @@ void WorldImpl::remove_body(BodyId id)
   asleep_.erase(asleep_.begin() + offset);
   island_label_.erase(island_label_.begin() + offset);
   rest_time_.erase(rest_time_.begin() + offset);
+  if (clamping_)
+  {
+    toi_.erase(toi_.begin() + offset);
+  }
   // The removed body's contacts go; the others follow the shifted dense indices.
   for (std::vector<WorldContact>* list : {&contacts_, &sleeping_contacts_})
   {
@@ -340,6 +348,7 @@ void WorldImpl::clear()
   sleeping_contacts_.clear();
   sleeping_penetration_ = 0.0;
   points_.clear();
+  clamping_ = false;
   refresh_inner_radii();
 }
 

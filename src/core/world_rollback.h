@@ -42,6 +42,8 @@ struct Rollback
   std::vector<std::uint32_t> island_label;
   std::uint32_t next_island_label = 0;
   ContactPoints points;  ///< only when a prediction reads them next step
+  bool clamping = false;     ///< a body stopped at its time of impact in the last substep ...
+  std::vector<double> toi;   ///< ... and each body's fraction of it, when one did
   double cache_h = 0.0;
   double time = 0.0;
   std::uint64_t frame_count = 0;

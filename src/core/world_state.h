@@ -108,7 +108,7 @@ struct WorldState
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
   std::vector<double> swept_reach_sq_;  ///< soft step: sweep_reach_sq per body, set for the frame
   std::vector<double> toi_;           ///< fraction of the substep each body travels
-  bool clamping_ = false;             ///< some body stopped at its time of impact this substep
+  bool clamping_ = false;             ///< some body stopped at its time of impact in the last sweep (toi_ follows edits)
   ContactPoints points_;  ///< this substep's contact points
   std::vector<BodyVelocity> velocity_;  ///< velocities during the velocity stage
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep

@@ -326,6 +326,12 @@ void WorldImpl::save_motion(int frames)
   rollback_.time = time_;
   rollback_.frame_count = frame_count_;
   rollback_.cache_h = cache_h_;
+  // The next detection keeps a body stopped at its time of impact touching.
+  rollback_.clamping = clamping_;
+  if (clamping_)
+  {
+    rollback_.toi = toi_;
+  }
   // A prediction reads the previous substep's points (world_warm_integration.cpp).
   if (settings_.warm_start_before_integration)
   {
@@ -372,6 +378,11 @@ void WorldImpl::restore_motion()
   time_ = rollback_.time;
   frame_count_ = rollback_.frame_count;
   cache_h_ = rollback_.cache_h;
+  clamping_ = rollback_.clamping;
+  if (clamping_)
+  {
+    toi_.swap(rollback_.toi);
+  }
   if (settings_.warm_start_before_integration)
   {
     points_.swap(rollback_.points);

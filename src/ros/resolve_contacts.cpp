@@ -2,7 +2,6 @@
 // time-of-impact sweep), convert back.
 #include "collision2d/ros/resolve_contacts.h"
 
-#include <exception>
 #include <string>
 #include <vector>
 
@@ -10,6 +9,7 @@
 #include "collision2d/ros/conversions.h"
 #include "collision2d/ros/reports.h"
 #include "collision2d/ros/settings_conversions.h"
+#include "service_reply.h"
 
 namespace collision2d
 {
@@ -43,20 +43,14 @@ void fill_response(const ResolveContacts::Request& request, const std::vector<Bo
   response.message = "resolved " + std::to_string(resolution.contacts.size()) + " contact points";
 }
 
-void fail(ResolveContacts::Response& response, const std::string& message)
-{
-  response = ResolveContacts::Response();
-  response.success = false;
-  response.message = message;
-}
-
 }  // namespace
 
 void resolve_contacts(const ResolveContacts::Request& request, const SolverSettings& node_settings,
                       std::size_t max_bodies, ResolveContacts::Response& response)
 {
-  try
-  {
+  // A refused request is answered and logged as the world services' are;
+  // whatever slips past validation still must not take the node down.
+  serve(response, "resolve_contacts", [&] {
     const SolverSettings& settings = request.settings.use_node_settings ? node_settings : request.settings;
     const ContactSolver solver = solver_from_msg(settings);
     std::vector<Body> bodies = bodies_from_msgs(request.bodies, max_bodies);
@@ -72,17 +66,7 @@ void resolve_contacts(const ResolveContacts::Request& request, const SolverSetti
       resolution.report.time_of_impact = 0.0;  // no sweep: the bodies did not move (the message says 0)
     }
     fill_response(request, bodies, resolution, before, response);
-  }
-  catch (const InvalidRequest& e)
-  {
-    fail(response, e.what());
-  }
-  catch (const std::exception& e)
-  {
-    // Validation should have caught everything the core refuses; whatever
-    // slips through still must not take the node down.
-    fail(response, std::string("resolve failed: ") + e.what());
-  }
+  });
 }
 
 }  // namespace ros_interface

@@ -65,7 +65,7 @@ BodyMsg body(const Numbers& n, const std::vector<Vec2>& vertices = {})
 /// The fuzzer's crash-cfe32e0c: EXACT mode, friction 1.75, a 1e-6 kg disk hit
 /// by a 1.4e4 m/s kinematic sliver. The exact solve overflowed to a
 /// non-finite velocity, which the core refused and the handler's catch-all
-/// answered ("resolve failed: body 2: velocity is not finite").
+/// answered ("resolve_contacts failed: body 2: velocity is not finite").
 ResolveContacts::Request exact_mode_overflow()
 {
   ResolveContacts::Request request;

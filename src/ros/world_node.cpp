@@ -2,6 +2,7 @@
 #include "collision2d/ros/world_node.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -25,6 +26,8 @@ constexpr int kDefaultThreads = 4;
 constexpr int kDefaultMaxBodies = 5000;
 constexpr int kDefaultMaxFramesPerCall = 10000;
 constexpr int kDefaultAutosavePeriod = 0;  ///< frames; 0 = off
+/// ~rate below this (Hz) would tick less than once in 1000 s: refused.
+constexpr double kMinRate = 1e-3;
 /// rosconsole loggers ros.collision2d.<name> (see world_node.h).
 constexpr const char* kNodeLogger = "node";
 constexpr const char* kRequestsLogger = "requests";
@@ -40,6 +43,21 @@ T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fal
     return fallback;
   }
   return value;
+}
+
+/// ~rate (Hz): 0 steps only on request; otherwise a finite rate of at
+/// least kMinRate. Anything else steps on request, with a WARN.
+double rate_param(const ::ros::NodeHandle& handle)
+{
+  double rate = 0.0;
+  handle.param("rate", rate, 0.0);
+  if (rate != 0.0 && !(std::isfinite(rate) && rate >= kMinRate))
+  {
+    ROS_WARN_NAMED(kNodeLogger, "~rate = %g must be 0 (step on request) or a finite rate >= %g Hz; stepping on request",
+                   rate, kMinRate);
+    return 0.0;
+  }
+  return rate;
 }
 
 /// $ROS_HOME/collision2d/<node name>.snapshot.yaml ($ROS_HOME defaults to
@@ -108,7 +126,7 @@ WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHand
 {
   // Scene and snapshot files naming a setting's former name say so on /rosout.
   scenes::set_warning_handler([](const std::string& message) { ROS_WARN("%s", message.c_str()); });
-  private_handle_.param("rate", rate_, 0.0);
+  rate_ = rate_param(private_handle);
   world_.set_stamp_source([this](const WorldClock& clock) { return outputs_.stamp(clock); });
   world_.set_change_listener([this](const WorldState& state) { outputs_.publish(state); });
 

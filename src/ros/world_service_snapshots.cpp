@@ -95,7 +95,17 @@ std::string WorldService::snapshot_path_or_default(const std::string& path) cons
 
 std::uint64_t WorldService::save_snapshot_locked(const std::string& path) const
 {
-  const WorldSnapshot snapshot = take_snapshot(world_, scene_, clock_locked());
+  WorldSnapshot snapshot = take_snapshot(world_, scene_, clock_locked());
+  // A hold is the dragging client's, not the world's: a body held now is
+  // saved as what it is when released, as no restore can release it.
+  for (std::size_t i = 0; i < snapshot.ids.size(); ++i)
+  {
+    const auto held = held_.find(snapshot.ids[i]);
+    if (held != held_.end())
+    {
+      snapshot.scene.bodies[i].body.set_type(held->second);
+    }
+  }
   try
   {
     save_snapshot_file(snapshot, path);

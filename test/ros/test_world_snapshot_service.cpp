@@ -207,6 +207,56 @@ TEST_F(WorldServiceSnapshotTest, AutosaveKeepsTheLastCompletedPeriodAndEveryEdit
   EXPECT_EQ(load_snapshot_file(path).clock.frames, 20u) << "the period counts on from the restored frame";
 }
 
+TEST_F(WorldServiceSnapshotTest, ABodyHeldBySomeoneIsSavedAsItIsWhenReleased)
+{
+  // A hold makes a body kinematic only while a client drags it; a snapshot
+  // taken then (saved by hand, or by autosave at the hold itself) must not
+  // keep it kinematic for good once restored.
+  WorldService service(options(1));
+  load_demo(service);
+  step(service, 5);
+  const BodyMsg dragged = service.state().bodies.back();
+  ASSERT_EQ(dragged.type, BodyMsg::DYNAMIC);
+  SetBodyState::Request hold;
+  hold.id = dragged.id;
+  hold.pose = dragged.pose;
+  hold.pose.y += 1.0;
+  hold.hold = true;
+  SetBodyState::Response held;
+  service.set_body_state(hold, held);
+  ASSERT_TRUE(held.success) << held.message;
+  const std::string autosaved = folder_.file("autosaved.yaml");
+  std::filesystem::copy_file(options(1).snapshot_path, autosaved);  // the edit's autosave
+  SaveWorld::Request by_hand;
+  by_hand.path = folder_.file("by_hand.yaml");
+  SaveWorld::Response saved;
+  service.save_world(by_hand, saved);
+  ASSERT_TRUE(saved.success) << saved.message;
+  for (const std::string& path : {autosaved, by_hand.path})
+  {
+    WorldService restored(options(0));
+    restored.load_snapshot(path);
+    for (const BodyMsg& b : restored.state().bodies)
+    {
+      if (b.id == dragged.id)
+      {
+        EXPECT_EQ(b.type, BodyMsg::DYNAMIC) << path;
+        EXPECT_EQ(b.pose.y, hold.pose.y) << path << ": the pose it was dragged to";
+      }
+    }
+  }
+  LoadWorld::Request load;
+  load.path = by_hand.path;
+  LoadWorld::Response loaded;
+  service.load_world(load, loaded);
+  ASSERT_TRUE(loaded.success) << loaded.message;
+  hold.hold = false;
+  SetBodyState::Response released;
+  service.set_body_state(hold, released);
+  ASSERT_TRUE(released.success) << released.message;
+  EXPECT_EQ(service.state().bodies.back().type, BodyMsg::DYNAMIC);
+}
+
 }  // namespace
 }  // namespace ros_interface
 }  // namespace collision2d

@@ -16,8 +16,8 @@ import rospy
 import rostest
 from rosgraph_msgs.msg import Log
 
-from collision2d.msg import Body
-from collision2d.srv import AddBody, GetWorld, LoadScene, StepWorld
+from collision2d.msg import Body, SolverSettings
+from collision2d.srv import AddBody, GetWorld, LoadScene, ResolveContacts, StepWorld
 from std_srvs.srv import Trigger
 
 NS = "/collision2d"
@@ -66,13 +66,14 @@ class RosoutRecorder:
 class RosHabits(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        for name in ("step_world", "get_world", "load_scene", "add_body", "reset_world"):
+        for name in ("step_world", "get_world", "load_scene", "add_body", "reset_world", "resolve_contacts"):
             rospy.wait_for_service("%s/%s" % (NS, name), timeout=SERVICE_WAIT_S)
         cls.step = rospy.ServiceProxy(NS + "/step_world", StepWorld)
         cls.get_world = rospy.ServiceProxy(NS + "/get_world", GetWorld)
         cls.load_scene = rospy.ServiceProxy(NS + "/load_scene", LoadScene)
         cls.add_body = rospy.ServiceProxy(NS + "/add_body", AddBody)
         cls.reset_world = rospy.ServiceProxy(NS + "/reset_world", Trigger)
+        cls.resolve = rospy.ServiceProxy(NS + "/resolve_contacts", ResolveContacts)
 
     def setUp(self):
         self.rosout = RosoutRecorder()
@@ -101,12 +102,15 @@ class RosHabits(unittest.TestCase):
         self.assertEqual(found.stdout.strip(), "", found.stdout + found.stderr)
         self.assertNotIn("loop", found.stderr)
 
-    def test_start_summary_names_scene_settings_and_services(self):
+    def fresh_node_output(self, *params):
+        """Starts a world node of its own with these private parameters and
+        returns whether it printed its start summary, and what it printed."""
         scenes = os.path.join(run_without_terminal("rospack find collision2d").stdout.strip(), "config", "scenes")
         # rosconsole writes INFO to stdout, which is block-buffered into a pipe unless asked otherwise.
         env = dict(os.environ, ROSCONSOLE_STDOUT_LINE_BUFFERED="1")
         process = subprocess.Popen(
-            ["rosrun", "collision2d", "world_node", "__ns:=/habits_fresh", "_scene:=pyramid", "_scenes_dir:=" + scenes],
+            ["rosrun", "collision2d", "world_node", "__ns:=/habits_fresh", "_scene:=pyramid", "_scenes_dir:=" + scenes]
+            + list(params),
             stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
             start_new_session=True, env=env)
         lines = []
@@ -124,14 +128,25 @@ class RosHabits(unittest.TestCase):
         finally:
             process.terminate()
             process.wait(timeout=SERVICE_WAIT_S)
-        text = "".join(lines)
-        self.assertTrue(summary.is_set(), text)
+        return summary.is_set(), "".join(lines)
+
+    def test_start_summary_names_scene_settings_and_services(self):
+        started, text = self.fresh_node_output()
+        self.assertTrue(started, text)
         self.assertIn("INFO", text)
         self.assertIn("scene 'pyramid'", text)
         self.assertIn("bodies", text)
         self.assertIn("substeps", text)
         self.assertIn("/habits_fresh/step_world", text)
         self.assertIn("/habits_fresh/set_body_state", text)
+
+    def test_a_rate_that_cannot_tick_is_refused_with_a_warn(self):
+        for rate in ("inf", "nan", "-5.0"):
+            started, text = self.fresh_node_output("_rate:=" + rate)
+            self.assertTrue(started, text)
+            self.assertIn("WARN", text)
+            self.assertIn("~rate = ", text)
+            self.assertIn("stepping on request", text)
 
     def test_refused_request_is_a_warn_naming_service_body_and_field(self):
         body = Body(id=0, shape=Body.DISK, mass=-float("nan"), radius=0.5)
@@ -140,6 +155,15 @@ class RosHabits(unittest.TestCase):
         self.assertFalse(answer.success)
         warns = self.rosout.wait_for(Log.WARN, "add_body refused", "mass")
         self.assertTrue(warns, "no WARN for the refused add_body")
+        self.assertIn(answer.message, warns[0].msg)
+
+    def test_refused_resolve_contacts_is_a_warn_too(self):
+        body = Body(id=7, shape=Body.DISK, mass=-1.0, radius=0.5)
+        answer = self.resolve(bodies=[body], settings=SolverSettings(use_node_settings=True))
+        self.assertFalse(answer.success)
+        self.assertIn("mass", answer.message)
+        warns = self.rosout.wait_for(Log.WARN, "resolve_contacts refused", "mass")
+        self.assertTrue(warns, "no WARN for the refused resolve_contacts")
         self.assertIn(answer.message, warns[0].msg)
 
     def test_loads_resets_are_info_and_steps_debug(self):

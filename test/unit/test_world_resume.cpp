@@ -184,6 +184,21 @@ TEST(WorldResume, BadStepStateIsRefusedNamingTheEntryAndChangesNothing)
   state = world.step_state();
   state.rest_time.pop_back();
   EXPECT_THROW(world.set_step_state(state), std::invalid_argument);
+  // Only a dynamic body sleeps; the ground is static.
+  state = world.step_state();
+  const BodyId ground = world.body_ids().front();
+  ASSERT_EQ(world.body(ground).type(), BodyType::Static);
+  state.asleep.push_back(ground);
+  try
+  {
+    world.set_step_state(state);
+    ADD_FAILURE() << "a static body was put to sleep";
+  }
+  catch (const std::invalid_argument& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("body " + std::to_string(ground)), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not dynamic"), std::string::npos) << e.what();
+  }
   EXPECT_EQ(state_hash(world), before);
   world.step();
   World twin = make_world(scenes::pyramid(4));

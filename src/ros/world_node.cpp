@@ -120,13 +120,12 @@ WorldNode::WorldNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHand
   : node_handle_(node_handle)
   , private_handle_(private_handle)
   , threads_(positive_param(private_handle, "threads", kDefaultThreads))
-  , rate_(0.0)
+  , rate_(rate_param(private_handle))
   , outputs_(node_handle_, world_output_options_from_params(private_handle))
   , world_(options_from_params(private_handle))
 {
   // Scene and snapshot files naming a setting's former name say so on /rosout.
   scenes::set_warning_handler([](const std::string& message) { ROS_WARN("%s", message.c_str()); });
-  rate_ = rate_param(private_handle);
   world_.set_stamp_source([this](const WorldClock& clock) { return outputs_.stamp(clock); });
   world_.set_change_listener([this](const WorldState& state) { outputs_.publish(state); });
 

@@ -11,7 +11,7 @@
 //
 // Checked: no sanitizer report; a rejection is a message naming a body or
 // the settings with nothing else filled in; the handler's catch-all
-// ("resolve failed: ...", the core refusing what validation let through)
+// ("resolve_contacts failed: ...", the core refusing what validation let through)
 // answers only requests outside the ranges the core promises finite output
 // for (fuzz_support.h); an accepted request echoes every body id in order,
 // and inside those ranges every output is finite and an all-dynamic scene
@@ -227,13 +227,13 @@ bool all_in_range(const ResolveContacts::Request& request)
 }
 
 /// Validation names the body or the settings. The handler's catch-all
-/// ("resolve failed: ...") answers what the core itself refused, e.g. a
+/// ("resolve_contacts failed: ...") answers what the core itself refused, e.g. a
 /// solve that overflowed: acceptable only outside the promised ranges.
 void check_rejection(const ResolveContacts::Request& request, const ResolveContacts::Response& response)
 {
   const std::string& message = response.message;
   const bool names_field = message.rfind("bodies", 0) == 0 || message.rfind("settings", 0) == 0;
-  const bool core_refused = message.rfind("resolve failed: ", 0) == 0 && !all_in_range(request);
+  const bool core_refused = message.rfind("resolve_contacts failed: ", 0) == 0 && !all_in_range(request);
   if (!names_field && !core_refused)
   {
     std::fprintf(stderr, "rejection: '%s'\n", message.c_str());

@@ -172,7 +172,7 @@ TEST(ExtremesSpeed, SoftStepBulletStopsEvenWithTimeOfImpactOff)
 /// soft step with one substep a frame: the frame's contacts hold the heavy
 /// disk's hit, not the light one's flight into the wall (it was at rest), so
 /// the sweep stops it there, in the frame's last substep. A resting disk far
-/// away comes first in body order. Returns the frame after the stop.
+/// away comes first in body order. Returns the world as that frame left it.
 World light_disk_stopped_at_the_wall(BodyId& far_disk, BodyId& light)
 {
   constexpr double kRadius = 0.05;      // m
@@ -208,13 +208,13 @@ TEST(ExtremesSpeed, EditsAfterAStopAtTheTimeOfImpactKeepWhatTheNextDetectionKnow
   // nothing), nor may a body added next to the wall read past the records'
   // end (scripts/sanitize.sh checks every index).
   BodyId far_disk = 0;
-  BodyId bullet = 0;
-  const World stopped = light_disk_stopped_at_the_wall(far_disk, bullet);
+  BodyId light = 0;
+  const World stopped = light_disk_stopped_at_the_wall(far_disk, light);
   World kept = stopped;
   World removed = stopped;
   removed.remove_body(far_disk);
   World added = stopped;
-  // Overlapping the wall's face a little, far above the bullet: a pair with the wall.
+  // Overlapping the wall's face a little, far above the light disk: a pair with the wall.
   constexpr double kDiskRadius = 0.1;  // m
   added.add_body(Body(1.0, kDiskRadius, {kWallX - 0.5 * kWallThickness - kDiskRadius + 1e-4, 1.5}, {0.0, 0.0}),
                  Material{});
@@ -224,10 +224,10 @@ TEST(ExtremesSpeed, EditsAfterAStopAtTheTimeOfImpactKeepWhatTheNextDetectionKnow
     {
       w->step();
     }
-    const Body& a = kept.body(bullet);
+    const Body& a = kept.body(light);
     for (const World* w : {&removed, &added})
     {
-      const Body& b = w->body(bullet);
+      const Body& b = w->body(light);
       ASSERT_TRUE(a.position() == b.position() && a.velocity() == b.velocity())
           << (w == &removed ? "far disk removed" : "disk added") << ", frame " << frame;
     }

@@ -31,10 +31,11 @@ MAX_INPUT_BYTES=4096
 # no input that a clean run here did not. COLLISION2D_FUZZ_SEED=0 draws a fresh
 # seed each run, for longer bug hunts.
 SEED="${COLLISION2D_FUZZ_SEED:-1}"
-# The message conversion, validation and ResolveContacts handler, and the
-# core they call; nothing that needs a node or a master.
-ROS_SOURCES=(conversions validation settings_conversions reports resolve_contacts)
-ROS_LIBS=(-lroscpp_serialization -lrostime -lcpp_common)
+# The message conversion, validation and ResolveContacts handler (which logs
+# a refusal through rosconsole), and the core they call; nothing that needs a
+# node or a master.
+ROS_SOURCES=(conversions validation settings_conversions reports printable resolve_contacts)
+ROS_LIBS=(-lrosconsole -lroscpp_serialization -lrostime -lcpp_common)
 
 log() { printf '[fuzz_ros] %s\n' "$*" >&2; }
 

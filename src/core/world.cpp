@@ -234,12 +234,13 @@ void World::set_step_state(const StepState& state)
     }
     // Only a dynamic body sleeps: a kinematic one marked asleep would stay
     // where it is, whatever its velocity, until something woke it.
-    if (w.bodies_[w.index_of(id)].type() != BodyType::Dynamic)
+    const std::size_t i = w.index_of(id);
+    if (w.bodies_[i].type() != BodyType::Dynamic)
     {
       throw std::invalid_argument(where + "asleep names body " + std::to_string(id) +
                                   ", which is not dynamic (only a dynamic body sleeps)");
     }
-    asleep[w.index_of(id)] = true;
+    asleep[i] = true;
   }
   for (double t : state.rest_time)
   {

@@ -227,10 +227,10 @@ TEST(WorldSleeping, RefusedStepPutsTheKeptContactsBack)
 /// plank goes.
 struct BridgeWorld
 {
-  World world{WorldSettings{}};
-  BodyId left = 0;
-  BodyId right = 0;
-  BodyId plank = 0;
+  World world;
+  BodyId left;
+  BodyId right;
+  BodyId plank;
 };
 
 BridgeWorld bridge(bool soft)
@@ -242,13 +242,7 @@ BridgeWorld bridge(bool soft)
   scene.bodies.push_back(SceneBody{scenes::make_box(1.0, 1.0, 1.0, {-2.0, 0.5}), Material{}, "left"});
   scene.bodies.push_back(SceneBody{scenes::make_box(1.0, 1.0, 1.0, {2.0, 0.5}), Material{}, "right"});
   scene.bodies.push_back(SceneBody{scenes::make_box(0.5, 6.0, 0.2, {0.0, 1.1}), Material{}, "plank"});
-  BridgeWorld b;
-  b.world = make_world(scene);
-  const std::vector<BodyId> ids = b.world.body_ids();
-  b.left = ids[1];
-  b.right = ids[2];
-  b.plank = ids[3];
-  return b;
+  return BridgeWorld{make_world(scene), 1, 2, 3};  // make_world: ids in scene order
 }
 
 TEST(WorldSleeping, RefusedStepInWhichAnIslandFellAsleepLeavesNoIslandBehind)

@@ -156,6 +156,32 @@ private:
   dynamic_reconfigure::Config msg_;
 };
 
+/// Sets in `out` each world_* parameter whose value in `asked` differs from `seen`.
+template <typename Parameter>
+void copy_changed_world_fields(const std::vector<Parameter>& asked, const std::vector<Parameter>& seen,
+                               std::vector<Parameter>& out)
+{
+  const std::string prefix = kWorldPrefix;
+  for (const Parameter& parameter : asked)
+  {
+    if (parameter.name.compare(0, prefix.size(), prefix) != 0)
+    {
+      continue;
+    }
+    const auto same_name = [&](const Parameter& p) { return p.name == parameter.name; };
+    const auto before = std::find_if(seen.begin(), seen.end(), same_name);
+    if (before != seen.end() && before->value == parameter.value)
+    {
+      continue;
+    }
+    const auto target = std::find_if(out.begin(), out.end(), same_name);
+    if (target != out.end())
+    {
+      target->value = parameter.value;
+    }
+  }
+}
+
 }  // namespace
 
 ResolveSettings resolve_settings_from_config(const Collision2dConfig& config)
@@ -217,17 +243,36 @@ SolverSettings accept_solver_config(Collision2dConfig& config, const SolverSetti
   return resolve_settings_to_msg(kept);
 }
 
-void accept_world_config(Collision2dConfig& config, const WorldSettings& current,
-                         const std::function<void(const WorldSettings&)>& apply)
+WorldSettings merge_world_config(const Collision2dConfig& config, const Collision2dConfig& shown,
+                                 const WorldSettings& current)
+{
+  Collision2dConfig merged = config;
+  world_settings_to_config(current, merged);
+  dynamic_reconfigure::Config asked;
+  dynamic_reconfigure::Config seen;
+  dynamic_reconfigure::Config out;
+  config.__toMessage__(asked);
+  shown.__toMessage__(seen);
+  merged.__toMessage__(out);
+  copy_changed_world_fields(asked.doubles, seen.doubles, out.doubles);
+  copy_changed_world_fields(asked.ints, seen.ints, out.ints);
+  copy_changed_world_fields(asked.bools, seen.bools, out.bools);
+  merged.__fromMessage__(out);
+  return world_settings_from_config(merged);
+}
+
+void accept_world_config(Collision2dConfig& config, const Collision2dConfig& shown, const WorldSettingsEditor& edit)
 {
   try
   {
-    apply(world_settings_from_config(config));
+    const WorldSettings now =
+        edit([&](const WorldSettings& current) { return merge_world_config(config, shown, current); });
+    world_settings_to_config(now, config);
   }
   catch (const InvalidRequest& e)
   {
     ROS_WARN("%s: refused, the world's settings stay as they were", e.what());
-    world_settings_to_config(current, config);
+    world_settings_to_config(world_settings_from_config(shown), config);
   }
 }
 

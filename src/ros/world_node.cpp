@@ -285,7 +285,7 @@ void WorldNode::on_reconfigure(Collision2dConfig& config, std::uint32_t level)
   }
   if (reconfigure_started_ && (level & kWorldLevel))
   {
-    accept_world_config(config, world_.settings(), [this](const WorldSettings& s) { world_.set_settings(s); });
+    accept_world_config(config, config_, [this](const auto& change) { return world_.edit_settings(change); });
   }
   config_ = config;
 }

@@ -181,9 +181,10 @@ void WorldService::step_frame()
   step_locked(1, 0.0);
 }
 
-void WorldService::set_settings(const WorldSettings& settings)
+WorldSettings WorldService::edit_settings(const std::function<WorldSettings(const WorldSettings&)>& change)
 {
   Lock lock(mutex_);
+  const WorldSettings settings = change(world_.settings());
   World next = world_;
   try
   {
@@ -195,6 +196,7 @@ void WorldService::set_settings(const WorldSettings& settings)
   }
   commit(std::move(next), scene_, Change::Edit);
   ROS_INFO_NAMED(kWorldLogger, "world settings changed: %s", settings_summary(settings).c_str());
+  return settings;
 }
 
 WorldSettings WorldService::settings() const

@@ -1,7 +1,8 @@
 // The settings tables against their ROS faces, without a master: the
 // messages, the cfg's parameters and their defaults match the tables, every
-// field survives each conversion both ways, and an out-of-range reconfigure
-// value is refused (named, with its range) and the old value put back.
+// field survives each conversion both ways, an out-of-range reconfigure value
+// is refused (named, with its range) and the old value put back, and a request
+// changes only the fields its client changed.
 #include <limits>
 #include <set>
 #include <string>
@@ -34,6 +35,15 @@ std::string refusal(const std::function<void()>& call)
     return e.what();
   }
   return "";
+}
+
+/// Edits `world` the way the node's WorldService does: all or nothing.
+WorldSettingsEditor editor(WorldSettings& world)
+{
+  return [&world](const auto& change) {
+    world = change(world);
+    return world;
+  };
 }
 
 TEST(SettingsTables, CfgDeclaresExactlyTheTablesParameters)
@@ -147,17 +157,19 @@ TEST(SettingsTables, ConfigRefusalsNameTheParameterValueAndRange)
 
 TEST(SettingsTables, RefusedConfigPutsTheCurrentSettingsBack)
 {
-  WorldSettings current;
-  current.dt = 0.01;
-  Collision2dConfig config = Collision2dConfig::__getDefault__();
-  world_settings_to_config(current, config);
+  WorldSettings world;
+  world.dt = 0.01;
+  Collision2dConfig shown = Collision2dConfig::__getDefault__();
+  world_settings_to_config(world, shown);
+  Collision2dConfig config = shown;
   config.world_dt = -1.0;
   config.world_substeps = 9;  // valid, but the change is all or nothing
-  bool applied = false;
-  accept_world_config(config, current, [&](const WorldSettings&) { applied = true; });
-  EXPECT_FALSE(applied);
+  const WorldSettings before = world;
+  accept_world_config(config, shown, editor(world));
+  EXPECT_EQ(world.dt, before.dt);
+  EXPECT_EQ(world.substeps, before.substeps);
   EXPECT_EQ(config.world_dt, 0.01);
-  EXPECT_EQ(config.world_substeps, current.substeps);
+  EXPECT_EQ(config.world_substeps, before.substeps);
 
   ResolveSettings kept = test::resolve_settings_off_default();
   resolve_settings_to_config(kept, config);
@@ -168,6 +180,39 @@ TEST(SettingsTables, RefusedConfigPutsTheCurrentSettingsBack)
   // A valid change goes through.
   config.solver_restitution = 0.125;
   EXPECT_EQ(accept_solver_config(config, resolve_settings_to_msg(kept)).restitution, 0.125);
+}
+
+// A request changes only the fields its client changed: a scene loaded after
+// the client read the config keeps every other setting it brought.
+TEST(SettingsTables, AReconfigureRequestChangesOnlyWhatItsClientChanged)
+{
+  WorldSettings old_scene;
+  old_scene.dt = 0.02;
+  old_scene.gravity = Vec2{0.0, -9.81};
+  Collision2dConfig shown = Collision2dConfig::__getDefault__();
+  world_settings_to_config(old_scene, shown);
+  Collision2dConfig config = shown;
+  config.world_substeps = old_scene.substeps + 3;
+  config.world_gravity_x = 1.5;
+
+  WorldSettings loaded;  // what a scene load put in place meanwhile
+  loaded.dt = 0.005;
+  loaded.gravity = Vec2{0.0, -1.62};
+  loaded.sleeping = Toggle::Off;
+  WorldSettings expected = loaded;
+  expected.substeps = old_scene.substeps + 3;
+  expected.gravity.x = 1.5;
+
+  const WorldSettings merged = merge_world_config(config, shown, loaded);
+  test::expect_same_world_settings(merged, expected);
+  // Nothing asked, nothing changed.
+  test::expect_same_world_settings(merge_world_config(shown, shown, loaded), loaded);
+
+  WorldSettings world = loaded;
+  accept_world_config(config, shown, editor(world));
+  test::expect_same_world_settings(world, expected);
+  EXPECT_EQ(config.world_dt, loaded.dt);  // the config shows what is in force
+  EXPECT_EQ(config.world_substeps, expected.substeps);
 }
 
 }  // namespace

@@ -35,10 +35,21 @@ void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& 
 /// defaults if `current` itself is invalid) after a WARN naming the field, the
 /// value and the range, written back into `config` so clients see it.
 SolverSettings accept_solver_config(Collision2dConfig& config, const SolverSettings& current);
-/// Calls apply() with the world settings `config` asks for; when one is out of
-/// range (or apply throws InvalidRequest) WARNs and writes `current` back into `config`.
-void accept_world_config(Collision2dConfig& config, const WorldSettings& current,
-                         const std::function<void(const WorldSettings&)>& apply);
+/// `current` with each world_* field that `config` changes from `shown` (the
+/// config the server last published). A request is made against what its
+/// client saw; applied this way it changes only what the client changed, even
+/// when a scene load replaced the other settings meanwhile. Throws
+/// InvalidRequest naming a field out of range.
+WorldSettings merge_world_config(const Collision2dConfig& config, const Collision2dConfig& shown,
+                                 const WorldSettings& current);
+
+/// Applies a change to the world's settings atomically; returns the settings then in force.
+using WorldSettingsEditor =
+    std::function<WorldSettings(const std::function<WorldSettings(const WorldSettings&)>& change)>;
+/// Edits the world's settings with what `config` changes from `shown` and
+/// writes the result into `config`; when a field is out of range (or the edit
+/// throws InvalidRequest) WARNs and writes `shown`'s world fields back instead.
+void accept_world_config(Collision2dConfig& config, const Collision2dConfig& shown, const WorldSettingsEditor& edit);
 
 /// Names of the parameters the tables ask of the cfg, in table order.
 std::vector<std::string> table_parameter_names();

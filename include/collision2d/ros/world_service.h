@@ -82,8 +82,11 @@ public:
 
   /// One frame of the world's dt (the free-running timer). Throws on failure.
   void step_frame();
-  /// Throws InvalidRequest naming the field; the world is unchanged then.
-  void set_settings(const WorldSettings& settings);
+  /// Replaces the settings by change(the settings now), computed under the
+  /// world's lock so no other edit lands in between; returns the new settings.
+  /// Throws InvalidRequest naming the field (from change or the table); the
+  /// world is unchanged then.
+  WorldSettings edit_settings(const std::function<WorldSettings(const WorldSettings&)>& change);
   /// The committed settings and state: never wait for a step in progress.
   WorldSettings settings() const;
   WorldState state() const;

@@ -2,11 +2,13 @@
 // response with success = false, a printable message and a WARN.
 #pragma once
 
+#include <cstdint>
 #include <exception>
 #include <string>
 
 #include <ros/console.h>
 
+#include "collision2d/ros/messages.h"
 #include "collision2d/ros/printable.h"
 #include "collision2d/ros/validation.h"
 
@@ -48,6 +50,20 @@ void serve(Response& response, const char* service, Action action)
   catch (const std::exception& e)
   {
     fail(response, service, std::string(service) + " failed: " + e.what());
+  }
+}
+
+/// The summary of the world a request left (frames, time, bodies) and, when
+/// the client asked for it, the whole state: an answer that fits a terminal.
+template <typename Response>
+void summarize_world(const WorldState& state, bool return_state, Response& response)
+{
+  response.frame_count = state.frame_count;
+  response.sim_time = state.sim_time;
+  response.body_count = static_cast<std::uint32_t>(state.bodies.size());
+  if (return_state)
+  {
+    response.state.push_back(state);
   }
 }
 

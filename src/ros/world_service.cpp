@@ -59,14 +59,7 @@ void WorldService::step(const StepWorld::Request& request, StepWorld::Response& 
     const Totals before = totals_of(world_);
     const StepReport report = step_locked(static_cast<int>(request.frames), request.dt);
     response.report = step_summary_to_msg(report, before, totals_of(world_));
-    const WorldClock clock = clock_locked();
-    response.frame_count = clock.frames;
-    response.sim_time = clock.time;
-    response.body_count = static_cast<std::uint32_t>(world_.body_count());
-    if (request.return_state)
-    {
-      response.state.push_back(*committed());
-    }
+    summarize_world(*committed(), request.return_state, response);
     response.success = true;
     response.message = "stepped " + std::to_string(request.frames) + " frames";
   });
@@ -76,10 +69,10 @@ void WorldService::load_scene(const LoadScene::Request& request, LoadScene::Resp
 {
   serve(response, "load_scene", [&] {
     load(request.scene);
-    response.state = state();
+    const WorldState loaded = state();
+    summarize_world(loaded, request.return_state, response);
     response.success = true;
-    response.message = "loaded scene '" + response.state.scene + "' with " +
-                       std::to_string(response.state.bodies.size()) + " bodies";
+    response.message = "loaded scene '" + loaded.scene + "' with " + std::to_string(loaded.bodies.size()) + " bodies";
   });
   response.available = available_scenes();
 }
@@ -102,7 +95,7 @@ void WorldService::set_world(const SetWorld::Request& request, SetWorld::Respons
     active_ = ActiveEffects{};
     origin_ = WorldClock{};
     commit(std::move(world), "", Change::NewWorld);
-    response.state = *committed();
+    summarize_world(*committed(), request.return_state, response);
     response.success = true;
     response.message = "world set with " + std::to_string(scene.bodies.size()) + " bodies";
     ROS_INFO_NAMED(kWorldLogger, "%s; %s", response.message.c_str(), settings_summary(world_.settings()).c_str());

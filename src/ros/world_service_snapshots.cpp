@@ -35,10 +35,10 @@ void WorldService::load_world(const LoadWorld::Request& request, LoadWorld::Resp
   serve(response, "load_world", [&] {
     const std::string path = snapshot_path_or_default(request.path);
     load_snapshot(path);
-    response.state = state();
+    summarize_world(state(), request.return_state, response);
     response.success = true;
-    response.message = "restored frame " + std::to_string(response.state.frame_count) + " with " +
-                       std::to_string(response.state.bodies.size()) + " bodies from " + path;
+    response.message = "restored frame " + std::to_string(response.frame_count) + " with " +
+                       std::to_string(response.body_count) + " bodies from " + path;
   });
 }
 

@@ -99,14 +99,15 @@ class PythonClient(unittest.TestCase):
 
     def test_dynamic_reconfigure_tunes_solver_and_world(self):
         reconfigure = dynamic_reconfigure.client.Client("world", timeout=SERVICE_WAIT_S)
-        loaded = rospy.ServiceProxy("load_scene", LoadScene)(scene="resting_box")
+        loaded = rospy.ServiceProxy("load_scene", LoadScene)(scene="resting_box", return_state=True)
         self.assertTrue(loaded.success, loaded.message)
         # After a load the world group shows the scene's settings.
         shown = reconfigure.get_configuration(timeout=SERVICE_WAIT_S)
-        self.assertEqual(shown["world_substeps"], loaded.state.settings.substeps)
-        self.assertAlmostEqual(shown["world_dt"], loaded.state.settings.dt, places=12)
-        self.assertEqual(shown["world_solver_mode"], loaded.state.settings.solver_mode)
-        self.assertEqual(shown["world_position_iterations"], loaded.state.settings.position_iterations)
+        settings = loaded.state[0].settings
+        self.assertEqual(shown["world_substeps"], settings.substeps)
+        self.assertAlmostEqual(shown["world_dt"], settings.dt, places=12)
+        self.assertEqual(shown["world_solver_mode"], settings.solver_mode)
+        self.assertEqual(shown["world_position_iterations"], settings.position_iterations)
         original = shown["solver_restitution"]
         try:
             reconfigure.update_configuration({"solver_restitution": 1.0, "world_substeps": 7,

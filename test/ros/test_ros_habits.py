@@ -198,6 +198,18 @@ class RosHabits(unittest.TestCase):
         self.assertEqual(answer.state[0].frame_count, answer.frame_count)
         self.assertEqual(len(answer.state[0].bodies), answer.body_count)
 
+    def test_load_answer_fits_a_terminal_unless_the_state_is_asked_for(self):
+        run = run_without_terminal("rosservice call %s/load_scene '{scene: pyramid}'" % NS)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertLessEqual(len(run.stdout.splitlines()), SCREEN_LINES, run.stdout)
+        self.assertIn("state: []", run.stdout)
+        self.assertIn("success: True", run.stdout)
+        answer = self.load_scene(scene="pyramid", return_state=True)
+        self.assertEqual(len(answer.state), 1)
+        self.assertEqual(answer.state[0].frame_count, answer.frame_count)
+        self.assertEqual(len(answer.state[0].bodies), answer.body_count)
+        self.assertIn("body_count: %d" % answer.body_count, run.stdout)
+
     def test_get_world_during_a_long_step_answers_at_once_with_the_last_state(self):
         self.assertTrue(self.load_scene(scene="demo").success)
         before = self.get_world().state.frame_count

@@ -79,16 +79,18 @@ TEST_F(WorldServices, DroppedDiskBounces)
   BodyMsg ball = disk_msg(1, {0.0, kHeight + 0.25}, {}, 0.25);
   ball.material.restitution = kRestitution;
   request.bodies = {ground, ball};
+  request.return_state = true;
   const SetWorld set = call<SetWorld>("set_world", request);
   ASSERT_TRUE(set.response.success) << set.response.message;
-  ASSERT_LT(set.response.state.settings.gravity.y, 0.0);
+  const WorldState& start = set.response.state.at(0);
+  ASSERT_LT(start.settings.gravity.y, 0.0);
 
   // Fall (~0.64 s), bounce, and rise to the next apex.
   double lowest = kHeight, apex_after_bounce = 0.0;
   bool bounced = false;
   for (int frame = 0; frame < 150; ++frame)
   {
-    const BodyMsg* disk = find_body(step(1).state.at(0), set.response.state.bodies[1].id);
+    const BodyMsg* disk = find_body(step(1).state.at(0), start.bodies[1].id);
     ASSERT_NE(disk, nullptr);
     const double height = disk->pose.y - 0.25;
     lowest = std::min(lowest, height);
@@ -101,8 +103,8 @@ TEST_F(WorldServices, DroppedDiskBounces)
   ASSERT_TRUE(bounced) << "the disk never moved up";
   // Frames sample the fall every dt: the lowest sample is within one frame's
   // travel at impact speed of the ground.
-  const double impact_speed = std::sqrt(2.0 * -set.response.state.settings.gravity.y * kHeight);
-  EXPECT_LT(lowest, impact_speed * set.response.state.settings.dt) << "bounced before reaching the ground";
+  const double impact_speed = std::sqrt(2.0 * -start.settings.gravity.y * kHeight);
+  EXPECT_LT(lowest, impact_speed * start.settings.dt) << "bounced before reaching the ground";
   EXPECT_GE(lowest, -0.01) << "sank into the ground";
   // Newton's e (min of the two materials, 0.8) returns e^2 of the drop height.
   EXPECT_NEAR(apex_after_bounce, kRestitution * kRestitution * kHeight, 0.15 * kHeight);
@@ -167,18 +169,50 @@ TEST_F(WorldServices, SetWorldRoundTripsGetWorld)
   SetWorld::Request request;
   request.bodies = before_.bodies;
   request.settings = before_.settings;
+  request.return_state = true;
   const SetWorld set = call<SetWorld>("set_world", request);
   ASSERT_TRUE(set.response.success) << set.response.message;
   // Same bodies and settings, restarted at frame 0.
-  ASSERT_EQ(set.response.state.bodies.size(), before_.bodies.size());
+  ASSERT_EQ(set.response.state.size(), 1u);
+  const WorldState& state = set.response.state[0];
+  ASSERT_EQ(state.bodies.size(), before_.bodies.size());
   for (std::size_t i = 0; i < before_.bodies.size(); ++i)
   {
-    EXPECT_EQ(set.response.state.bodies[i].pose, before_.bodies[i].pose);
-    EXPECT_EQ(set.response.state.bodies[i].twist, before_.bodies[i].twist);
-    EXPECT_EQ(set.response.state.bodies[i].material, before_.bodies[i].material);
+    EXPECT_EQ(state.bodies[i].pose, before_.bodies[i].pose);
+    EXPECT_EQ(state.bodies[i].twist, before_.bodies[i].twist);
+    EXPECT_EQ(state.bodies[i].material, before_.bodies[i].material);
   }
-  EXPECT_EQ(set.response.state.settings, before_.settings);
-  EXPECT_EQ(set.response.state.frame_count, 0u);
+  EXPECT_EQ(state.settings, before_.settings);
+  EXPECT_EQ(state.frame_count, 0u);
+  // The summary says the same as the state.
+  EXPECT_EQ(set.response.frame_count, state.frame_count);
+  EXPECT_EQ(set.response.sim_time, state.sim_time);
+  EXPECT_EQ(set.response.body_count, state.bodies.size());
+}
+
+// The answers of the services that replace the world fit a terminal: the
+// state comes only when asked for, and the summary counts the new world.
+TEST_F(WorldServices, ReplacingTheWorldAnswersASummaryUnlessTheStateIsAskedFor)
+{
+  step(3);
+  SetWorld::Request set_request;
+  set_request.bodies = before_.bodies;
+  set_request.keep_settings = true;
+  const SetWorld set = call<SetWorld>("set_world", set_request);
+  ASSERT_TRUE(set.response.success) << set.response.message;
+  EXPECT_TRUE(set.response.state.empty());
+  EXPECT_EQ(set.response.frame_count, 0u);
+  EXPECT_EQ(set.response.sim_time, 0.0);
+  EXPECT_EQ(set.response.body_count, before_.bodies.size());
+
+  LoadScene::Request load_request;
+  load_request.scene = "newtons_cradle";
+  const LoadScene loaded = call<LoadScene>("load_scene", load_request);
+  ASSERT_TRUE(loaded.response.success) << loaded.response.message;
+  EXPECT_TRUE(loaded.response.state.empty());
+  EXPECT_FALSE(loaded.response.available.empty());
+  EXPECT_EQ(loaded.response.body_count, get_world().bodies.size());
+  EXPECT_GT(loaded.response.body_count, before_.bodies.size());
 }
 
 TEST_F(WorldServices, SetWorldKeepsTheSolverSettings)
@@ -191,9 +225,10 @@ TEST_F(WorldServices, SetWorldKeepsTheSolverSettings)
   request.settings.position_iterations = before_.settings.position_iterations + 2;
   request.settings.position_block = !before_.settings.position_block;
   request.settings.exact_position_correction = !before_.settings.exact_position_correction;
+  request.return_state = true;
   const SetWorld set = call<SetWorld>("set_world", request);
   ASSERT_TRUE(set.response.success) << set.response.message;
-  for (const WorldConfig& shown : {set.response.state.settings, get_world().settings, step(1).state.at(0).settings})
+  for (const WorldConfig& shown : {set.response.state.at(0).settings, get_world().settings, step(1).state.at(0).settings})
   {
     EXPECT_EQ(shown.solver_mode, WorldConfig::SOLVER_EXACT);
     EXPECT_EQ(shown.position_iterations, request.settings.position_iterations);
@@ -223,6 +258,7 @@ TEST_F(WorldServices, ExactSolverCarriesAMillionToOneStack)
   request.settings.solver_mode = WorldConfig::SOLVER_EXACT;
   request.settings.exact_position_correction = true;
   request.settings.compliance = 0.0;
+  request.return_state = true;
   const SetWorld set = call<SetWorld>("set_world", request);
   ASSERT_TRUE(set.response.success) << set.response.message;
 
@@ -239,7 +275,7 @@ TEST_F(WorldServices, ExactSolverCarriesAMillionToOneStack)
     EXPECT_LT(depth, allowed) << "the heavy box sank into the light one at frame " << response.state.at(0).frame_count;
     // Still resting on it, not thrown off by an overcorrection.
     EXPECT_GT(depth, -allowed) << "the heavy box left the light one at frame " << response.state.at(0).frame_count;
-    const BodyMsg* ground = find_body(response.state.at(0), set.response.state.bodies.front().id);
+    const BodyMsg* ground = find_body(response.state.at(0), set.response.state.at(0).bodies.front().id);
     ASSERT_TRUE(ground != nullptr && ground->type == BodyMsg::STATIC);
     EXPECT_LT(vertical_extent(*ground).high - vertical_extent(*light).low, allowed)
         << "the light box sank into the ground";

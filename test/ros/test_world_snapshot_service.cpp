@@ -99,10 +99,15 @@ TEST_F(WorldServiceSnapshotTest, SaveThenLoadBringsBackTheSavedFrame)
   const WorldState later = step(service, 5);
   ASSERT_EQ(later.frame_count, 15u);
   LoadWorld::Request load;
+  load.return_state = true;
   LoadWorld::Response loaded;
   service.load_world(load, loaded);
   ASSERT_TRUE(loaded.success) << loaded.message;
-  expect_restored(saved, loaded.state);
+  ASSERT_EQ(loaded.state.size(), 1u);
+  expect_restored(saved, loaded.state[0]);
+  EXPECT_EQ(loaded.frame_count, saved.frame_count);
+  EXPECT_EQ(loaded.sim_time, saved.sim_time);
+  EXPECT_EQ(loaded.body_count, saved.bodies.size());
 
   // The clock runs on from the saved frame, and reset returns to it.
   const WorldState resumed = step(service, 3);

@@ -55,9 +55,11 @@ inline WorldState load(const std::string& scene)
 {
   LoadScene::Request request;
   request.scene = scene;
+  request.return_state = true;
   const LoadScene srv = call<LoadScene>("load_scene", request);
   EXPECT_TRUE(srv.response.success) << srv.response.message;
-  return srv.response.state;
+  EXPECT_EQ(srv.response.state.size(), srv.response.success ? 1u : 0u);
+  return srv.response.state.empty() ? WorldState() : srv.response.state.front();
 }
 
 /// A step that asks for the full state in the answer (return_state).

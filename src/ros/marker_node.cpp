@@ -7,6 +7,8 @@
 
 #include <visualization_msgs/MarkerArray.h>
 
+#include "node_params.h"
+
 namespace collision2d
 {
 namespace ros_interface
@@ -24,7 +26,7 @@ constexpr double kDefaultDragHandleAlpha = 0.01;
 double max_rate_from_params(const ::ros::NodeHandle& private_handle)
 {
   double rate = kDefaultMaxRateHz;
-  private_handle.param("max_rate", rate, kDefaultMaxRateHz);
+  read_param(private_handle, "max_rate", rate);
   if (!(rate > 0.0))
   {
     ROS_WARN("~max_rate must be > 0 Hz; using %g", kDefaultMaxRateHz);
@@ -38,13 +40,12 @@ double max_rate_from_params(const ::ros::NodeHandle& private_handle)
 MarkerOptions marker_options_from_params(const ::ros::NodeHandle& private_handle)
 {
   MarkerOptions options;
-  const MarkerOptions defaults;
-  private_handle.param<std::string>("frame_id", options.frame_id, defaults.frame_id);
-  private_handle.param("show_contacts", options.show_contacts, defaults.show_contacts);
-  private_handle.param("show_velocities", options.show_velocities, defaults.show_velocities);
-  private_handle.param("show_labels", options.show_labels, defaults.show_labels);
-  private_handle.param("impulse_scale", options.impulse_scale, defaults.impulse_scale);
-  private_handle.param("velocity_scale", options.velocity_scale, defaults.velocity_scale);
+  read_param(private_handle, "frame_id", options.frame_id);
+  read_param(private_handle, "show_contacts", options.show_contacts);
+  read_param(private_handle, "show_velocities", options.show_velocities);
+  read_param(private_handle, "show_labels", options.show_labels);
+  read_param(private_handle, "impulse_scale", options.impulse_scale);
+  read_param(private_handle, "velocity_scale", options.velocity_scale);
   return options;
 }
 
@@ -55,11 +56,11 @@ MarkerNode::MarkerNode(const ::ros::NodeHandle& node_handle, const ::ros::NodeHa
   publisher_ = node_handle_.advertise<visualization_msgs::MarkerArray>("markers", kMarkerQueueSize, /*latch=*/true);
   subscriber_ = node_handle_.subscribe("world_state", kStateQueueSize, &MarkerNode::on_state, this);
   bool draggable = true;
-  private_handle.param("draggable", draggable, draggable);
+  read_param(private_handle, "draggable", draggable);
   if (draggable)
   {
     double handle_alpha = kDefaultDragHandleAlpha;
-    private_handle.param("drag_handle_alpha", handle_alpha, kDefaultDragHandleAlpha);
+    read_param(private_handle, "drag_handle_alpha", handle_alpha);
     dragger_ = std::make_unique<BodyDragger>(node_handle_, builder_.options().frame_id,
                                              static_cast<float>(handle_alpha));
   }

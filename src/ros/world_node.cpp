@@ -15,6 +15,7 @@
 #include "collision2d/ros/settings_conversions.h"
 #include "collision2d/ros/validation.h"
 #include "collision2d/scenes/scene_file.h"
+#include "node_params.h"
 
 namespace collision2d
 {
@@ -36,7 +37,7 @@ template <typename T>
 T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fallback)
 {
   T value = fallback;
-  handle.param(name, value, fallback);
+  read_param(handle, name, value);
   if (!(value > T{0}))
   {
     ROS_WARN_NAMED(kNodeLogger, "~%s must be > 0; using %s", name.c_str(), std::to_string(fallback).c_str());
@@ -50,7 +51,7 @@ T positive_param(const ::ros::NodeHandle& handle, const std::string& name, T fal
 double rate_param(const ::ros::NodeHandle& handle)
 {
   double rate = 0.0;
-  handle.param("rate", rate, 0.0);
+  read_param(handle, "rate", rate);
   if (rate != 0.0 && !(std::isfinite(rate) && rate >= kMinRate))
   {
     ROS_WARN_NAMED(kNodeLogger, "~rate = %g must be 0 (step on request) or a finite rate >= %g Hz; stepping on request",
@@ -79,7 +80,7 @@ std::string default_snapshot_path()
 std::uint32_t autosave_period_param(const ::ros::NodeHandle& handle)
 {
   int period = kDefaultAutosavePeriod;
-  handle.param("autosave_period", period, kDefaultAutosavePeriod);
+  read_param(handle, "autosave_period", period);
   if (period < 0)
   {
     ROS_WARN_NAMED(kNodeLogger, "~autosave_period must be >= 0 frames; autosave off");
@@ -94,9 +95,12 @@ WorldServiceOptions options_from_params(const ::ros::NodeHandle& handle)
   options.max_bodies = static_cast<std::size_t>(positive_param(handle, "max_bodies", kDefaultMaxBodies));
   options.max_frames_per_call =
       static_cast<std::uint32_t>(positive_param(handle, "max_frames_per_call", kDefaultMaxFramesPerCall));
-  handle.param<std::string>("scenes_dir", options.scenes_dir, COLLISION2D_DEFAULT_SCENES_DIR);
-  handle.param<std::string>("frame_id", options.frame_id, "map");
-  handle.param<std::string>("snapshot_path", options.snapshot_path, default_snapshot_path());
+  options.scenes_dir = COLLISION2D_DEFAULT_SCENES_DIR;
+  read_param(handle, "scenes_dir", options.scenes_dir);
+  options.frame_id = "map";
+  read_param(handle, "frame_id", options.frame_id);
+  options.snapshot_path = default_snapshot_path();
+  read_param(handle, "snapshot_path", options.snapshot_path);
   options.autosave_period = autosave_period_param(handle);
   return options;
 }
@@ -162,7 +166,7 @@ void WorldNode::log_start_summary() const
 bool WorldNode::restore_snapshot()
 {
   bool restore = world_.options().autosave_period > 0;
-  private_handle_.param("restore_on_start", restore, restore);
+  read_param(private_handle_, "restore_on_start", restore);
   const std::string& path = world_.options().snapshot_path;
   std::error_code ignored;
   if (!restore || !std::filesystem::exists(path, ignored))
@@ -186,7 +190,7 @@ bool WorldNode::restore_snapshot()
 void WorldNode::load_initial_scene()
 {
   std::string scene;
-  private_handle_.param<std::string>("scene", scene, "");
+  read_param(private_handle_, "scene", scene);
   if (scene.empty())
   {
     return;

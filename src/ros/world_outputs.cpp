@@ -7,6 +7,8 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <rosgraph_msgs/Clock.h>
 
+#include "node_params.h"
+
 namespace collision2d
 {
 namespace ros_interface
@@ -47,9 +49,9 @@ geometry_msgs::TransformStamped body_transform(const BodyMsg& body, const std_ms
 WorldOutputOptions world_output_options_from_params(const ::ros::NodeHandle& private_handle)
 {
   WorldOutputOptions options;
-  private_handle.param("publish_tf", options.publish_tf, options.publish_tf);
-  private_handle.param("publish_clock", options.publish_clock, options.publish_clock);
-  private_handle.param("body_frame_prefix", options.body_frame_prefix, options.body_frame_prefix);
+  read_param(private_handle, "publish_tf", options.publish_tf);
+  read_param(private_handle, "publish_clock", options.publish_clock);
+  read_param(private_handle, "body_frame_prefix", options.body_frame_prefix);
   return options;
 }
 

@@ -148,6 +148,13 @@ class RosHabits(unittest.TestCase):
             self.assertIn("~rate = ", text)
             self.assertIn("stepping on request", text)
 
+    def test_a_parameter_of_the_wrong_type_is_named_in_a_warn(self):
+        started, text = self.fresh_node_output("_rate:=fast", "_max_bodies:=many")
+        self.assertTrue(started, text)
+        self.assertIn("~rate must be a number; using 0", text)
+        self.assertIn("~max_bodies must be an integer; using 5000", text)
+        self.assertIn("(steps on request)", text)
+
     def test_refused_request_is_a_warn_naming_service_body_and_field(self):
         body = Body(id=0, shape=Body.DISK, mass=-float("nan"), radius=0.5)
         body.pose.x = 100.0

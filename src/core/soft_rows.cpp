@@ -24,7 +24,7 @@ struct ScalarOps
   void store(double* f, double v) const { f[j] = v; }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<double>& side) const
   {
-    const BodyVelocity& s = state[index[j]];
+    const BodyVelocity& s = state[body_of(index[j])];
     side.v = {s.v.x, s.v.y};
     side.w = s.omega;
     side.moved = {s.moved.x, s.moved.y};
@@ -33,7 +33,8 @@ struct ScalarOps
   }
   void scatter(std::vector<BodyVelocity>& state, const std::uint32_t* index, const rows::Side<double>& side) const
   {
-    BodyVelocity& s = state[index[j]];
+    BodyVelocity discard;
+    BodyVelocity& s = (index[j] & kFixedBody) != 0 ? discard : state[index[j]];
     s.v = Vec2{side.v.x, side.v.y};
     s.omega = side.w;
   }
@@ -64,12 +65,15 @@ COLLISION2D_ROW_BATCH_VERBS(solve_batch_scalar, int, std::vector<BodyVelocity>&,
 
 namespace
 {
+/// No impulse changes the velocity of a body with neither mass nor inertia inverse.
+bool fixed(double inv_mass, double inv_inertia) { return inv_mass == 0.0 && inv_inertia == 0.0; }
+
 /// What both kinds of batch keep of a manifold, from its first point.
 template <class Batch>
 void fill_common(Batch& r, int j, const ContactPoint& p, bool friction)
 {
-  r.a[j] = static_cast<std::uint32_t>(p.a);
-  r.b[j] = static_cast<std::uint32_t>(p.b);
+  r.a[j] = static_cast<std::uint32_t>(p.a) | (fixed(p.inv_mass_a, p.inv_inertia_a) ? kFixedBody : 0u);
+  r.b[j] = static_cast<std::uint32_t>(p.b) | (fixed(p.inv_mass_b, p.inv_inertia_b) ? kFixedBody : 0u);
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
   r.inv_mass_a[j] = p.inv_mass_a;
@@ -102,8 +106,8 @@ void fill_point(RowPoint& q, int j, const ContactPoint& c)
 template <class Batch>
 void fill_padding(Batch& r, int j, std::uint32_t spare)
 {
-  r.a[j] = spare;
-  r.b[j] = spare;
+  r.a[j] = spare | kFixedBody;
+  r.b[j] = spare | kFixedBody;
   for (double* f : {r.nx, r.ny, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b, r.bias_rate, r.mu_s,
                     r.mu_k, r.rough})
   {

@@ -24,6 +24,14 @@ namespace detail
 /// Lanes in one batch.
 constexpr int kRowLanes = 4;
 
+/// Set in a batch's body index when the rows never change that body's
+/// velocity (a static or kinematic body, the spare body). Many lanes of one
+/// colour may name such a body, and workers run a colour's batches at once:
+/// the passes read it but never write it back, so no two workers write one body.
+constexpr std::uint32_t kFixedBody = 1u << 31;
+/// The body a batch's index names, without the kFixedBody bit.
+inline std::uint32_t body_of(std::uint32_t index) { return index & ~kFixedBody; }
+
 /// One point of each lane's manifold.
 struct alignas(32) RowPoint
 {
@@ -39,7 +47,7 @@ struct alignas(32) RowPoint
 /// Four two-point manifolds, one per lane. Masks are 0 or 1.
 struct alignas(32) RowBatch
 {
-  std::uint32_t a[kRowLanes];  ///< body indices; padding lanes name the spare body
+  std::uint32_t a[kRowLanes];  ///< body indices (kFixedBody marks those never written); padding names the spare body
   std::uint32_t b[kRowLanes];
   double nx[kRowLanes], ny[kRowLanes];  ///< the normal; the tangent is perp(normal), as prepared
   double k11[kRowLanes], k12[kRowLanes], k22[kRowLanes];  ///< normal block (1/kg)
@@ -55,7 +63,7 @@ struct alignas(32) RowBatch
 /// verbs' normal and friction rows.
 struct alignas(32) RowSingle
 {
-  std::uint32_t a[kRowLanes];  ///< body indices; padding lanes name the spare body
+  std::uint32_t a[kRowLanes];  ///< body indices (kFixedBody marks those never written); padding names the spare body
   std::uint32_t b[kRowLanes];
   double nx[kRowLanes], ny[kRowLanes];
   double normal_mass[kRowLanes], tangent_mass[kRowLanes];  ///< kg

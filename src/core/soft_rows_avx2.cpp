@@ -59,7 +59,7 @@ struct WideOps
     const double* b[kRowLanes];
     for (int j = 0; j < kRowLanes; ++j)
     {
-      b[j] = &state[index[j]].v.x;
+      b[j] = &state[body_of(index[j])].v.x;
     }
     __m256d first[4];
     __m256d second[4];
@@ -92,9 +92,10 @@ struct WideOps
     _mm256_store_pd(vx, side.v.x.v);
     _mm256_store_pd(vy, side.v.y.v);
     _mm256_store_pd(w, side.w.v);
+    BodyVelocity discard;
     for (int j = 0; j < kRowLanes; ++j)
     {
-      BodyVelocity& s = state[index[j]];
+      BodyVelocity& s = (index[j] & kFixedBody) != 0 ? discard : state[index[j]];
       s.v = Vec2{vx[j], vy[j]};
       s.omega = w[j];
     }

@@ -97,8 +97,8 @@ struct HalfOps
   void store(double* f, W2 v) const { store2(f + offset, v); }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<W2>& side) const
   {
-    const BodyVelocity& s0 = state[index[offset]];
-    const BodyVelocity& s1 = state[index[offset + 1]];
+    const BodyVelocity& s0 = state[body_of(index[offset])];
+    const BodyVelocity& s1 = state[body_of(index[offset + 1])];
     side.v = {make2(s0.v.x, s1.v.x), make2(s0.v.y, s1.v.y)};
     side.w = make2(s0.omega, s1.omega);
     side.moved = {make2(s0.moved.x, s1.moved.x), make2(s0.moved.y, s1.moved.y)};
@@ -111,9 +111,11 @@ struct HalfOps
     store_unaligned(vx, side.v.x);
     store_unaligned(vy, side.v.y);
     store_unaligned(w, side.w);
+    BodyVelocity discard;
     for (int j = 0; j < 2; ++j)
     {
-      BodyVelocity& s = state[index[offset + j]];
+      const std::uint32_t i = index[offset + j];
+      BodyVelocity& s = (i & kFixedBody) != 0 ? discard : state[i];
       s.v = Vec2{vx[j], vy[j]};
       s.omega = w[j];
     }

@@ -324,7 +324,7 @@ struct WorldImpl : WorldState
   void put_contacts_aside();
   /// Wakes every body of island `label`; its contacts go back into `into`
   /// (kept in (a, b) order), where detection or warm starting finds them.
-  void wake_island(std::uint32_t label, std::vector<WorldContact>& into);
+  void wake_island(IslandLabel label, std::vector<WorldContact>& into);
   /// Sleeping switched off: every body awake, every contact back in contacts_.
   void wake_everyone();
   /// Detection: wakes the islands that a mover's contact reaches; true if any woke.

@@ -14,6 +14,11 @@ namespace collision2d
 {
 namespace detail
 {
+/// Names a sleeping island. 64 bits never run out: a million new islands a
+/// second would take 580,000 years. 32 bits wrapped after 20 hours of 1000
+/// islands falling asleep each 60 Hz frame, and then two islands shared a label.
+using IslandLabel = std::uint64_t;
+
 /// Each body's pose and velocity, what a failed step puts back.
 struct BodyMotion
 {
@@ -39,8 +44,8 @@ struct Rollback
   bool sleeping_kept = false;          ///< the step changed what sleeps; the state before is kept below
   std::vector<WorldContact> sleeping_contacts;
   double sleeping_penetration = 0.0;
-  std::vector<std::uint32_t> island_label;
-  std::uint32_t next_island_label = 0;
+  std::vector<IslandLabel> island_label;
+  IslandLabel next_island_label = 0;
   ContactPoints points;  ///< only when a prediction reads them next step
   bool clamping = false;     ///< a body stopped at its time of impact in the last substep ...
   std::vector<double> toi;   ///< ... and each body's fraction of it, when one did

@@ -86,7 +86,7 @@ void WorldImpl::put_contacts_aside()
   measure_sleeping_penetration();
 }
 
-void WorldImpl::wake_island(std::uint32_t label, std::vector<WorldContact>& into)
+void WorldImpl::wake_island(IslandLabel label, std::vector<WorldContact>& into)
 {
   keep_sleeping_for_rollback(true);
   ++sleep_stamp_;

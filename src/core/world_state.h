@@ -46,9 +46,9 @@ struct WorldState
   /// their island wakes.
   std::vector<WorldContact> sleeping_contacts_;
   double sleeping_penetration_ = 0.0;         ///< deepest of them (m)
-  std::vector<std::uint32_t> island_label_;   ///< a sleeping body's island (0: none)
-  std::uint32_t next_island_label_ = 0;
-  std::vector<std::uint32_t> root_label_;     ///< label_new_sleepers' scratch, by union-find root
+  std::vector<IslandLabel> island_label_;     ///< a sleeping body's island (0: none)
+  IslandLabel next_island_label_ = 0;
+  std::vector<IslandLabel> root_label_;       ///< label_new_sleepers' scratch, by union-find root
   std::vector<WorldContact> moved_contacts_;  ///< scratch: contacts put aside or woken
   std::vector<WorldContact> merge_scratch_;
   mutable std::vector<WorldContact> all_contacts_;  ///< all_contacts()'s answer

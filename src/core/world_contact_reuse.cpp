@@ -18,9 +18,11 @@ namespace detail
 {
 namespace
 {
-/// A kept manifold's bodies may each turn this much at most (cosine of about
-/// 11 degrees): past it, its lever arms point too far from the bodies' corners.
-constexpr double kMinKeptCos = 0.98;
+/// A kept manifold's bodies may each turn this much at most (the cosine of
+/// 1 degree; a resting stack's boxes turn far less). Its normal does not turn
+/// with them, so a pair turning together (a box on a tilting platform) has
+/// its normal off by up to this angle until it is detected again.
+constexpr double kMinKeptCos = 0.99985;
 
 bool same_pair(const WorldContact& c, BodyId a, BodyId b) { return c.a == a && c.b == b; }
 

@@ -1,6 +1,7 @@
 // Impacts, friction, energy and tunnelling in the stepped world, each checked
 // against its closed-form physics: Newton rebound height, Coulomb on an
-// incline, energy of an elastic gas, a bullet against a thin wall.
+// incline and on a tilting platform, energy of an elastic gas, a bullet
+// against a thin wall.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@ namespace collision2d
 namespace
 {
 using test::kinetic_energy;
+
+constexpr double kPi = 3.14159265358979323846;
 
 TEST(WorldDynamics, DroppedDiskReboundsToESquaredOfItsDropHeight)
 {
@@ -58,6 +61,61 @@ TEST(WorldDynamics, BoxOnInclineStaysPutBelowStaticFriction)
   const double moved = length(world.body(box).position() - settled);
   std::printf("incline below mu_s: moved %.3g m in 10 s\n", moved);
   EXPECT_LT(moved, world.settings().slop);
+}
+
+// The tilt at which a box on a kinematic platform turning at `omega`, both
+// starting level and turning together, first slips faster than kSlip
+// relative to the platform's surface under it (rad; -1 if it never does).
+double slip_tilt(bool soft_step, double mu, double omega)
+{
+  constexpr double kSlip = 1e-3;        // m/s
+  constexpr int kSettleFrames = 30;     // the first half second carries it along
+  constexpr double kLastTilt = 1.2;     // rad, past any friction angle asked here
+  WorldSettings settings;
+  settings.soft_step = soft_step;
+  settings.sleeping = Toggle::Off;
+  World world(settings);
+  const Material material{0.0, mu, mu};
+  Body platform = scenes::make_box(1.0, 10.0, 0.5, Vec2{0.0, 0.0}, 0.0, Vec2{}, omega);
+  platform.set_type(BodyType::Kinematic);
+  const BodyId p = world.add_body(platform, material);
+  // On the platform's top face at its centre, moving with it.
+  const BodyId b = world.add_body(scenes::make_box(1.0, 0.5, 0.5, Vec2{0.0, 0.5}, 0.0, Vec2{-0.5 * omega, 0.0}, omega),
+                                  material);
+  for (int frame = 0; world.body(p).theta() < kLastTilt; ++frame)
+  {
+    world.step();
+    const Body& pl = world.body(p);
+    const Body& box = world.body(b);
+    const Vec2 r = box.position() - pl.position();
+    const Vec2 surface_velocity{-pl.omega() * r.y, pl.omega() * r.x};
+    const Vec2 along{std::cos(pl.theta()), std::sin(pl.theta())};
+    if (frame > kSettleFrames && std::abs(dot(box.velocity() - surface_velocity, along)) > kSlip)
+    {
+      return pl.theta();
+    }
+  }
+  return -1.0;
+}
+
+TEST(WorldDynamics, BoxOnATiltingPlatformSlipsAtTheFrictionAngle)
+{
+  // Coulomb: a box held by friction slips once tan(tilt) exceeds mu_s. Here
+  // the platform and the box turn together, so the pair hardly moves relative
+  // to each other: a contact normal kept from an earlier frame would not turn
+  // with them and would hold the box past its angle.
+  constexpr double kOmega = 0.05;                   // rad/s: 0.05 degree a frame
+  constexpr double kTolerance = 1.0 * kPi / 180.0;  // rad
+  for (const bool soft_step : {true, false})
+  {
+    for (const double mu : {0.1, 0.3, 0.6, 1.0})
+    {
+      const double tilt = slip_tilt(soft_step, mu, kOmega);
+      std::printf("%s mu %.1f: slipped at %.2f degrees, atan(mu) %.2f\n", soft_step ? "soft step" : "Fx2D", mu,
+                  tilt * 180.0 / kPi, std::atan(mu) * 180.0 / kPi);
+      EXPECT_NEAR(tilt, std::atan(mu), kTolerance) << (soft_step ? "soft step" : "Fx2D") << ", mu " << mu;
+    }
+  }
 }
 
 TEST(WorldDynamics, BoxOnInclineSlidesWithKineticFriction)

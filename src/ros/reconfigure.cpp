@@ -156,7 +156,8 @@ private:
   dynamic_reconfigure::Config msg_;
 };
 
-/// Sets in `out` each world_* parameter whose value in `asked` differs from `seen`.
+/// Sets in `out` each world_* parameter whose value in `asked` differs from
+/// `seen` (or that `seen` lacks).
 template <typename Parameter>
 void copy_changed_world_fields(const std::vector<Parameter>& asked, const std::vector<Parameter>& seen,
                                std::vector<Parameter>& out)
@@ -180,6 +181,20 @@ void copy_changed_world_fields(const std::vector<Parameter>& asked, const std::v
       target->value = parameter.value;
     }
   }
+}
+
+/// The world_* fields of `from` into `to`, as they are (no range check).
+void copy_world_fields(const Collision2dConfig& from, Collision2dConfig& to)
+{
+  dynamic_reconfigure::Config source;
+  dynamic_reconfigure::Config target;
+  from.__toMessage__(source);
+  to.__toMessage__(target);
+  const dynamic_reconfigure::Config nothing;
+  copy_changed_world_fields(source.doubles, nothing.doubles, target.doubles);
+  copy_changed_world_fields(source.ints, nothing.ints, target.ints);
+  copy_changed_world_fields(source.bools, nothing.bools, target.bools);
+  to.__fromMessage__(target);
 }
 
 }  // namespace
@@ -272,7 +287,7 @@ void accept_world_config(Collision2dConfig& config, const Collision2dConfig& sho
   catch (const InvalidRequest& e)
   {
     ROS_WARN("%s: refused, the world's settings stay as they were", e.what());
-    world_settings_to_config(world_settings_from_config(shown), config);
+    copy_world_fields(shown, config);
   }
 }
 

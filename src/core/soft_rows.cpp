@@ -65,15 +65,16 @@ COLLISION2D_ROW_BATCH_VERBS(solve_batch_scalar, int, std::vector<BodyVelocity>&,
 
 namespace
 {
-/// No impulse changes the velocity of a body with neither mass nor inertia inverse.
-bool fixed(double inv_mass, double inv_inertia) { return inv_mass == 0.0 && inv_inertia == 0.0; }
+/// A body the rows never move: no inverse mass (static, kinematic), as the
+/// colouring counts it (soft_rows_colour.cpp) and the kernel applies it.
+bool fixed(double inv_mass) { return inv_mass == 0.0; }
 
 /// What both kinds of batch keep of a manifold, from its first point.
 template <class Batch>
 void fill_common(Batch& r, int j, const ContactPoint& p, bool friction)
 {
-  r.a[j] = static_cast<std::uint32_t>(p.a) | (fixed(p.inv_mass_a, p.inv_inertia_a) ? kFixedBody : 0u);
-  r.b[j] = static_cast<std::uint32_t>(p.b) | (fixed(p.inv_mass_b, p.inv_inertia_b) ? kFixedBody : 0u);
+  r.a[j] = static_cast<std::uint32_t>(p.a) | (fixed(p.inv_mass_a) ? kFixedBody : 0u);
+  r.b[j] = static_cast<std::uint32_t>(p.b) | (fixed(p.inv_mass_b) ? kFixedBody : 0u);
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
   r.inv_mass_a[j] = p.inv_mass_a;

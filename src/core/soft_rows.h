@@ -28,6 +28,7 @@ constexpr int kRowLanes = 4;
 /// velocity (a static or kinematic body, the spare body). Many lanes of one
 /// colour may name such a body, and workers run a colour's batches at once:
 /// the passes read it but never write it back, so no two workers write one body.
+/// Indices stay below it: 2^31 bodies would take terabytes.
 constexpr std::uint32_t kFixedBody = 1u << 31;
 /// The body a batch's index names, without the kFixedBody bit.
 inline std::uint32_t body_of(std::uint32_t index) { return index & ~kFixedBody; }

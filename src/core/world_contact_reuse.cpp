@@ -19,7 +19,7 @@ namespace detail
 namespace
 {
 /// A kept manifold's bodies may each turn this much at most (the cosine of
-/// 1 degree; a resting stack's boxes turn far less). Its normal does not turn
+/// about 1 degree; a resting stack's boxes turn far less). Its normal does not turn
 /// with them, so a pair turning together (a box on a tilting platform) has
 /// its normal off by up to this angle until it is detected again.
 constexpr double kMinKeptCos = 0.99985;

@@ -1,6 +1,7 @@
 // Reading a node's private parameters (private to src/ros). NodeHandle::param
 // keeps the default without a word when a parameter has the wrong type
-// (`_rate:=fast`, `_threads:=2.5`); these say so on /rosout.
+// (`_rate:=fast`, `_max_bodies:=many`); read_param says so on /rosout.
+// (roscpp reads a number into an integer rounded, `_threads:=2.5` as 3.)
 #pragma once
 
 #include <string>

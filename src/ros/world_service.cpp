@@ -69,10 +69,10 @@ void WorldService::load_scene(const LoadScene::Request& request, LoadScene::Resp
 {
   serve(response, "load_scene", [&] {
     load(request.scene);
-    const WorldState loaded = state();
-    summarize_world(loaded, request.return_state, response);
+    const std::shared_ptr<const WorldState> loaded = committed();
+    summarize_world(*loaded, request.return_state, response);
     response.success = true;
-    response.message = "loaded scene '" + loaded.scene + "' with " + std::to_string(loaded.bodies.size()) + " bodies";
+    response.message = "loaded scene '" + loaded->scene + "' with " + std::to_string(loaded->bodies.size()) + " bodies";
   });
   response.available = available_scenes();
 }

@@ -35,7 +35,7 @@ void WorldService::load_world(const LoadWorld::Request& request, LoadWorld::Resp
   serve(response, "load_world", [&] {
     const std::string path = snapshot_path_or_default(request.path);
     load_snapshot(path);
-    summarize_world(state(), request.return_state, response);
+    summarize_world(*committed(), request.return_state, response);
     response.success = true;
     response.message = "restored frame " + std::to_string(response.frame_count) + " with " +
                        std::to_string(response.body_count) + " bodies from " + path;

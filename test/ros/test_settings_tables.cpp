@@ -155,7 +155,7 @@ TEST(SettingsTables, ConfigRefusalsNameTheParameterValueAndRange)
             "dynamic_reconfigure: solver_iterations = 0 is outside [1, 100000]");
 }
 
-TEST(SettingsTables, RefusedConfigPutsTheCurrentSettingsBack)
+TEST(SettingsTables, RefusedConfigPutsWhatTheServerShowedBack)
 {
   WorldSettings world;
   world.dt = 0.01;
@@ -213,6 +213,16 @@ TEST(SettingsTables, AReconfigureRequestChangesOnlyWhatItsClientChanged)
   test::expect_same_world_settings(world, expected);
   EXPECT_EQ(config.world_dt, loaded.dt);  // the config shows what is in force
   EXPECT_EQ(config.world_substeps, expected.substeps);
+
+  // Refused in the same window: the world keeps the loaded settings, and the
+  // config what the server showed until the load's own update replaces it.
+  world = loaded;
+  Collision2dConfig refused = shown;
+  refused.world_substeps = 0;
+  accept_world_config(refused, shown, editor(world));
+  test::expect_same_world_settings(world, loaded);
+  EXPECT_EQ(refused.world_substeps, shown.world_substeps);
+  EXPECT_EQ(refused.world_dt, shown.world_dt);
 }
 
 }  // namespace

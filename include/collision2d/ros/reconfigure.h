@@ -36,10 +36,10 @@ void world_settings_to_config(const WorldSettings& settings, Collision2dConfig& 
 /// value and the range, written back into `config` so clients see it.
 SolverSettings accept_solver_config(Collision2dConfig& config, const SolverSettings& current);
 /// `current` with each world_* field that `config` changes from `shown` (the
-/// config the server last published). A request is made against what its
-/// client saw; applied this way it changes only what the client changed, even
-/// when a scene load replaced the other settings meanwhile. Throws
-/// InvalidRequest naming a field out of range.
+/// config the server last published, which the server merged the request
+/// into). A scene load puts its settings in force before it publishes them:
+/// a request arriving in between changes only what it asks, not the rest back
+/// to the old scene's. Throws InvalidRequest naming a field out of range.
 WorldSettings merge_world_config(const Collision2dConfig& config, const Collision2dConfig& shown,
                                  const WorldSettings& current);
 

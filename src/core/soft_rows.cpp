@@ -34,7 +34,7 @@ struct ScalarOps
   void scatter(std::vector<BodyVelocity>& state, const std::uint32_t* index, const rows::Side<double>& side) const
   {
     BodyVelocity discard;
-    BodyVelocity& s = (index[j] & kFixedBody) != 0 ? discard : state[index[j]];
+    BodyVelocity& s = written_body(state, index[j], discard);
     s.v = Vec2{side.v.x, side.v.y};
     s.omega = side.w;
   }

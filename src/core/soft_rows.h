@@ -32,6 +32,12 @@ constexpr int kRowLanes = 4;
 constexpr std::uint32_t kFixedBody = 1u << 31;
 /// The body a batch's index names, without the kFixedBody bit.
 inline std::uint32_t body_of(std::uint32_t index) { return index & ~kFixedBody; }
+/// Where a pass writes the velocity of the body `index` names: `discard`
+/// for a fixed body.
+inline BodyVelocity& written_body(std::vector<BodyVelocity>& state, std::uint32_t index, BodyVelocity& discard)
+{
+  return (index & kFixedBody) != 0 ? discard : state[index];
+}
 
 /// One point of each lane's manifold.
 struct alignas(32) RowPoint

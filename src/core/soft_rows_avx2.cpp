@@ -95,7 +95,7 @@ struct WideOps
     BodyVelocity discard;
     for (int j = 0; j < kRowLanes; ++j)
     {
-      BodyVelocity& s = (index[j] & kFixedBody) != 0 ? discard : state[index[j]];
+      BodyVelocity& s = written_body(state, index[j], discard);
       s.v = Vec2{vx[j], vy[j]};
       s.omega = w[j];
     }

@@ -114,8 +114,7 @@ struct HalfOps
     BodyVelocity discard;
     for (int j = 0; j < 2; ++j)
     {
-      const std::uint32_t i = index[offset + j];
-      BodyVelocity& s = (i & kFixedBody) != 0 ? discard : state[i];
+      BodyVelocity& s = written_body(state, index[offset + j], discard);
       s.v = Vec2{vx[j], vy[j]};
       s.omega = w[j];
     }

@@ -183,17 +183,18 @@ void copy_changed_world_fields(const std::vector<Parameter>& asked, const std::v
   }
 }
 
-/// The world_* fields of `from` into `to`, as they are (no range check).
-void copy_world_fields(const Collision2dConfig& from, Collision2dConfig& to)
+/// The world_* fields of `from` into `to`, as they are (no range check),
+/// except those `from` has as `seen` has them.
+void copy_world_fields(const Collision2dConfig& from, Collision2dConfig& to,
+                       const dynamic_reconfigure::Config& seen = dynamic_reconfigure::Config())
 {
   dynamic_reconfigure::Config source;
   dynamic_reconfigure::Config target;
   from.__toMessage__(source);
   to.__toMessage__(target);
-  const dynamic_reconfigure::Config nothing;
-  copy_changed_world_fields(source.doubles, nothing.doubles, target.doubles);
-  copy_changed_world_fields(source.ints, nothing.ints, target.ints);
-  copy_changed_world_fields(source.bools, nothing.bools, target.bools);
+  copy_changed_world_fields(source.doubles, seen.doubles, target.doubles);
+  copy_changed_world_fields(source.ints, seen.ints, target.ints);
+  copy_changed_world_fields(source.bools, seen.bools, target.bools);
   to.__fromMessage__(target);
 }
 
@@ -263,16 +264,9 @@ WorldSettings merge_world_config(const Collision2dConfig& config, const Collisio
 {
   Collision2dConfig merged = config;
   world_settings_to_config(current, merged);
-  dynamic_reconfigure::Config asked;
   dynamic_reconfigure::Config seen;
-  dynamic_reconfigure::Config out;
-  config.__toMessage__(asked);
   shown.__toMessage__(seen);
-  merged.__toMessage__(out);
-  copy_changed_world_fields(asked.doubles, seen.doubles, out.doubles);
-  copy_changed_world_fields(asked.ints, seen.ints, out.ints);
-  copy_changed_world_fields(asked.bools, seen.bools, out.bools);
-  merged.__fromMessage__(out);
+  copy_world_fields(config, merged, seen);
   return world_settings_from_config(merged);
 }
 

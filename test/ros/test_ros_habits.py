@@ -29,7 +29,11 @@ README = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "R
 ROSRUN_EXAMPLE = re.compile(r"^`?(rosrun collision2d collision2d_cli [^`\n]*)`?\.?$", re.MULTILINE)
 # A screenful: what `rosservice call step_world` may print by default.
 SCREEN_LINES = 60
-LONG_STEP_FRAMES = 10000
+# A step long enough that a read 0.5 s into it finds it running, on any machine: its frame
+# count comes from timing a step of this many frames (the launch file raises the node's
+# ~max_frames_per_call to allow it).
+CALIBRATION_FRAMES = 2000
+LONG_STEP_S = 4.0
 
 
 def run_without_terminal(command):
@@ -219,12 +223,18 @@ class RosHabits(unittest.TestCase):
 
     def test_get_world_during_a_long_step_answers_at_once_with_the_last_state(self):
         self.assertTrue(self.load_scene(scene="demo").success)
+        step = rospy.ServiceProxy(NS + "/step_world", StepWorld)
+        self.assertTrue(step(frames=CALIBRATION_FRAMES).success)  # the scene settles (and may sleep)
+        started = time.time()
+        self.assertTrue(step(frames=CALIBRATION_FRAMES).success)
+        frame_s = (time.time() - started) / CALIBRATION_FRAMES
+        long_frames = max(CALIBRATION_FRAMES, int(math.ceil(LONG_STEP_S / frame_s)))
         before = self.get_world().state.frame_count
         results = {}
 
         def long_step():
             started = time.time()
-            results["step"] = rospy.ServiceProxy(NS + "/step_world", StepWorld)(frames=LONG_STEP_FRAMES)
+            results["step"] = rospy.ServiceProxy(NS + "/step_world", StepWorld)(frames=long_frames)
             results["step_s"] = time.time() - started
 
         stepper = threading.Thread(target=long_step)
@@ -235,16 +245,16 @@ class RosHabits(unittest.TestCase):
         read_s = time.time() - started
         step_running = stepper.is_alive()
         # A second step waits for the first: steps stay serialized.
-        second = rospy.ServiceProxy(NS + "/step_world", StepWorld)(frames=1)
+        second = step(frames=1)
         stepper.join(COMMAND_TIMEOUT_S)
-        rospy.loginfo("get_world took %.3f s during a %d-frame step of %.2f s", read_s, LONG_STEP_FRAMES,
+        rospy.loginfo("get_world took %.3f s during a %d-frame step of %.2f s", read_s, long_frames,
                       results.get("step_s", math.nan))
         self.assertTrue(step_running, "the step ended before get_world was answered: test is vacuous")
         self.assertEqual(during.frame_count, before)
         self.assertLess(read_s, 0.25 * results["step_s"])
         self.assertTrue(results["step"].success, results["step"].message)
         self.assertTrue(second.success, second.message)
-        self.assertEqual(second.frame_count, before + LONG_STEP_FRAMES + 1)
+        self.assertEqual(second.frame_count, before + long_frames + 1)
 
     def test_messages_are_printable_text(self):
         with tempfile.NamedTemporaryFile(suffix=".yaml", delete=False) as garbage:

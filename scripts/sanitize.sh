@@ -21,9 +21,13 @@ SANITIZE_FLAGS="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-saniti
 log() { printf '[sanitize] %s\n' "$*" >&2; }
 
 log "configuring $BUILD_DIR"
+# -O1 -g1: about half the compile time of RelWithDebInfo's -O2 -g, and the
+# reports still name each frame's function, file and line.
 cmake -S "$ROOT" -B "$BUILD_DIR" \
   -DCOLLISION2D_WITH_ROS=OFF \
+  -DCOLLISION2D_WITH_BENCH=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_CXX_FLAGS="$SANITIZE_FLAGS" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
 

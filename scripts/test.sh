@@ -12,7 +12,8 @@ RESULTS_DIR="$COLLISION2D_WS/build/test_results"
 rm -rf "$RESULTS_DIR"
 
 # Checks of the ROS-free core outside catkin's test runner: every unit test
-# under AddressSanitizer and UndefinedBehaviorSanitizer, and a bounded run of
+# under AddressSanitizer and UndefinedBehaviorSanitizer, the multi-worker
+# tests under ThreadSanitizer, and a bounded run of
 # each libFuzzer target (core parsers and solve, and the ROS message
 # conversion). They run first so the last line stays the test summary.
 FUZZ_SECONDS="${COLLISION2D_FUZZ_SECONDS:-30}"
@@ -24,6 +25,7 @@ run_check() {
   "$@" || extra_failures+=("$name")
 }
 run_check "sanitizers (ASan + UBSan unit tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh"
+run_check "thread sanitizer (the multi-worker tests)" "$COLLISION2D_ROOT/scripts/sanitize_threads.sh"
 run_check "fuzzing the core (${FUZZ_SECONDS} s per target)" "$COLLISION2D_ROOT/scripts/fuzz.sh" "$FUZZ_SECONDS"
 run_check "fuzzing the ROS conversion (${FUZZ_SECONDS} s)" \
   "$COLLISION2D_ROOT/scripts/fuzz_ros.sh" "$FUZZ_SECONDS" "$COLLISION2D_WS/devel"

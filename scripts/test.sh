@@ -6,7 +6,12 @@ set -euo pipefail
 # shellcheck source=scripts/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
+# Each phase prints its wall time as it ends: where a run spends its minutes.
+took() { log "$1: $((SECONDS - $2)) s"; }
+
+started=$SECONDS
 install_and_build
+took "installing and building" "$started"
 RESULTS_DIR="$COLLISION2D_WS/build/test_results"
 # Results of an earlier run must not be counted again.
 rm -rf "$RESULTS_DIR"
@@ -19,10 +24,11 @@ rm -rf "$RESULTS_DIR"
 FUZZ_SECONDS="${COLLISION2D_FUZZ_SECONDS:-30}"
 extra_failures=()
 run_check() {
-  local name=$1
+  local name=$1 started=$SECONDS
   shift
   log "running $name"
   "$@" || extra_failures+=("$name")
+  took "$name" "$started"
 }
 run_check "sanitizers (ASan + UBSan unit tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh"
 run_check "thread sanitizer (the multi-worker tests)" "$COLLISION2D_ROOT/scripts/sanitize_threads.sh"
@@ -31,11 +37,15 @@ run_check "fuzzing the ROS conversion (${FUZZ_SECONDS} s)" \
   "$COLLISION2D_ROOT/scripts/fuzz_ros.sh" "$FUZZ_SECONDS" "$COLLISION2D_WS/devel"
 
 log "building the tests"
+started=$SECONDS
 catkin_make_ws tests
+took "building the tests" "$started"
 # One test at a time: rostests start their own masters and nodes, and the
 # timings some tests print are only meaningful on an otherwise idle machine.
 log "running the tests"
+started=$SECONDS
 COLLISION2D_JOBS=1 catkin_make_ws run_tests
+took "running the tests" "$started"
 
 status=0
 if [[ ${#extra_failures[@]} -gt 0 ]]; then

@@ -31,7 +31,7 @@ run_check() {
   took "$name" "$started"
 }
 run_check "sanitizers (ASan + UBSan unit tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh"
-run_check "thread sanitizer (the multi-worker tests)" "$COLLISION2D_ROOT/scripts/sanitize_threads.sh"
+run_check "thread sanitizer (the multi-worker tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh" thread
 run_check "fuzzing the core (${FUZZ_SECONDS} s per target)" "$COLLISION2D_ROOT/scripts/fuzz.sh" "$FUZZ_SECONDS"
 run_check "fuzzing the ROS conversion (${FUZZ_SECONDS} s)" \
   "$COLLISION2D_ROOT/scripts/fuzz_ros.sh" "$FUZZ_SECONDS" "$COLLISION2D_WS/devel"

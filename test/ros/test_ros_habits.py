@@ -228,7 +228,8 @@ class RosHabits(unittest.TestCase):
         started = time.time()
         self.assertTrue(step(frames=CALIBRATION_FRAMES).success)
         frame_s = (time.time() - started) / CALIBRATION_FRAMES
-        long_frames = max(CALIBRATION_FRAMES, int(math.ceil(LONG_STEP_S / frame_s)))
+        most = rospy.get_param(NODE + "/max_frames_per_call")
+        long_frames = min(most, max(CALIBRATION_FRAMES, int(math.ceil(LONG_STEP_S / frame_s))))
         before = self.get_world().state.frame_count
         results = {}
 

@@ -75,10 +75,11 @@ thread() {
   cmake --build "$build_dir" -j"$JOBS" --target "${targets[@]}"
   export TSAN_OPTIONS="halt_on_error=1:abort_on_error=1:second_deadlock_stack=1"
   for entry in "${THREAD_TESTS[@]}"; do
-    log "running ${entry%%:*} --gtest_filter=${entry#*:}"
+    local binary="${entry%%:*}" filter="${entry#*:}"
+    log "running $binary --gtest_filter=$filter"
     # From the repository root, as ctest runs them (tests read config/).
-    if ! (cd "$ROOT" && "$build_dir/${entry%%:*}" --gtest_filter="${entry#*:}" --gtest_brief=1); then
-      log "FAILED: ${entry%%:*} (a test failed or ThreadSanitizer reported; see above)"
+    if ! (cd "$ROOT" && "$build_dir/$binary" --gtest_filter="$filter" --gtest_brief=1); then
+      log "FAILED: $binary (a test failed or ThreadSanitizer reported; see above)"
       exit 1
     fi
   done

@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets in fuzz/ with clang (-fsanitize=fuzzer,address,
 # undefined) and runs each for the given number of seconds (default 60),
 # starting from the seed corpus in fuzz/corpus/<target> plus the shipped
-# scenarios and scenes. Prints executions and crashes per target and fails
+# scenarios and scenes, up to COLLISION2D_JOBS (default 2) targets at a time.
+# Prints executions and crashes per target and fails
 # when any target crashed (the reproducer is kept in
 # <repo>/.build/fuzz/artifacts/<target>/; turn it into a regression test in
 # test/unit/). Idempotent: reuses <repo>/.build/fuzz and its grown corpora.
@@ -50,18 +51,16 @@ extra_seeds() {
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
-failed=0
-summary=()
-for target in "${TARGETS[@]}"; do
-  corpus="$BUILD_DIR/corpus/$target"
-  artifacts="$BUILD_DIR/artifacts/$target"
+# Runs one target; its one-line summary goes to $BUILD_DIR/<target>.summary,
+# and a failed run leaves <target>.failed beside it.
+run_target() {
+  local target=$1
+  local corpus="$BUILD_DIR/corpus/$target" artifacts="$BUILD_DIR/artifacts/$target"
+  local output="$BUILD_DIR/$target.log" status=0 seeds extra executions crashes
   mkdir -p "$corpus" "$artifacts"
   seeds=("$ROOT/fuzz/corpus/$target")
   extra="$(extra_seeds "$target")"
   [[ -n $extra && -d $extra ]] && seeds+=("$extra")
-  log "running $target for ${SECONDS_PER_TARGET}s"
-  output="$BUILD_DIR/$target.log"
-  status=0
   "$BUILD_DIR/build/$target" -seed="$SEED" -max_total_time="$SECONDS_PER_TARGET" -timeout="$INPUT_TIMEOUT_S" \
     -rss_limit_mb="$RSS_LIMIT_MB" -max_len="$MAX_INPUT_BYTES" -print_final_stats=1 \
     -artifact_prefix="$artifacts/" "$corpus" "${seeds[@]}" >"$output" 2>&1 || status=$?
@@ -69,15 +68,37 @@ for target in "${TARGETS[@]}"; do
   # Only this run's reproducers count: older ones stay for inspection.
   crashes="$(grep -c '^artifact_prefix=\|Test unit written to' "$output" || true)"
   if [[ $status -ne 0 ]]; then
-    failed=1
-    tail -n 60 "$output" >&2
-    summary+=("$target: FAILED (exit $status), ${executions:-?} executions, ${crashes} crash input(s) in $artifacts")
+    echo "$target: FAILED (exit $status), ${executions:-?} executions, ${crashes} crash input(s) in $artifacts" \
+      >"$BUILD_DIR/$target.summary"
+    touch "$BUILD_DIR/$target.failed"
   else
-    summary+=("$target: ok (seed $SEED), ${executions:-?} executions, 0 crashes, corpus $(find "$corpus" -type f | wc -l) inputs")
+    echo "$target: ok (seed $SEED), ${executions:-?} executions, 0 crashes, corpus $(find "$corpus" -type f | wc -l) inputs" \
+      >"$BUILD_DIR/$target.summary"
+  fi
+}
+
+# The targets share nothing, so up to $JOBS run at once (each is one process
+# on one core): the run takes about ceil(targets / jobs) times the seconds.
+for target in "${TARGETS[@]}"; do
+  rm -f "$BUILD_DIR/$target.summary" "$BUILD_DIR/$target.failed"
+  while [[ $(jobs -rp | wc -l) -ge $JOBS ]]; do
+    wait -n || true
+  done
+  log "running $target for ${SECONDS_PER_TARGET}s"
+  run_target "$target" &
+done
+wait
+
+failed=0
+for target in "${TARGETS[@]}"; do
+  if [[ -e $BUILD_DIR/$target.failed || ! -e $BUILD_DIR/$target.summary ]]; then
+    failed=1
+    tail -n 60 "$BUILD_DIR/$target.log" >&2
   fi
 done
-
-printf '%s\n' "${summary[@]}"
+for target in "${TARGETS[@]}"; do
+  cat "$BUILD_DIR/$target.summary" 2>/dev/null || echo "$target: FAILED (no summary)"
+done
 if [[ $failed -ne 0 ]]; then
   log "FAILED: a target crashed (see the reproducers above)"
   exit 1

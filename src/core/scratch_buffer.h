@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "worker_pool.h"
+
 namespace collision2d
 {
 namespace detail
@@ -57,6 +59,31 @@ void resize_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
     v.reserve(2 * n);
   }
   v.resize(n);
+}
+
+/// Writes a byte to each 4 kB page of [begin, end), storage allocated but not
+/// yet holding objects, shared among the workers. A vector that grows by
+/// resize() value-initialises its new elements on the calling thread, and
+/// the kernel's fault on each page written first is most of that cost; this
+/// takes those faults on every worker before the resize.
+template <typename T>
+void touch_pages_first(WorkerPool& workers, T* begin, T* end)
+{
+  constexpr std::size_t kPageBytes = 4096;
+  constexpr std::size_t kMinSharedPages = 16;  // below this, waking a worker costs more than the faults
+  const std::size_t bytes = static_cast<std::size_t>(end - begin) * sizeof(T);
+  if (workers.workers() == 1 || bytes == 0)
+  {
+    return;
+  }
+  auto* first_byte = reinterpret_cast<unsigned char*>(begin);
+  workers.parallel_for((bytes + kPageBytes - 1) / kPageBytes, kMinSharedPages,
+                       [&](std::size_t first, std::size_t last) {
+                         for (std::size_t page = first; page < last; ++page)
+                         {
+                           first_byte[page * kPageBytes] = 0;
+                         }
+                       });
 }
 
 }  // namespace detail

@@ -376,11 +376,13 @@ void WorldImpl::size_contacts(std::size_t n)
   // one goes: a step refused for want of memory still finds them in place.
   if (n <= contacts_.capacity())
   {
+    touch_pages_first(workers_, contacts_.data() + contacts_.size(), contacts_.data() + std::max(n, contacts_.size()));
     contacts_.resize(n);
     return;
   }
   std::vector<WorldContact> grown;
   grown.reserve(2 * n);  // as resize_to_overwrite: a creeping count reallocates rarely
+  touch_pages_first(workers_, grown.data(), grown.data() + n);
   grown.resize(n);
   contacts_.swap(grown);
 }

@@ -2,11 +2,11 @@
 # Builds the libFuzzer targets in fuzz/ with clang (-fsanitize=fuzzer,address,
 # undefined) and runs each for the given number of seconds (default 60),
 # starting from the seed corpus in fuzz/corpus/<target> plus the shipped
-# scenarios and scenes, up to COLLISION2D_JOBS (default 2) targets at a time.
-# Prints executions and crashes per target and fails
-# when any target crashed (the reproducer is kept in
-# <repo>/.build/fuzz/artifacts/<target>/; turn it into a regression test in
-# test/unit/). Idempotent: reuses <repo>/.build/fuzz and its grown corpora.
+# scenarios and scenes, up to COLLISION2D_JOBS (default 2) targets at a
+# time. Prints executions and crashes per target and fails when any target
+# crashed (the reproducer is kept in <repo>/.build/fuzz/artifacts/<target>/;
+# turn it into a regression test in test/unit/). Idempotent: reuses
+# <repo>/.build/fuzz and its grown corpora.
 #
 # Usage: scripts/fuzz.sh [seconds-per-target]
 set -euo pipefail

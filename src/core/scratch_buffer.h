@@ -70,7 +70,7 @@ template <typename T>
 void touch_pages_first(WorkerPool& workers, T* begin, T* end)
 {
   constexpr std::size_t kPageBytes = 4096;
-  constexpr std::size_t kMinSharedPages = 16;  // below this, waking a worker costs more than the faults
+  constexpr std::size_t kMinSharedPages = 16;  // a few pages fault on the calling thread, as resize() would
   const std::size_t bytes = static_cast<std::size_t>(end - begin) * sizeof(T);
   if (workers.workers() == 1 || bytes == 0)
   {

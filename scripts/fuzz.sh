@@ -51,8 +51,8 @@ extra_seeds() {
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
-# Runs one target; its one-line summary goes to $BUILD_DIR/<target>.summary,
-# and a failed run leaves <target>.failed beside it.
+# Runs one target; its one-line summary ("<target>: ok ..." or "<target>:
+# FAILED ...") goes to $BUILD_DIR/<target>.summary.
 run_target() {
   local target=$1
   local corpus="$BUILD_DIR/corpus/$target" artifacts="$BUILD_DIR/artifacts/$target"
@@ -70,7 +70,6 @@ run_target() {
   if [[ $status -ne 0 ]]; then
     echo "$target: FAILED (exit $status), ${executions:-?} executions, ${crashes} crash input(s) in $artifacts" \
       >"$BUILD_DIR/$target.summary"
-    touch "$BUILD_DIR/$target.failed"
   else
     echo "$target: ok (seed $SEED), ${executions:-?} executions, 0 crashes, corpus $(find "$corpus" -type f | wc -l) inputs" \
       >"$BUILD_DIR/$target.summary"
@@ -80,7 +79,7 @@ run_target() {
 # The targets share nothing, so up to $JOBS run at once (each is one process
 # on one core): the run takes about ceil(targets / jobs) times the seconds.
 for target in "${TARGETS[@]}"; do
-  rm -f "$BUILD_DIR/$target.summary" "$BUILD_DIR/$target.failed"
+  rm -f "$BUILD_DIR/$target.summary"
   while [[ $(jobs -rp | wc -l) -ge $JOBS ]]; do
     wait -n || true
   done
@@ -91,7 +90,8 @@ wait
 
 failed=0
 for target in "${TARGETS[@]}"; do
-  if [[ -e $BUILD_DIR/$target.failed || ! -e $BUILD_DIR/$target.summary ]]; then
+  # A run that died before writing its summary failed too.
+  if ! grep -q "^$target: ok" "$BUILD_DIR/$target.summary" 2>/dev/null; then
     failed=1
     tail -n 60 "$BUILD_DIR/$target.log" >&2
   fi

@@ -3,11 +3,14 @@
 # bytes -> ResolveContacts request -> the service's validation, conversion and
 # solve. Compiled with clang++ -fsanitize=fuzzer,address,undefined against the
 # ROS headers in /usr/include and the message headers catkin generated in a
-# devel space (build the package once first, e.g. with scripts/test.sh).
+# devel space (build the package once first, e.g. with scripts/test.sh), and
+# linked to the core library the core's fuzz build makes (fuzz/CMakeLists.txt,
+# built here if scripts/fuzz.sh has not built it yet).
 # Prints executions and crashes; fails when the target crashed (the
 # reproducer is kept in <build>/artifacts/; turn it into a regression test in
 # test/ros/test_conversions.cpp). Idempotent: objects and the grown corpus are
-# reused from <repo>/.build/fuzz_ros (or $COLLISION2D_BUILD_ROOT/fuzz_ros).
+# reused from <repo>/.build/fuzz_ros (or $COLLISION2D_BUILD_ROOT/fuzz_ros), the
+# core library from <repo>/.build/fuzz/build.
 #
 # Usage: scripts/fuzz_ros.sh [seconds] [devel-space]
 #   seconds      run time (default 60)
@@ -19,6 +22,8 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_TO_RUN="${1:-60}"
 DEVEL="${2:-${COLLISION2D_DEVEL:-$ROOT/.build/ws/devel}}"
 BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz_ros"
+CORE_BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz/build"
+CORE_LIBRARY="$CORE_BUILD_DIR/libfuzz_collision2d.a"
 JOBS="${COLLISION2D_JOBS:-2}"
 TARGET=fuzz_ros_conversion
 # Per-input limits: an input running longer or using more memory than this
@@ -35,7 +40,7 @@ SEED="${COLLISION2D_FUZZ_SEED:-1}"
 # a refusal through rosconsole), and the core they call; nothing that needs a
 # node or a master.
 ROS_SOURCES=(conversions validation settings_conversions reports printable resolve_contacts)
-ROS_LIBS=(-lrosconsole -lroscpp_serialization -lrostime -lcpp_common)
+ROS_LIBS=(-lrosconsole -lroscpp_serialization -lrostime -lcpp_common -lyaml-cpp)
 
 log() { printf '[fuzz_ros] %s\n' "$*" >&2; }
 
@@ -44,7 +49,13 @@ command -v clang++ >/dev/null || { log "clang++ not found (install clang and lib
 [[ -f $DEVEL/include/collision2d/ResolveContacts.h ]] ||
   { log "no generated messages in $DEVEL/include/collision2d: build the package first or pass its devel space"; exit 2; }
 
-sources=("$ROOT"/src/core/*.cpp)
+# The core as the core's fuzz targets link it (same sanitizers and coverage
+# hooks): one build of it serves both scripts.
+log "building the core library in $CORE_BUILD_DIR (-j$JOBS)"
+cmake -S "$ROOT/fuzz" -B "$CORE_BUILD_DIR" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$CORE_BUILD_DIR" -j"$JOBS" --target fuzz_collision2d >/dev/null
+
+sources=()
 for name in "${ROS_SOURCES[@]}"; do
   sources+=("$ROOT/src/ros/$name.cpp")
 done
@@ -66,7 +77,8 @@ makefile="$BUILD_DIR/Makefile"
     [[ $src == *"/$TARGET.cpp" ]] && extra="-fsanitize=fuzzer"
     printf '%s: %s\n\t$(CXX) $(CXXFLAGS) %s -MMD -MP -c $< -o $@\n' "$obj" "$src" "$extra"
   done
-  printf '%s: %s\n\t$(CXX) $(CXXFLAGS) -fsanitize=fuzzer $^ -o $@ %s\n' "$TARGET" "${objects[*]}" "${ROS_LIBS[*]}"
+  printf '%s: %s %s\n\t$(CXX) $(CXXFLAGS) -fsanitize=fuzzer $^ -o $@ %s\n' "$TARGET" "${objects[*]}" "$CORE_LIBRARY" \
+    "${ROS_LIBS[*]}"
   echo "-include obj/*.d"
 } >"$makefile.new"
 mv "$makefile.new" "$makefile"

@@ -17,6 +17,17 @@ namespace
 /// thirty frames of 1/60 s add up to 0.49999999999999994 s. A body has
 /// rested sleep_time once it is within this fraction of a frame of it.
 constexpr double kRestRoundingFrames = 1e-6;
+
+/// Room for n elements; a list that must grow takes room for twice n, so a
+/// count that creeps up reallocates rarely (untouched room is not resident).
+template <typename T>
+void make_room(std::vector<T>& list, std::size_t n)
+{
+  if (list.capacity() < n)
+  {
+    list.reserve(2 * n);
+  }
+}
 }  // namespace
 
 void WorldImpl::update_sleep()
@@ -82,6 +93,24 @@ void WorldImpl::update_sleep()
     keep_sleeping_for_rollback(false);                    // before the labels change
     label_new_sleepers();                                 // world_sleeping_contacts.cpp
     put_contacts_aside();
+  }
+}
+
+void WorldImpl::reserve_sleep_update(std::size_t published)
+{
+  // A contact may move between the lists, and a merge's output becomes one
+  // of them (merge_into swaps): each list has room for all of them. Once the
+  // room is there this costs nothing.
+  const std::size_t n = bodies_.size();
+  const std::size_t all = published + sleeping_contacts_.size();
+  make_room(island_, n);
+  make_room(island_awake_, n);
+  make_room(root_label_, n);
+  make_room(rollback_.island_label, island_label_.size());
+  make_room(rollback_.sleeping_contacts, sleeping_contacts_.size());
+  for (std::vector<WorldContact>* list : {&contacts_, &sleeping_contacts_, &moved_contacts_, &merge_scratch_})
+  {
+    make_room(*list, all);
   }
 }
 

@@ -187,6 +187,13 @@ void WorldImpl::keep_sleeping_for_rollback(bool starting_contacts)
   {
     return;
   }
+  // The copies come first: one that runs out of memory leaves the flag
+  // down, so the rollback puts back the state it kept before, not a copy
+  // cut short.
+  rollback_.sleeping_contacts = sleeping_contacts_;
+  rollback_.island_label = island_label_;
+  rollback_.sleeping_penetration = sleeping_penetration_;
+  rollback_.next_island_label = next_island_label_;
   rollback_.sleeping_kept = true;
   // The resting bodies are about to change too: they are still as the step
   // found them (the step after they came to rest kept every body, so their
@@ -199,10 +206,6 @@ void WorldImpl::keep_sleeping_for_rollback(bool starting_contacts)
       keep_body(i);
     }
   }
-  rollback_.sleeping_contacts = sleeping_contacts_;
-  rollback_.sleeping_penetration = sleeping_penetration_;
-  rollback_.island_label = island_label_;
-  rollback_.next_island_label = next_island_label_;
 }
 
 void WorldImpl::sort_out_sleeping()

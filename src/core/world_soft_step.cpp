@@ -81,6 +81,10 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();
   require_finite_state();                                 // world_step.cpp: before the contacts are published
+  if (ctx.effects.sleeping)
+  {
+    reserve_sleep_update(points_.size());                 // world_sleep.cpp: nothing after the publish allocates
+  }
   publish_contacts(true);                                 // slips carried, gaps followed
   cache_h_ = ctx.h;
 }

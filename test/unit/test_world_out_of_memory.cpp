@@ -1,0 +1,202 @@
+// A step that runs out of memory puts the World back exactly as it was
+// (world_rollback.h). This binary's operator new can be armed to fail one
+// allocation; each allocation of a step is failed in turn, and the world
+// after the failed step must hold what it held before and then step on bit
+// for bit like a copy that never failed. On one worker the step's
+// allocations come in the same order every time, so each is failed once; on
+// two, a worker's allocations may interleave differently from run to run.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <new>
+#include <vector>
+
+#include "collision2d/scene.h"
+#include "collision2d/scenes/standard_scenes.h"
+#include "collision2d/world.h"
+
+#include "world_test_support.h"
+
+namespace
+{
+/// Allocations left before the armed failure; negative: none armed.
+std::atomic<long> g_until_failure{-1};
+std::atomic<long> g_allocations{0};
+
+void* allocate(std::size_t size, std::size_t align)
+{
+  ++g_allocations;
+  if (g_until_failure.load(std::memory_order_relaxed) >= 0 && g_until_failure.fetch_sub(1) == 0)
+  {
+    throw std::bad_alloc();
+  }
+  const std::size_t rounded = (size + align - 1) / align * align;
+  void* p = align <= alignof(std::max_align_t) ? std::malloc(size == 0 ? 1 : size)
+                                               : std::aligned_alloc(align, rounded == 0 ? align : rounded);
+  if (p == nullptr)
+  {
+    throw std::bad_alloc();
+  }
+  return p;
+}
+}  // namespace
+
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t size) { return allocate(size, alignof(std::max_align_t)); }
+void* operator new(std::size_t size, std::align_val_t align) { return allocate(size, static_cast<std::size_t>(align)); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
+
+namespace collision2d
+{
+namespace
+{
+/// Frames both worlds step after the failed step, compared bit for bit.
+constexpr int kFramesAfter = 30;
+
+long allocations_of_one_step(const World& world)
+{
+  World probe = world;
+  const long before = g_allocations.load();
+  probe.step();
+  return g_allocations.load() - before;
+}
+
+bool same_origins(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
+{
+  for (std::size_t k = 0; k < x.size() && k < y.size(); ++k)
+  {
+    const ContactOrigin& p = x[k].origin;
+    const ContactOrigin& q = y[k].origin;
+    if (p.known != q.known || !test::same_bits(p.r_a, q.r_a) || !test::same_bits(p.r_b, q.r_b) ||
+        !test::same_bits(p.separation, q.separation) || !test::same_bits(p.theta_a, q.theta_a) ||
+        !test::same_bits(p.theta_b, q.theta_b))
+    {
+      return false;
+    }
+  }
+  return x.size() == y.size();
+}
+
+/// What a caller can read of a world, and what its next steps depend on.
+void expect_same_world(const World& x, const World& y, const char* when)
+{
+  ASSERT_EQ(x.body_ids(), y.body_ids()) << when;
+  for (BodyId id : x.body_ids())
+  {
+    const Body& a = x.body(id);
+    const Body& b = y.body(id);
+    EXPECT_TRUE(test::same_bits(a.position(), b.position()) && test::same_bits(a.theta(), b.theta()) &&
+                test::same_bits(a.velocity(), b.velocity()) && test::same_bits(a.omega(), b.omega()))
+        << when << ": body " << id;
+  }
+  EXPECT_TRUE(test::same_contacts(x.contacts(), y.contacts())) << when << ": contacts";
+  EXPECT_TRUE(same_origins(x.contacts(), y.contacts())) << when << ": contact origins";
+  const StepState sx = x.step_state();
+  const StepState sy = y.step_state();
+  EXPECT_TRUE(test::same_bits(sx.contact_substep, sy.contact_substep)) << when;
+  EXPECT_EQ(sx.asleep, sy.asleep) << when << ": sleeping bodies";
+  EXPECT_EQ(sx.rest_time, sy.rest_time) << when << ": rest times";
+  EXPECT_EQ(x.frame_count(), y.frame_count()) << when;
+  EXPECT_TRUE(test::same_bits(x.time(), y.time())) << when;
+}
+
+/// Fails each allocation of `world`'s next step in turn. With one worker
+/// every armed allocation is reached; with more, one the workers' order
+/// skips leaves the step to finish, and the world must then be the step's.
+void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter)
+{
+  const bool one_order = world.settings().workers == 1;
+  const long count = allocations_of_one_step(world);
+  std::printf("%s: failing each of the step's %ld allocations\n", name, count);
+  ASSERT_GT(count, 0) << name << ": this step allocates nothing, so it tests nothing";
+  World stepped = world;
+  stepped.step();
+  for (long n = 0; n < count; ++n)
+  {
+    World failed = world;
+    bool threw = false;
+    g_until_failure.store(n);
+    try
+    {
+      failed.step();
+    }
+    catch (const std::bad_alloc&)
+    {
+      threw = true;
+    }
+    g_until_failure.store(-1);
+    ASSERT_TRUE(threw || !one_order) << name << ": allocation " << n << " of " << count << " did not fail the step";
+    expect_same_world(failed, threw ? world : stepped, threw ? "after the failed step" : "after the step");
+    World intact = threw ? world : stepped;
+    for (int f = 0; f < frames_after; ++f)
+    {
+      failed.step();
+      intact.step();
+    }
+    expect_same_world(failed, intact, "stepped on");
+    if (::testing::Test::HasFailure())
+    {
+      FAIL() << name << ": allocation " << n << " of " << count;
+    }
+  }
+}
+
+Scene with_workers(Scene scene, bool soft_step, int workers = 1)
+{
+  scene.settings.workers = workers;
+  scene.settings.soft_step = soft_step;
+  return scene;
+}
+
+TEST(WorldOutOfMemory, FirstStepOfTheSoftStepPutsTheWorldBack)
+{
+  fail_each_allocation(make_world(with_workers(scenes::pyramid(6), true)), "pyramid, soft step, first step");
+}
+
+TEST(WorldOutOfMemory, FirstStepOfTheFx2dStepPutsTheWorldBack)
+{
+  fail_each_allocation(make_world(with_workers(scenes::pyramid(6), false)), "pyramid, Fx2D, first step");
+}
+
+/// Steps a sleeping pyramid to the first step in which bodies fall asleep
+/// and the step allocates, and fails each of that step's allocations.
+void fail_each_allocation_as_bodies_fall_asleep(bool soft_step, const char* name)
+{
+  Scene scene = with_workers(scenes::pyramid(4), soft_step);
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.sleep_time = 0.1;
+  World world = make_world(scene);
+  constexpr int kMaxFrames = 600;
+  for (int f = 0; f < kMaxFrames; ++f)
+  {
+    World probe = world;
+    const long before = g_allocations.load();
+    probe.step();
+    if (g_allocations.load() > before && probe.step_state().asleep.size() > world.step_state().asleep.size())
+    {
+      fail_each_allocation(world, name);
+      return;
+    }
+    world.step();
+  }
+  FAIL() << name << ": no step put bodies to sleep while allocating";
+}
+
+TEST(WorldOutOfMemory, SoftStepThatPutsBodiesToSleepPutsTheWorldBack)
+{
+  fail_each_allocation_as_bodies_fall_asleep(true, "sleeping pyramid, soft step");
+}
+
+TEST(WorldOutOfMemory, Fx2dStepThatPutsBodiesToSleepPutsTheWorldBack)
+{
+  fail_each_allocation_as_bodies_fall_asleep(false, "sleeping pyramid, Fx2D");
+}
+
+}  // namespace
+}  // namespace collision2d

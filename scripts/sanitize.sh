@@ -26,6 +26,7 @@ THREAD_TESTS=(
   "collision2d_test_world_golden:WorldGoldenRuns.WorkersDoNotChangeTrajectories:WorldGoldenRuns.SharedSoftPassesDoNotChangeTrajectories"
   "collision2d_test_world_sleeping:WorldSleeping.PilesWokenOneByOneMatchFullPasses"
   "collision2d_test_world_resume:WorldResume.ContactsInAnyOrderResumeBitForBitOnSeveralWorkers"
+  "collision2d_test_world_out_of_memory:WorldOutOfMemory.FirstStepOnTwoWorkersPutsTheWorldBack"
 )
 
 log() { printf '[sanitize %s] %s\n' "$MODE" "$*" >&2; }

@@ -62,6 +62,12 @@ constexpr int kSpinsBeforeYield = 64;
 /// the others wait for it at the next sync. Between frames it sleeps.
 constexpr int kYieldsBeforeSleep = 1024;
 
+/// Thrown at a sync() whose team lost a member to an exception: it ends the
+/// other members' shares; run() passes on the member's exception instead.
+struct TeamStopped
+{
+};
+
 void pause()
 {
 #if defined(__x86_64__) || defined(__i386__)
@@ -107,6 +113,10 @@ void WorkerPool::sync()
   }
   for (int spins = 0; phase_.load(std::memory_order_acquire) == phase; ++spins)
   {
+    if (failed_.load(std::memory_order_acquire))
+    {
+      throw TeamStopped{};
+    }
     if (spins < kSpinsBeforeYield)
     {
       pause();
@@ -137,19 +147,52 @@ void WorkerPool::run(std::size_t count, Job job, void* context)
     job_ = job;
     context_ = context;
     count_ = count;
+    failed_.store(false, std::memory_order_relaxed);
+    failure_ = nullptr;
+    arrived_.store(0, std::memory_order_relaxed);  // a stopped team may have left some counted
     pending_.store(threads_.size(), std::memory_order_relaxed);
     generation_.fetch_add(1, std::memory_order_release);
   }
   start_.notify_all();
-  std::size_t begin = 0;
-  std::size_t end = 0;
-  range(0, begin, end);
-  job(context, begin, end);
+  run_share(0);
   const auto finished = [this] { return pending_.load(std::memory_order_acquire) == 0; };
   if (!spin_until(finished))
   {
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, finished);
+  }
+  if (failed_.load(std::memory_order_acquire))
+  {
+    std::exception_ptr failure;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      failure.swap(failure_);
+    }
+    std::rethrow_exception(failure);
+  }
+}
+
+void WorkerPool::run_share(std::size_t index)
+{
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  range(index, begin, end);
+  try
+  {
+    job_(context_, begin, end);
+  }
+  catch (const TeamStopped&)
+  {
+    // Another share threw first; its exception is the one run() passes on.
+  }
+  catch (...)
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!failure_)
+    {
+      failure_ = std::current_exception();
+    }
+    failed_.store(true, std::memory_order_release);
   }
 }
 
@@ -167,13 +210,8 @@ void WorkerPool::serve(std::size_t index, std::size_t seen)
       return;
     }
     seen = generation_.load(std::memory_order_relaxed);
-    std::size_t begin = 0;
-    std::size_t end = 0;
-    range(index, begin, end);
-    const Job job = job_;
-    void* const context = context_;
     lock.unlock();
-    job(context, begin, end);
+    run_share(index);
     if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1)
     {
       // Under the lock, so a caller about to sleep cannot miss it.

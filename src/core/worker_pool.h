@@ -2,11 +2,14 @@
 // cut into one contiguous range per worker; the calling thread takes the
 // first range, so one worker means no thread at all. A job writes only to
 // its own range's slots, so the result does not depend on the worker count.
+// An exception a job throws on any worker (running out of memory) comes out
+// of run() on the calling thread once every worker has stopped.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <exception>
 #include <mutex>
 #include <thread>
 #include <type_traits>
@@ -31,7 +34,8 @@ public:
   int workers() const override { return static_cast<int>(threads_.size()) + 1; }
   /// Starts or stops threads so `workers` take part (values below 1 count as 1).
   void resize(int workers);
-  /// Runs `job` over [0, count) split across the workers; returns when all are done.
+  /// Runs `job` over [0, count) split across the workers; returns when all
+  /// are done, rethrowing the first exception any of them threw.
   void run(std::size_t count, Job job, void* context) override;
   /// Runs `job` once on every worker at the same time, as job(context, w, w + 1)
   /// for worker w; inside it the workers may meet at sync().
@@ -66,7 +70,9 @@ public:
   }
   /// Inside a run_team job: returns once every worker has called it, and
   /// what each wrote before is seen by all after. Workers spin (they are
-  /// expected to arrive within microseconds of each other).
+  /// expected to arrive within microseconds of each other). If a worker's
+  /// job threw instead, the others leave their jobs here (by an exception
+  /// run() does not pass on) rather than wait for it.
   void sync();
 
 private:
@@ -78,6 +84,8 @@ private:
   static bool spin_until(Done done);
   /// The range of [0, count_) that worker `index` takes.
   void range(std::size_t index, std::size_t& begin, std::size_t& end) const;
+  /// Runs one worker's share of the current job, keeping what it throws.
+  void run_share(std::size_t index);
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;
@@ -93,6 +101,8 @@ private:
   std::size_t count_ = 0;
   std::atomic<std::size_t> arrived_{0};  ///< workers at the current sync()
   std::atomic<std::size_t> phase_{0};    ///< bumped when the last one arrives
+  std::atomic<bool> failed_{false};      ///< a share of the current job threw ...
+  std::exception_ptr failure_;           ///< ... this first (under the mutex)
 };
 
 }  // namespace detail

@@ -18,6 +18,7 @@
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
 
+#include "extremes_support.h"
 #include "world_test_support.h"
 
 namespace
@@ -58,6 +59,8 @@ namespace
 {
 /// Frames both worlds step after the failed step, compared bit for bit.
 constexpr int kFramesAfter = 30;
+/// Fewer for the larger world of the two-worker case.
+constexpr int kFramesAfterShared = 3;
 
 long allocations_of_one_step(const World& world)
 {
@@ -109,7 +112,7 @@ void expect_same_world(const World& x, const World& y, const char* when)
 /// Fails each allocation of `world`'s next step in turn. With one worker
 /// every armed allocation is reached; with more, one the workers' order
 /// skips leaves the step to finish, and the world must then be the step's.
-void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter)
+void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter, long stride = 1)
 {
   const bool one_order = world.settings().workers == 1;
   const long count = allocations_of_one_step(world);
@@ -117,7 +120,7 @@ void fail_each_allocation(const World& world, const char* name, int frames_after
   ASSERT_GT(count, 0) << name << ": this step allocates nothing, so it tests nothing";
   World stepped = world;
   stepped.step();
-  for (long n = 0; n < count; ++n)
+  for (long n = 0; n < count; n += stride)
   {
     World failed = world;
     bool threw = false;
@@ -162,6 +165,18 @@ TEST(WorldOutOfMemory, FirstStepOfTheSoftStepPutsTheWorldBack)
 TEST(WorldOutOfMemory, FirstStepOfTheFx2dStepPutsTheWorldBack)
 {
   fail_each_allocation(make_world(with_workers(scenes::pyramid(6), false)), "pyramid, Fx2D, first step");
+}
+
+/// A pyramid of 465 boxes: enough pairs and points that the workers share
+/// the stages, so allocations fail on either thread.
+TEST(WorldOutOfMemory, FirstStepOnTwoWorkersPutsTheWorldBack)
+{
+  constexpr int kSharedBase = 30;
+  // Under ThreadSanitizer a frame of it takes about 40 ms.
+  const long frames_after = test::sized(kFramesAfterShared, 1, "frames stepped on after each failed step");
+  const long stride = test::sized(1, 4, "allocations failed: every n-th,");
+  fail_each_allocation(make_world(with_workers(scenes::pyramid(kSharedBase), true, 2)),
+                       "pyramid of 465 boxes, soft step, 2 workers, first step", static_cast<int>(frames_after), stride);
 }
 
 /// Steps a sleeping pyramid to the first step in which bodies fall asleep

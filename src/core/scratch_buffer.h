@@ -96,6 +96,19 @@ void resize_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
   v.resize(n);
 }
 
+/// Room for n elements in `list` without changing what it holds; one that
+/// must grow takes room for twice n, so a count that creeps up reallocates
+/// rarely. For a change that must not run out of memory halfway: room
+/// first, then the change.
+template <typename T, typename Allocator>
+void make_room(std::vector<T, Allocator>& list, std::size_t n)
+{
+  if (list.capacity() < n)
+  {
+    list.reserve(2 * n);
+  }
+}
+
 /// Maps the pages of [begin, end), storage allocated but not yet holding
 /// objects (prefault_pages), then writes a byte to each 4 kB page, shared
 /// among the workers. A vector that grows by resize() value-initialises its

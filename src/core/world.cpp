@@ -261,8 +261,23 @@ namespace detail
 {
 void WorldImpl::append_body(BodyId id, const Body& body, const Material& material)
 {
-  bodies_.push_back(body);
-  settle_static(bodies_.back());
+  // What can run out of memory comes first (the copy of a polygon's outline,
+  // room in every per-body list), so a refused add changes nothing.
+  Body added = body;
+  settle_static(added);
+  const std::size_t n = bodies_.size() + 1;
+  make_room(bodies_, n);
+  make_room(materials_, n);
+  make_room(ids_, n);
+  make_room(asleep_, n);
+  make_room(island_label_, n);
+  make_room(rest_time_, n);
+  make_room(inner_radius_, n);
+  if (clamping_)
+  {
+    make_room(toi_, n);
+  }
+  bodies_.push_back(std::move(added));
   materials_.push_back(material);
   ids_.push_back(id);
   next_id_ = id + 1;
@@ -292,6 +307,9 @@ void WorldImpl::remove_body(BodyId id)
       }
     }
   }
+  // Waking moves contacts between lists: room first, so a refused removal
+  // wakes nothing.
+  make_room_to_move_contacts(contacts_.size());
   for (std::size_t partner : partners)
   {
     wake(partner);

@@ -316,10 +316,12 @@ struct WorldImpl : WorldState
   // world_sleep.cpp: islands fall asleep; world_sleeping_contacts.cpp: their
   // contacts kept aside, out of the step, until they wake.
   void update_sleep();
-  /// Before a publish over the step's starting contacts: gives every buffer
-  /// update_sleep may grow room for `published` contacts and those asleep,
-  /// so running out of memory can only refuse the step before the publish.
-  void reserve_sleep_update(std::size_t published);
+  /// Gives every list that waking islands or putting them to sleep moves
+  /// contacts through (and their scratch) room for `contacts` contacts and
+  /// those asleep, so those moves cannot run out of memory: before a publish
+  /// over the step's starting contacts (update_sleep comes after it), and
+  /// before an edit that wakes islands.
+  void make_room_to_move_contacts(std::size_t contacts);
   void update_rest_times();
   /// Labels the bodies that fell asleep this frame by island and puts their
   /// contacts aside.

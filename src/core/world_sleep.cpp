@@ -17,17 +17,6 @@ namespace
 /// thirty frames of 1/60 s add up to 0.49999999999999994 s. A body has
 /// rested sleep_time once it is within this fraction of a frame of it.
 constexpr double kRestRoundingFrames = 1e-6;
-
-/// Room for n elements; a list that must grow takes room for twice n, so a
-/// count that creeps up reallocates rarely (untouched room is not resident).
-template <typename T>
-void make_room(std::vector<T>& list, std::size_t n)
-{
-  if (list.capacity() < n)
-  {
-    list.reserve(2 * n);
-  }
-}
 }  // namespace
 
 void WorldImpl::update_sleep()
@@ -96,13 +85,13 @@ void WorldImpl::update_sleep()
   }
 }
 
-void WorldImpl::reserve_sleep_update(std::size_t published)
+void WorldImpl::make_room_to_move_contacts(std::size_t contacts)
 {
   // A contact may move between the lists, and a merge's output becomes one
   // of them (merge_into swaps): each list has room for all of them. Once the
   // room is there this costs nothing.
   const std::size_t n = bodies_.size();
-  const std::size_t all = published + sleeping_contacts_.size();
+  const std::size_t all = contacts + sleeping_contacts_.size();
   make_room(island_, n);
   make_room(island_awake_, n);
   make_room(root_label_, n);

@@ -83,7 +83,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   require_finite_state();                                 // world_step.cpp: before the contacts are published
   if (ctx.effects.sleeping)
   {
-    reserve_sleep_update(points_.size());                 // world_sleep.cpp: nothing after the publish allocates
+    make_room_to_move_contacts(points_.size());                 // world_sleep.cpp: nothing after the publish allocates
   }
   publish_contacts(true);                                 // slips carried, gaps followed
   cache_h_ = ctx.h;

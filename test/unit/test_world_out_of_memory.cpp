@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "collision2d/scene.h"
+#include "collision2d/scenes/scene_parts.h"
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
 
@@ -211,6 +212,69 @@ TEST(WorldOutOfMemory, SoftStepThatPutsBodiesToSleepPutsTheWorldBack)
 TEST(WorldOutOfMemory, Fx2dStepThatPutsBodiesToSleepPutsTheWorldBack)
 {
   fail_each_allocation_as_bodies_fall_asleep(false, "sleeping pyramid, Fx2D");
+}
+
+/// Fails each allocation of `edit` on a copy of `world` in turn: a refused
+/// edit leaves the world as it was, and it steps on like an intact copy.
+void fail_each_allocation_of_edit(const World& world, const std::function<void(World&)>& edit, const char* name)
+{
+  World probe = world;
+  const long before = g_allocations.load();
+  edit(probe);
+  const long count = g_allocations.load() - before;
+  std::printf("%s: failing each of the edit's %ld allocations\n", name, count);
+  ASSERT_GT(count, 0) << name << ": this edit allocates nothing, so it tests nothing";
+  for (long n = 0; n < count; ++n)
+  {
+    World failed = world;
+    bool threw = false;
+    g_until_failure.store(n);
+    try
+    {
+      edit(failed);
+    }
+    catch (const std::bad_alloc&)
+    {
+      threw = true;
+    }
+    g_until_failure.store(-1);
+    ASSERT_TRUE(threw) << name << ": allocation " << n << " of " << count << " did not fail the edit";
+    expect_same_world(failed, world, "after the failed edit");
+    World intact = world;
+    for (int f = 0; f < kFramesAfter; ++f)
+    {
+      failed.step();
+      intact.step();
+    }
+    expect_same_world(failed, intact, "stepped on");
+    if (::testing::Test::HasFailure())
+    {
+      FAIL() << name << ": allocation " << n << " of " << count;
+    }
+  }
+}
+
+TEST(WorldOutOfMemory, AddingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
+{
+  World world = make_world(with_workers(scenes::pyramid(6), true));
+  world.step();
+  const Body box = scenes::make_box(1.0, 1.0, 1.0, {0.0, 12.0});
+  fail_each_allocation_of_edit(world, [&](World& w) { w.add_body(box); }, "adding a box");
+}
+
+TEST(WorldOutOfMemory, RemovingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
+{
+  Scene scene = with_workers(scenes::pyramid(6), true);
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.sleep_time = 0.1;
+  World world = make_world(scene);
+  for (int f = 0; f < 120; ++f)
+  {
+    world.step();
+  }
+  ASSERT_FALSE(world.step_state().asleep.empty()) << "the pyramid should sleep";
+  const BodyId bottom = world.body_ids()[1];
+  fail_each_allocation_of_edit(world, [&](World& w) { w.remove_body(bottom); }, "removing a sleeping bottom box");
 }
 
 }  // namespace

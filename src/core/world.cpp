@@ -127,6 +127,7 @@ void World::set_body_type(BodyId id, BodyType type)
 {
   impl_->changed();
   const std::size_t i = impl_->index_of(id);
+  impl_->make_room_to_move_contacts(impl_->contacts_.size());  // waking cannot run out of memory then
   Body& b = impl_->bodies_[i];
   b.set_type(type);
   settle_static(b);
@@ -249,6 +250,9 @@ void World::set_step_state(const StepState& state)
       throw std::invalid_argument(where + "a rest time is not finite and >= 0");
     }
   }
+  // Sorting out what sleeps moves the contacts into two lists: room first,
+  // so running out of memory refuses the state before anything changes.
+  w.make_room_to_move_contacts(contacts.size());
   w.contacts_ = std::move(contacts);
   w.cache_h_ = state.contact_substep;
   w.asleep_ = std::move(asleep);

@@ -95,7 +95,7 @@ void expect_same_world(const World& x, const World& y, const char* when)
   {
     const Body& a = x.body(id);
     const Body& b = y.body(id);
-    EXPECT_TRUE(test::same_bits(a.position(), b.position()) && test::same_bits(a.theta(), b.theta()) &&
+    EXPECT_TRUE(a.type() == b.type() && test::same_bits(a.position(), b.position()) && test::same_bits(a.theta(), b.theta()) &&
                 test::same_bits(a.velocity(), b.velocity()) && test::same_bits(a.omega(), b.omega()))
         << when << ": body " << id;
   }
@@ -110,12 +110,11 @@ void expect_same_world(const World& x, const World& y, const char* when)
   EXPECT_TRUE(test::same_bits(x.time(), y.time())) << when;
 }
 
-/// Fails each allocation of `world`'s next step in turn. With one worker
-/// every armed allocation is reached; with more, one the workers' order
-/// skips leaves the step to finish, and the world must then be the step's.
+/// Fails each allocation of `world`'s next step in turn. A step the failure
+/// did not stop (an allocation the library may go without, or on several
+/// workers one their order skipped this time) must end as the step does.
 void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter, long stride = 1)
 {
-  const bool one_order = world.settings().workers == 1;
   const long count = allocations_of_one_step(world);
   std::printf("%s: failing each of the step's %ld allocations\n", name, count);
   ASSERT_GT(count, 0) << name << ": this step allocates nothing, so it tests nothing";
@@ -135,7 +134,6 @@ void fail_each_allocation(const World& world, const char* name, int frames_after
       threw = true;
     }
     g_until_failure.store(-1);
-    ASSERT_TRUE(threw || !one_order) << name << ": allocation " << n << " of " << count << " did not fail the step";
     expect_same_world(failed, threw ? world : stepped, threw ? "after the failed step" : "after the step");
     World intact = threw ? world : stepped;
     for (int f = 0; f < frames_after; ++f)
@@ -238,9 +236,10 @@ void fail_each_allocation_of_edit(const World& world, const std::function<void(W
       threw = true;
     }
     g_until_failure.store(-1);
-    ASSERT_TRUE(threw) << name << ": allocation " << n << " of " << count << " did not fail the edit";
-    expect_same_world(failed, world, "after the failed edit");
-    World intact = world;
+    // An allocation the library may go without (std::stable_sort's buffer)
+    // lets the edit finish: then the world is the edit's.
+    expect_same_world(failed, threw ? world : probe, threw ? "after the failed edit" : "after the edit");
+    World intact = threw ? world : probe;
     for (int f = 0; f < kFramesAfter; ++f)
     {
       failed.step();
@@ -262,19 +261,47 @@ TEST(WorldOutOfMemory, AddingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
   fail_each_allocation_of_edit(world, [&](World& w) { w.add_body(box); }, "adding a box");
 }
 
-TEST(WorldOutOfMemory, RemovingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
+/// A pyramid of 21 boxes asleep on its ground.
+World sleeping_pyramid()
 {
   Scene scene = with_workers(scenes::pyramid(6), true);
   scene.settings.sleeping = Toggle::On;
   scene.settings.sleep_time = 0.1;
   World world = make_world(scene);
-  for (int f = 0; f < 120; ++f)
+  constexpr int kFramesToSleep = 120;
+  for (int f = 0; f < kFramesToSleep; ++f)
   {
     world.step();
   }
+  return world;
+}
+
+TEST(WorldOutOfMemory, RemovingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
+{
+  const World world = sleeping_pyramid();
   ASSERT_FALSE(world.step_state().asleep.empty()) << "the pyramid should sleep";
   const BodyId bottom = world.body_ids()[1];
   fail_each_allocation_of_edit(world, [&](World& w) { w.remove_body(bottom); }, "removing a sleeping bottom box");
+}
+
+TEST(WorldOutOfMemory, ChangingABodysTypeThatRunsOutOfMemoryLeavesTheWorldAsItWas)
+{
+  const World world = sleeping_pyramid();
+  ASSERT_FALSE(world.step_state().asleep.empty()) << "the pyramid should sleep";
+  const BodyId top = world.body_ids().back();
+  fail_each_allocation_of_edit(world, [&](World& w) { w.set_body_type(top, BodyType::Kinematic); },
+                               "making a sleeping box kinematic");
+}
+
+TEST(WorldOutOfMemory, RestoringAStepStateThatRunsOutOfMemoryLeavesTheWorldAsItWas)
+{
+  const World asleep = sleeping_pyramid();
+  const StepState state = asleep.step_state();
+  ASSERT_FALSE(state.asleep.empty()) << "the pyramid should sleep";
+  World world = asleep;  // the same bodies, then stepped on: another state to replace
+  world.set_step_state(StepState{{}, 0.0, {}, std::vector<double>(state.rest_time.size(), 0.0)});
+  world.step();
+  fail_each_allocation_of_edit(world, [&](World& w) { w.set_step_state(state); }, "restoring a sleeping state");
 }
 
 }  // namespace

@@ -26,6 +26,9 @@ public:
                   RangeRunner& runner);
   /// Frames whose pairs came from the kept ones (tests).
   std::size_t reused() const { return reused_; }
+  /// Drops the kept pairs: the next call pairs the boxes afresh. For a step
+  /// that failed partway, which may have left them half rebuilt.
+  void forget() { built_ = false; }
 
 private:
   /// Whether every box lies inside its enlarged one (in parts on the runner).

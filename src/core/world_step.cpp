@@ -349,6 +349,10 @@ void WorldImpl::keep_body(std::size_t i)
 void WorldImpl::restore_motion()
 {
   rest_known_ = false;  // the rest frame remembered may be one this step made
+  // What the step keeps from frame to frame only to save work may be half
+  // rebuilt: the next step builds it afresh (the same pairs and movers).
+  resting_built_ = false;
+  fat_pairs_.forget();
   const std::size_t count = rollback_.movers_only ? movers_.size() : bodies_.size();
   for (std::size_t k = 0; k < count; ++k)
   {

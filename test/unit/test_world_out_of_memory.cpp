@@ -63,11 +63,11 @@ constexpr int kFramesAfter = 30;
 /// Fewer for the larger world of the two-worker case.
 constexpr int kFramesAfterShared = 3;
 
-long allocations_of_one_step(const World& world)
+long allocations_of_one_step(const World& world, int frames)
 {
   World probe = world;
   const long before = g_allocations.load();
-  probe.step();
+  probe.step(frames);
   return g_allocations.load() - before;
 }
 
@@ -113,13 +113,14 @@ void expect_same_world(const World& x, const World& y, const char* when)
 /// Fails each allocation of `world`'s next step in turn. A step the failure
 /// did not stop (an allocation the library may go without, or on several
 /// workers one their order skipped this time) must end as the step does.
-void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter, long stride = 1)
+void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter, long stride = 1,
+                          int frames = 1)
 {
-  const long count = allocations_of_one_step(world);
+  const long count = allocations_of_one_step(world, frames);
   std::printf("%s: failing each of the step's %ld allocations\n", name, count);
   ASSERT_GT(count, 0) << name << ": this step allocates nothing, so it tests nothing";
   World stepped = world;
-  stepped.step();
+  stepped.step(frames);
   for (long n = 0; n < count; n += stride)
   {
     World failed = world;
@@ -127,7 +128,7 @@ void fail_each_allocation(const World& world, const char* name, int frames_after
     g_until_failure.store(n);
     try
     {
-      failed.step();
+      failed.step(frames);
     }
     catch (const std::bad_alloc&)
     {
@@ -156,6 +157,21 @@ Scene with_workers(Scene scene, bool soft_step, int workers = 1)
   return scene;
 }
 
+/// A pyramid of 21 boxes asleep on its ground.
+World sleeping_pyramid()
+{
+  Scene scene = with_workers(scenes::pyramid(6), true);
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.sleep_time = 0.1;
+  World world = make_world(scene);
+  constexpr int kFramesToSleep = 120;
+  for (int f = 0; f < kFramesToSleep; ++f)
+  {
+    world.step();
+  }
+  return world;
+}
+
 TEST(WorldOutOfMemory, FirstStepOfTheSoftStepPutsTheWorldBack)
 {
   fail_each_allocation(make_world(with_workers(scenes::pyramid(6), true)), "pyramid, soft step, first step");
@@ -164,6 +180,22 @@ TEST(WorldOutOfMemory, FirstStepOfTheSoftStepPutsTheWorldBack)
 TEST(WorldOutOfMemory, FirstStepOfTheFx2dStepPutsTheWorldBack)
 {
   fail_each_allocation(make_world(with_workers(scenes::pyramid(6), false)), "pyramid, Fx2D, first step");
+}
+
+TEST(WorldOutOfMemory, StepOfSeveralFramesPutsTheWorldBack)
+{
+  constexpr int kFrames = 3;
+  fail_each_allocation(make_world(with_workers(scenes::pyramid(6), true)), "pyramid, soft step, 3 frames in one step",
+                       kFramesAfter, 1, kFrames);
+}
+
+TEST(WorldOutOfMemory, FirstStepOfTheExactModePutsTheWorldBack)
+{
+  // Each island's LCP is built per solve, so a frame costs milliseconds.
+  constexpr int kExactFramesAfter = 2;
+  Scene scene = with_workers(scenes::pyramid(3), true);
+  scene.settings.solver_mode = SolverMode::Exact;
+  fail_each_allocation(make_world(scene), "pyramid, soft step, exact mode, first step", kExactFramesAfter);
 }
 
 /// A pyramid of 465 boxes: enough pairs and points that the workers share
@@ -200,6 +232,29 @@ void fail_each_allocation_as_bodies_fall_asleep(bool soft_step, const char* name
     world.step();
   }
   FAIL() << name << ": no step put bodies to sleep while allocating";
+}
+
+/// A box dropped on the sleeping pyramid: the step in which it reaches the
+/// pyramid wakes it.
+TEST(WorldOutOfMemory, StepThatWakesASleepingPyramidPutsTheWorldBack)
+{
+  World world = sleeping_pyramid();
+  const std::size_t asleep = world.step_state().asleep.size();
+  ASSERT_GT(asleep, 0u) << "the pyramid should sleep";
+  world.add_body(scenes::make_box(1.0, 1.0, 1.0, {0.0, 8.0}));
+  constexpr int kMaxFrames = 120;
+  for (int f = 0; f < kMaxFrames; ++f)
+  {
+    World probe = world;
+    probe.step();
+    if (probe.step_state().asleep.size() < asleep)
+    {
+      fail_each_allocation(world, "a box waking the sleeping pyramid");
+      return;
+    }
+    world.step();
+  }
+  FAIL() << "the dropped box did not wake the pyramid";
 }
 
 TEST(WorldOutOfMemory, SoftStepThatPutsBodiesToSleepPutsTheWorldBack)
@@ -259,21 +314,6 @@ TEST(WorldOutOfMemory, AddingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
   world.step();
   const Body box = scenes::make_box(1.0, 1.0, 1.0, {0.0, 12.0});
   fail_each_allocation_of_edit(world, [&](World& w) { w.add_body(box); }, "adding a box");
-}
-
-/// A pyramid of 21 boxes asleep on its ground.
-World sleeping_pyramid()
-{
-  Scene scene = with_workers(scenes::pyramid(6), true);
-  scene.settings.sleeping = Toggle::On;
-  scene.settings.sleep_time = 0.1;
-  World world = make_world(scene);
-  constexpr int kFramesToSleep = 120;
-  for (int f = 0; f < kFramesToSleep; ++f)
-  {
-    world.step();
-  }
-  return world;
 }
 
 TEST(WorldOutOfMemory, RemovingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)

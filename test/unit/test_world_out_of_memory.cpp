@@ -1,8 +1,8 @@
-// A step that runs out of memory puts the World back exactly as it was
-// (world_rollback.h). This binary's operator new can be armed to fail one
-// allocation; each allocation of a step is failed in turn, and the world
-// after the failed step must hold what it held before and then step on bit
-// for bit like a copy that never failed. On one worker the step's
+// A step or an edit that runs out of memory leaves the World exactly as it
+// was (world_rollback.h for the step). This binary's operator new can be
+// armed to fail one allocation; each allocation of a step or edit is failed
+// in turn, and the world afterwards must hold what it held before and then
+// step on bit for bit like a copy that never failed. On one worker the
 // allocations come in the same order every time, so each is failed once; on
 // two, a worker's allocations may interleave differently from run to run.
 #include <gtest/gtest.h>
@@ -63,14 +63,6 @@ constexpr int kFramesAfter = 30;
 /// Fewer for the larger world of the two-worker case.
 constexpr int kFramesAfterShared = 3;
 
-long allocations_of_one_step(const World& world, int frames)
-{
-  World probe = world;
-  const long before = g_allocations.load();
-  probe.step(frames);
-  return g_allocations.load() - before;
-}
-
 bool same_origins(const std::vector<WorldContact>& x, const std::vector<WorldContact>& y)
 {
   for (std::size_t k = 0; k < x.size() && k < y.size(); ++k)
@@ -95,8 +87,9 @@ void expect_same_world(const World& x, const World& y, const char* when)
   {
     const Body& a = x.body(id);
     const Body& b = y.body(id);
-    EXPECT_TRUE(a.type() == b.type() && test::same_bits(a.position(), b.position()) && test::same_bits(a.theta(), b.theta()) &&
-                test::same_bits(a.velocity(), b.velocity()) && test::same_bits(a.omega(), b.omega()))
+    EXPECT_TRUE(a.type() == b.type() && test::same_bits(a.position(), b.position()) &&
+                test::same_bits(a.theta(), b.theta()) && test::same_bits(a.velocity(), b.velocity()) &&
+                test::same_bits(a.omega(), b.omega()))
         << when << ": body " << id;
   }
   EXPECT_TRUE(test::same_contacts(x.contacts(), y.contacts())) << when << ": contacts";
@@ -110,17 +103,21 @@ void expect_same_world(const World& x, const World& y, const char* when)
   EXPECT_TRUE(test::same_bits(x.time(), y.time())) << when;
 }
 
-/// Fails each allocation of `world`'s next step in turn. A step the failure
-/// did not stop (an allocation the library may go without, or on several
-/// workers one their order skipped this time) must end as the step does.
-void fail_each_allocation(const World& world, const char* name, int frames_after = kFramesAfter, long stride = 1,
-                          int frames = 1)
+/// Fails each allocation of `change` (a step or an edit) on a copy of
+/// `world` in turn: a refused change leaves the world as it was, and it
+/// steps on like an intact copy. A change the failure did not stop (an
+/// allocation the library may go without, such as std::stable_sort's buffer,
+/// or on several workers one their order skipped this time) must end as
+/// the change does.
+void fail_each_allocation(const World& world, const std::function<void(World&)>& change, const char* name,
+                          int frames_after = kFramesAfter, long stride = 1)
 {
-  const long count = allocations_of_one_step(world, frames);
-  std::printf("%s: failing each of the step's %ld allocations\n", name, count);
-  ASSERT_GT(count, 0) << name << ": this step allocates nothing, so it tests nothing";
-  World stepped = world;
-  stepped.step(frames);
+  World changed = world;
+  const long before = g_allocations.load();
+  change(changed);
+  const long count = g_allocations.load() - before;
+  std::printf("%s: failing each of its %ld allocations\n", name, count);
+  ASSERT_GT(count, 0) << name << ": allocates nothing, so it tests nothing";
   for (long n = 0; n < count; n += stride)
   {
     World failed = world;
@@ -128,15 +125,15 @@ void fail_each_allocation(const World& world, const char* name, int frames_after
     g_until_failure.store(n);
     try
     {
-      failed.step(frames);
+      change(failed);
     }
     catch (const std::bad_alloc&)
     {
       threw = true;
     }
     g_until_failure.store(-1);
-    expect_same_world(failed, threw ? world : stepped, threw ? "after the failed step" : "after the step");
-    World intact = threw ? world : stepped;
+    expect_same_world(failed, threw ? world : changed, threw ? "after the failed change" : "after the change");
+    World intact = threw ? world : changed;
     for (int f = 0; f < frames_after; ++f)
     {
       failed.step();
@@ -148,6 +145,13 @@ void fail_each_allocation(const World& world, const char* name, int frames_after
       FAIL() << name << ": allocation " << n << " of " << count;
     }
   }
+}
+
+/// fail_each_allocation for `world`'s next step of `frames` frames.
+void fail_each_allocation_of_step(const World& world, const char* name, int frames_after = kFramesAfter,
+                                  long stride = 1, int frames = 1)
+{
+  fail_each_allocation(world, [frames](World& w) { w.step(frames); }, name, frames_after, stride);
 }
 
 Scene with_workers(Scene scene, bool soft_step, int workers = 1)
@@ -174,19 +178,19 @@ World sleeping_pyramid()
 
 TEST(WorldOutOfMemory, FirstStepOfTheSoftStepPutsTheWorldBack)
 {
-  fail_each_allocation(make_world(with_workers(scenes::pyramid(6), true)), "pyramid, soft step, first step");
+  fail_each_allocation_of_step(make_world(with_workers(scenes::pyramid(6), true)), "pyramid, soft step, first step");
 }
 
 TEST(WorldOutOfMemory, FirstStepOfTheFx2dStepPutsTheWorldBack)
 {
-  fail_each_allocation(make_world(with_workers(scenes::pyramid(6), false)), "pyramid, Fx2D, first step");
+  fail_each_allocation_of_step(make_world(with_workers(scenes::pyramid(6), false)), "pyramid, Fx2D, first step");
 }
 
 TEST(WorldOutOfMemory, StepOfSeveralFramesPutsTheWorldBack)
 {
   constexpr int kFrames = 3;
-  fail_each_allocation(make_world(with_workers(scenes::pyramid(6), true)), "pyramid, soft step, 3 frames in one step",
-                       kFramesAfter, 1, kFrames);
+  fail_each_allocation_of_step(make_world(with_workers(scenes::pyramid(6), true)),
+                               "pyramid, soft step, 3 frames in one step", kFramesAfter, 1, kFrames);
 }
 
 TEST(WorldOutOfMemory, FirstStepOfTheExactModePutsTheWorldBack)
@@ -195,7 +199,7 @@ TEST(WorldOutOfMemory, FirstStepOfTheExactModePutsTheWorldBack)
   constexpr int kExactFramesAfter = 2;
   Scene scene = with_workers(scenes::pyramid(3), true);
   scene.settings.solver_mode = SolverMode::Exact;
-  fail_each_allocation(make_world(scene), "pyramid, soft step, exact mode, first step", kExactFramesAfter);
+  fail_each_allocation_of_step(make_world(scene), "pyramid, soft step, exact mode, first step", kExactFramesAfter);
 }
 
 /// A pyramid of 465 boxes: enough pairs and points that the workers share
@@ -206,8 +210,9 @@ TEST(WorldOutOfMemory, FirstStepOnTwoWorkersPutsTheWorldBack)
   // Under ThreadSanitizer a frame of it takes about 40 ms.
   const long frames_after = test::sized(kFramesAfterShared, 1, "frames stepped on after each failed step");
   const long stride = test::sized(1, 4, "allocations failed: every n-th,");
-  fail_each_allocation(make_world(with_workers(scenes::pyramid(kSharedBase), true, 2)),
-                       "pyramid of 465 boxes, soft step, 2 workers, first step", static_cast<int>(frames_after), stride);
+  fail_each_allocation_of_step(make_world(with_workers(scenes::pyramid(kSharedBase), true, 2)),
+                               "pyramid of 465 boxes, soft step, 2 workers, first step",
+                               static_cast<int>(frames_after), stride);
 }
 
 /// Steps a sleeping pyramid to the first step in which bodies fall asleep
@@ -226,7 +231,7 @@ void fail_each_allocation_as_bodies_fall_asleep(bool soft_step, const char* name
     probe.step();
     if (g_allocations.load() > before && probe.step_state().asleep.size() > world.step_state().asleep.size())
     {
-      fail_each_allocation(world, name);
+      fail_each_allocation_of_step(world, name);
       return;
     }
     world.step();
@@ -249,7 +254,7 @@ TEST(WorldOutOfMemory, StepThatWakesASleepingPyramidPutsTheWorldBack)
     probe.step();
     if (probe.step_state().asleep.size() < asleep)
     {
-      fail_each_allocation(world, "a box waking the sleeping pyramid");
+      fail_each_allocation_of_step(world, "a box waking the sleeping pyramid");
       return;
     }
     world.step();
@@ -267,53 +272,12 @@ TEST(WorldOutOfMemory, Fx2dStepThatPutsBodiesToSleepPutsTheWorldBack)
   fail_each_allocation_as_bodies_fall_asleep(false, "sleeping pyramid, Fx2D");
 }
 
-/// Fails each allocation of `edit` on a copy of `world` in turn: a refused
-/// edit leaves the world as it was, and it steps on like an intact copy.
-void fail_each_allocation_of_edit(const World& world, const std::function<void(World&)>& edit, const char* name)
-{
-  World probe = world;
-  const long before = g_allocations.load();
-  edit(probe);
-  const long count = g_allocations.load() - before;
-  std::printf("%s: failing each of the edit's %ld allocations\n", name, count);
-  ASSERT_GT(count, 0) << name << ": this edit allocates nothing, so it tests nothing";
-  for (long n = 0; n < count; ++n)
-  {
-    World failed = world;
-    bool threw = false;
-    g_until_failure.store(n);
-    try
-    {
-      edit(failed);
-    }
-    catch (const std::bad_alloc&)
-    {
-      threw = true;
-    }
-    g_until_failure.store(-1);
-    // An allocation the library may go without (std::stable_sort's buffer)
-    // lets the edit finish: then the world is the edit's.
-    expect_same_world(failed, threw ? world : probe, threw ? "after the failed edit" : "after the edit");
-    World intact = threw ? world : probe;
-    for (int f = 0; f < kFramesAfter; ++f)
-    {
-      failed.step();
-      intact.step();
-    }
-    expect_same_world(failed, intact, "stepped on");
-    if (::testing::Test::HasFailure())
-    {
-      FAIL() << name << ": allocation " << n << " of " << count;
-    }
-  }
-}
-
 TEST(WorldOutOfMemory, AddingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
 {
   World world = make_world(with_workers(scenes::pyramid(6), true));
   world.step();
   const Body box = scenes::make_box(1.0, 1.0, 1.0, {0.0, 12.0});
-  fail_each_allocation_of_edit(world, [&](World& w) { w.add_body(box); }, "adding a box");
+  fail_each_allocation(world, [&](World& w) { w.add_body(box); }, "adding a box");
 }
 
 TEST(WorldOutOfMemory, RemovingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
@@ -321,7 +285,7 @@ TEST(WorldOutOfMemory, RemovingABodyThatRunsOutOfMemoryLeavesTheWorldAsItWas)
   const World world = sleeping_pyramid();
   ASSERT_FALSE(world.step_state().asleep.empty()) << "the pyramid should sleep";
   const BodyId bottom = world.body_ids()[1];
-  fail_each_allocation_of_edit(world, [&](World& w) { w.remove_body(bottom); }, "removing a sleeping bottom box");
+  fail_each_allocation(world, [&](World& w) { w.remove_body(bottom); }, "removing a sleeping bottom box");
 }
 
 TEST(WorldOutOfMemory, ChangingABodysTypeThatRunsOutOfMemoryLeavesTheWorldAsItWas)
@@ -329,7 +293,7 @@ TEST(WorldOutOfMemory, ChangingABodysTypeThatRunsOutOfMemoryLeavesTheWorldAsItWa
   const World world = sleeping_pyramid();
   ASSERT_FALSE(world.step_state().asleep.empty()) << "the pyramid should sleep";
   const BodyId top = world.body_ids().back();
-  fail_each_allocation_of_edit(world, [&](World& w) { w.set_body_type(top, BodyType::Kinematic); },
+  fail_each_allocation(world, [&](World& w) { w.set_body_type(top, BodyType::Kinematic); },
                                "making a sleeping box kinematic");
 }
 
@@ -341,7 +305,7 @@ TEST(WorldOutOfMemory, RestoringAStepStateThatRunsOutOfMemoryLeavesTheWorldAsItW
   World world = asleep;  // the same bodies, then stepped on: another state to replace
   world.set_step_state(StepState{{}, 0.0, {}, std::vector<double>(state.rest_time.size(), 0.0)});
   world.step();
-  fail_each_allocation_of_edit(world, [&](World& w) { w.set_step_state(state); }, "restoring a sleeping state");
+  fail_each_allocation(world, [&](World& w) { w.set_step_state(state); }, "restoring a sleeping state");
 }
 
 }  // namespace

@@ -184,7 +184,9 @@ public:
   /// state from finite input: a frame that overflows (speeds, sizes or masses
   /// far beyond the README's supported ranges) throws std::overflow_error
   /// naming the body, and the world is then put back exactly as it was before
-  /// the call (bodies' motion, contacts, sleep and clock).
+  /// the call (bodies' motion, contacts, sleep and clock). Running out of
+  /// memory, on any worker, throws std::bad_alloc with the world put back the
+  /// same way; so do add_body, remove_body, set_body_type and set_step_state.
   StepReport step(int frames = 1);
   /// Contact points of the last substep with their impulses, in (a, b)
   /// order. A sleeping island's contacts keep the values they had when it

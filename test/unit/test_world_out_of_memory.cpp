@@ -49,6 +49,30 @@ void* allocate(std::size_t size, std::size_t align)
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t size) { return allocate(size, alignof(std::max_align_t)); }
 void* operator new(std::size_t size, std::align_val_t align) { return allocate(size, static_cast<std::size_t>(align)); }
+// What the standard library may go without (std::stable_sort's buffer) asks
+// through these: the armed failure reaches them too, as a null pointer.
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept
+{
+  try
+  {
+    return allocate(size, alignof(std::max_align_t));
+  }
+  catch (const std::bad_alloc&)
+  {
+    return nullptr;
+  }
+}
+void* operator new(std::size_t size, std::align_val_t align, const std::nothrow_t&) noexcept
+{
+  try
+  {
+    return allocate(size, static_cast<std::size_t>(align));
+  }
+  catch (const std::bad_alloc&)
+  {
+    return nullptr;
+  }
+}
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
@@ -161,13 +185,19 @@ Scene with_workers(Scene scene, bool soft_step, int workers = 1)
   return scene;
 }
 
+/// A pyramid whose bodies fall asleep after resting 0.1 s.
+Scene sleepy_pyramid(int base, bool soft_step)
+{
+  Scene scene = with_workers(scenes::pyramid(base), soft_step);
+  scene.settings.sleeping = Toggle::On;
+  scene.settings.sleep_time = 0.1;
+  return scene;
+}
+
 /// A pyramid of 21 boxes asleep on its ground.
 World sleeping_pyramid()
 {
-  Scene scene = with_workers(scenes::pyramid(6), true);
-  scene.settings.sleeping = Toggle::On;
-  scene.settings.sleep_time = 0.1;
-  World world = make_world(scene);
+  World world = make_world(sleepy_pyramid(6, true));
   constexpr int kFramesToSleep = 120;
   for (int f = 0; f < kFramesToSleep; ++f)
   {
@@ -219,10 +249,7 @@ TEST(WorldOutOfMemory, FirstStepOnTwoWorkersPutsTheWorldBack)
 /// and the step allocates, and fails each of that step's allocations.
 void fail_each_allocation_as_bodies_fall_asleep(bool soft_step, const char* name)
 {
-  Scene scene = with_workers(scenes::pyramid(4), soft_step);
-  scene.settings.sleeping = Toggle::On;
-  scene.settings.sleep_time = 0.1;
-  World world = make_world(scene);
+  World world = make_world(sleepy_pyramid(4, soft_step));
   constexpr int kMaxFrames = 600;
   for (int f = 0; f < kMaxFrames; ++f)
   {

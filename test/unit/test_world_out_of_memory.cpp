@@ -1,17 +1,14 @@
 // A step or an edit that runs out of memory leaves the World exactly as it
-// was (world_rollback.h for the step). This binary's operator new can be
-// armed to fail one allocation; each allocation of a step or edit is failed
-// in turn, and the world afterwards must hold what it held before and then
-// step on bit for bit like a copy that never failed. On one worker the
+// was (world_rollback.h for the step). This binary's operator new
+// (allocation_counter.h) is armed to fail one allocation; each allocation of
+// a step or edit is failed in turn, and the world afterwards must hold what
+// it held before and then step on bit for bit like a copy that never failed. On one worker the
 // allocations come in the same order every time, so each is failed once; on
 // two, a worker's allocations may interleave differently from run to run.
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
-#include <new>
 #include <vector>
 
 #include "collision2d/scene.h"
@@ -19,64 +16,9 @@
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
 
+#include "allocation_counter.h"
 #include "extremes_support.h"
 #include "world_test_support.h"
-
-namespace
-{
-/// Allocations left before the armed failure; negative: none armed.
-std::atomic<long> g_until_failure{-1};
-std::atomic<long> g_allocations{0};
-
-void* allocate(std::size_t size, std::size_t align)
-{
-  ++g_allocations;
-  if (g_until_failure.load(std::memory_order_relaxed) >= 0 && g_until_failure.fetch_sub(1) == 0)
-  {
-    throw std::bad_alloc();
-  }
-  const std::size_t rounded = (size + align - 1) / align * align;
-  void* p = align <= alignof(std::max_align_t) ? std::malloc(size == 0 ? 1 : size)
-                                               : std::aligned_alloc(align, rounded == 0 ? align : rounded);
-  if (p == nullptr)
-  {
-    throw std::bad_alloc();
-  }
-  return p;
-}
-}  // namespace
-
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) { return allocate(size, alignof(std::max_align_t)); }
-void* operator new(std::size_t size, std::align_val_t align) { return allocate(size, static_cast<std::size_t>(align)); }
-// What the standard library may go without (std::stable_sort's buffer) asks
-// through these: the armed failure reaches them too, as a null pointer.
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept
-{
-  try
-  {
-    return allocate(size, alignof(std::max_align_t));
-  }
-  catch (const std::bad_alloc&)
-  {
-    return nullptr;
-  }
-}
-void* operator new(std::size_t size, std::align_val_t align, const std::nothrow_t&) noexcept
-{
-  try
-  {
-    return allocate(size, static_cast<std::size_t>(align));
-  }
-  catch (const std::bad_alloc&)
-  {
-    return nullptr;
-  }
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete(void* p, std::align_val_t) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t, std::align_val_t) noexcept { std::free(p); }
 
 namespace collision2d
 {
@@ -137,16 +79,16 @@ void fail_each_allocation(const World& world, const std::function<void(World&)>&
                           int frames_after = kFramesAfter, long stride = 1)
 {
   World changed = world;
-  const long before = g_allocations.load();
+  const long before = test::g_allocations.load();
   change(changed);
-  const long count = g_allocations.load() - before;
+  const long count = test::g_allocations.load() - before;
   std::printf("%s: failing each of its %ld allocations\n", name, count);
   ASSERT_GT(count, 0) << name << ": allocates nothing, so it tests nothing";
   for (long n = 0; n < count; n += stride)
   {
     World failed = world;
     bool threw = false;
-    g_until_failure.store(n);
+    test::g_allocations_until_failure.store(n);
     try
     {
       change(failed);
@@ -155,7 +97,7 @@ void fail_each_allocation(const World& world, const std::function<void(World&)>&
     {
       threw = true;
     }
-    g_until_failure.store(-1);
+    test::g_allocations_until_failure.store(-1);
     expect_same_world(failed, threw ? world : changed, threw ? "after the failed change" : "after the change");
     World intact = threw ? world : changed;
     for (int f = 0; f < frames_after; ++f)
@@ -254,9 +196,9 @@ void fail_each_allocation_as_bodies_fall_asleep(bool soft_step, const char* name
   for (int f = 0; f < kMaxFrames; ++f)
   {
     World probe = world;
-    const long before = g_allocations.load();
+    const long before = test::g_allocations.load();
     probe.step();
-    if (g_allocations.load() > before && probe.step_state().asleep.size() > world.step_state().asleep.size())
+    if (test::g_allocations.load() > before && probe.step_state().asleep.size() > world.step_state().asleep.size())
     {
       fail_each_allocation_of_step(world, name);
       return;

@@ -9,9 +9,16 @@
 # <repo>/.build/fuzz and its grown corpora.
 #
 # Usage: scripts/fuzz.sh [seconds-per-target]
+#        scripts/fuzz.sh --library   (only builds the instrumented core
+#        library, <build>/build/libfuzz_collision2d.a, for scripts/fuzz_ros.sh)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+LIBRARY_ONLY=0
+if [[ ${1:-} == --library ]]; then
+  LIBRARY_ONLY=1
+  shift
+fi
 SECONDS_PER_TARGET="${1:-60}"
 BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz"
 JOBS="${COLLISION2D_JOBS:-2}"
@@ -36,6 +43,11 @@ command -v clang++ >/dev/null || { log "clang++ not found (install clang and lib
 log "configuring $BUILD_DIR with clang++"
 cmake -S "$ROOT/fuzz" -B "$BUILD_DIR/build" -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+if [[ $LIBRARY_ONLY -eq 1 ]]; then
+  log "building the core library (-j$JOBS)"
+  cmake --build "$BUILD_DIR/build" -j"$JOBS" --target fuzz_collision2d >/dev/null
+  exit 0
+fi
 log "building (-j$JOBS)"
 cmake --build "$BUILD_DIR/build" -j"$JOBS" --target "${TARGETS[@]}"
 

@@ -22,8 +22,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SECONDS_TO_RUN="${1:-60}"
 DEVEL="${2:-${COLLISION2D_DEVEL:-$ROOT/.build/ws/devel}}"
 BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz_ros"
-CORE_BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz/build"
-CORE_LIBRARY="$CORE_BUILD_DIR/libfuzz_collision2d.a"
+CORE_LIBRARY="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz/build/libfuzz_collision2d.a"  # scripts/fuzz.sh --library
 JOBS="${COLLISION2D_JOBS:-2}"
 TARGET=fuzz_ros_conversion
 # Per-input limits: an input running longer or using more memory than this
@@ -50,10 +49,8 @@ command -v clang++ >/dev/null || { log "clang++ not found (install clang and lib
   { log "no generated messages in $DEVEL/include/collision2d: build the package first or pass its devel space"; exit 2; }
 
 # The core as the core's fuzz targets link it (same sanitizers and coverage
-# hooks): one build of it serves both scripts.
-log "building the core library in $CORE_BUILD_DIR (-j$JOBS)"
-cmake -S "$ROOT/fuzz" -B "$CORE_BUILD_DIR" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build "$CORE_BUILD_DIR" -j"$JOBS" --target fuzz_collision2d >/dev/null
+# hooks): one build of it, configured in one place, serves both scripts.
+"$ROOT/scripts/fuzz.sh" --library
 
 sources=()
 for name in "${ROS_SOURCES[@]}"; do

@@ -3,14 +3,9 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <memory>
 #include <type_traits>
 #include <vector>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 #include "worker_pool.h"
 
@@ -55,23 +50,7 @@ using FrameBuffer = std::vector<T, FrameAllocator<T>>;
 /// first write costs more than the same work in one request. Where the
 /// kernel cannot (before Linux 5.14, another system), nothing happens and
 /// the writes fault as before.
-inline void prefault_pages(const void* begin, const void* end)
-{
-#if defined(__linux__) && defined(MADV_POPULATE_WRITE)
-  constexpr std::uintptr_t kPageBytes = 4096;
-  constexpr std::uintptr_t kMinPages = 4;  // fewer fault about as cheaply
-  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(begin) + kPageBytes - 1) & ~(kPageBytes - 1);
-  const std::uintptr_t last = reinterpret_cast<std::uintptr_t>(end) & ~(kPageBytes - 1);
-  if (last >= first + kMinPages * kPageBytes)
-  {
-    // A refusal only leaves the faults to the writes.
-    static_cast<void>(madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE));
-  }
-#else
-  static_cast<void>(begin);
-  static_cast<void>(end);
-#endif
-}
+void prefault_pages(const void* begin, const void* end);  // scratch_buffer.cpp
 
 /// Makes `v` hold n elements, to be overwritten. When it must grow, the old
 /// block is freed before the new one is taken, so the two are never resident

@@ -5,7 +5,7 @@
 # ROS headers in /usr/include and the message headers catkin generated in a
 # devel space (build the package once first, e.g. with scripts/test.sh), and
 # linked to the core library the core's fuzz build makes (fuzz/CMakeLists.txt,
-# built here if scripts/fuzz.sh has not built it yet).
+# through `scripts/fuzz.sh --library`, which reuses a build already made).
 # Prints executions and crashes; fails when the target crashed (the
 # reproducer is kept in <build>/artifacts/; turn it into a regression test in
 # test/ros/test_conversions.cpp). Idempotent: objects and the grown corpus are

@@ -22,6 +22,14 @@ struct ScalarOps
   int j = 0;
   double load(const double* f) const { return f[j]; }
   void store(double* f, double v) const { f[j] = v; }
+  bool flag(const std::uint8_t* f) const { return f[j] != 0; }
+  void set_flag(std::uint8_t* f, bool where, bool value) const
+  {
+    if (where)
+    {
+      f[j] = value ? 1 : 0;
+    }
+  }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<double>& side) const
   {
     const BodyVelocity& s = state[body_of(index[j])];
@@ -85,21 +93,24 @@ void fill_common(Batch& r, int j, const ContactPoint& p, bool friction)
   r.mass_scale[j] = p.softness.mass_scale;
   r.mu_s[j] = p.mu_s;
   r.mu_k[j] = p.mu_k;
-  r.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1.0 : 0.0;
+  r.flags.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1 : 0;
 }
 
-void fill_point(RowPoint& q, int j, const ContactPoint& c)
+/// Point `at` of lane j's manifold.
+template <class Batch>
+void fill_point(Batch& r, std::size_t at, int j, const ContactPoint& c)
 {
+  RowPoint& q = r.point[at];
   q.ra_x[j] = c.r_a.x;
   q.ra_y[j] = c.r_a.y;
   q.rb_x[j] = c.r_b.x;
   q.rb_y[j] = c.r_b.y;
   q.base[j] = c.base_separation;
-  q.kinetic[j] = c.kinetic ? 1.0 : 0.0;
   q.anchor[j] = c.anchor_drift;
   q.normal[j] = c.lambda_n;
   q.tangent[j] = c.lambda_t;
-  q.sliding[j] = c.sliding ? 1.0 : 0.0;
+  r.flags.kinetic[at][j] = c.kinetic ? 1 : 0;
+  r.flags.sliding[at][j] = c.sliding ? 1 : 0;
 }
 
 /// A padding lane: the spare body on both sides, nothing to push; its
@@ -110,18 +121,21 @@ void fill_padding(Batch& r, int j, std::uint32_t spare)
   r.a[j] = spare | kFixedBody;
   r.b[j] = spare | kFixedBody;
   for (double* f : {r.nx, r.ny, r.inv_mass_a, r.inv_mass_b, r.inv_inertia_a, r.inv_inertia_b, r.bias_rate, r.mu_s,
-                    r.mu_k, r.rough})
+                    r.mu_k})
   {
     f[j] = 0.0;
   }
   r.mass_scale[j] = 1.0;
-  for (RowPoint& q : r.point)
+  r.flags.rough[j] = 0;
+  for (std::size_t at = 0; at < std::size(r.point); ++at)
   {
-    for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.kinetic, q.anchor, q.normal, q.tangent,
-                      q.sliding})
+    RowPoint& q = r.point[at];
+    for (double* f : {q.ra_x, q.ra_y, q.rb_x, q.rb_y, q.base, q.anchor, q.normal, q.tangent})
     {
       f[j] = 0.0;
     }
+    r.flags.kinetic[at][j] = 0;
+    r.flags.sliding[at][j] = 0;
   }
 }
 
@@ -142,7 +156,7 @@ void fill_manifold(Batch& r, int j, const ContactPoints& points, std::size_t fir
     fill_common(r, j, points[first], friction);
     for (std::size_t k = 0; k < std::size(r.point); ++k)
     {
-      fill_point(r.point[k], j, points[first + k]);
+      fill_point(r, k, j, points[first + k]);
     }
   }
   if constexpr (pair)
@@ -303,10 +317,10 @@ void SoftRows::fill_lane(const ContactPoints& points, std::size_t first, const N
 
 double* SoftRows::normal_impulse_of(std::size_t k)
 {
-  int lane = 0;
+  const RowSlot slot = row_slot(k);
   // The rows are this object's own and it is not const here: writable.
-  RowPoint* point = const_cast<RowPoint*>(row_point_of(k, lane));
-  return point == nullptr ? nullptr : &point->normal[lane];
+  RowPoint* point = const_cast<RowPoint*>(slot.point);
+  return point == nullptr ? nullptr : &point->normal[slot.lane];
 }
 
 namespace

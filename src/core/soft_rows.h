@@ -39,30 +39,40 @@ inline BodyVelocity& written_body(std::vector<BodyVelocity>& state, std::uint32_
   return (index & kFixedBody) != 0 ? discard : state[index];
 }
 
-/// One point of each lane's manifold.
+/// One point of each lane's manifold (its flags are its batch's RowFlags).
 struct alignas(32) RowPoint
 {
   double ra_x[kRowLanes], ra_y[kRowLanes], rb_x[kRowLanes], rb_y[kRowLanes];  ///< lever arms (m)
   double base[kRowLanes];     ///< gap at prepare less the anchors' offset (m)
-  double kinetic[kRowLanes];  ///< slid before: the kinetic cone applies
   double anchor[kRowLanes];   ///< slip since sticking, at prepare (m)
   double normal[kRowLanes];   ///< accumulated normal impulse (N s)
   double tangent[kRowLanes];  ///< accumulated tangential impulse (N s)
-  double sliding[kRowLanes];  ///< friction at its bound
 };
 
-/// Four two-point manifolds, one per lane. Masks are 0 or 1.
+/// A batch's flags, one byte (0 or 1) per lane, beside its body indices.
+/// Every pass streams the batches through memory: as doubles the flags took
+/// a ninth of a two-point batch's bytes.
+template <int Points>
+struct RowFlags
+{
+  std::uint8_t rough[kRowLanes];            ///< friction acts
+  std::uint8_t kinetic[Points][kRowLanes];  ///< slid before: the kinetic cone applies
+  std::uint8_t sliding[Points][kRowLanes];  ///< friction at its bound
+};
+
+/// Four two-point manifolds, one per lane.
 struct alignas(32) RowBatch
 {
   std::uint32_t a[kRowLanes];  ///< body indices (kFixedBody marks those never written); padding names the spare body
   std::uint32_t b[kRowLanes];
-  double nx[kRowLanes], ny[kRowLanes];  ///< the normal; the tangent is perp(normal), as prepared
+  RowFlags<2> flags;
+  alignas(32) double nx[kRowLanes];  ///< the normal (the lanes' loads need 32-byte alignment after the flags)
+  double ny[kRowLanes];              ///< the tangent is perp(normal), as prepared
   double k11[kRowLanes], k12[kRowLanes], k22[kRowLanes];  ///< normal block (1/kg)
   double pair_tangent_mass[kRowLanes];                ///< kg
   double inv_mass_a[kRowLanes], inv_mass_b[kRowLanes], inv_inertia_a[kRowLanes], inv_inertia_b[kRowLanes];
   double bias_rate[kRowLanes], mass_scale[kRowLanes];  ///< the pair's softness
   double mu_s[kRowLanes], mu_k[kRowLanes];
-  double rough[kRowLanes];                             ///< friction acts
   RowPoint point[2];
 };
 
@@ -72,14 +82,17 @@ struct alignas(32) RowSingle
 {
   std::uint32_t a[kRowLanes];  ///< body indices (kFixedBody marks those never written); padding names the spare body
   std::uint32_t b[kRowLanes];
-  double nx[kRowLanes], ny[kRowLanes];
+  RowFlags<1> flags;
+  alignas(32) double nx[kRowLanes];  ///< as RowBatch's
+  double ny[kRowLanes];
   double normal_mass[kRowLanes], tangent_mass[kRowLanes];  ///< kg
   double inv_mass_a[kRowLanes], inv_mass_b[kRowLanes], inv_inertia_a[kRowLanes], inv_inertia_b[kRowLanes];
   double bias_rate[kRowLanes], mass_scale[kRowLanes];
   double mu_s[kRowLanes], mu_k[kRowLanes];
-  double rough[kRowLanes];
   RowPoint point[1];
 };
+// Every pass streams the batches: their sizes are kept in sight.
+static_assert(sizeof(RowBatch) == 1024 && sizeof(RowSingle) == 704, "a batch's bytes changed");
 
 /// What every row of one pass shares.
 struct RowPass
@@ -153,12 +166,12 @@ public:
   /// caller visits each point once, so each is read and written in one pass.
   void unpack_point(std::size_t k, ContactPoint& p) const
   {
-    int lane = 0;
-    if (const RowPoint* q = row_point_of(k, lane))
+    const RowSlot slot = row_slot(k);
+    if (slot.point != nullptr)
     {
-      p.lambda_n = q->normal[lane];
-      p.lambda_t = q->tangent[lane];
-      p.sliding = q->sliding[lane] != 0.0;
+      p.lambda_n = slot.point->normal[slot.lane];
+      p.lambda_t = slot.point->tangent[slot.lane];
+      p.sliding = slot.sliding[slot.lane] != 0;
     }
   }
 
@@ -234,22 +247,28 @@ private:
   /// Each colour's batches of `kind` in whole batches, the last one padded;
   /// returns the batch count.
   std::size_t place_batches(Kind kind);
-  /// Point k's row point and lane, or nullptr when its manifold has no row.
-  const RowPoint* row_point_of(std::size_t k, int& lane) const
+  /// Where a point's row is: its batch's point and sliding flags, and its lane.
+  struct RowSlot
+  {
+    const RowPoint* point = nullptr;  ///< nullptr when its manifold has no row
+    const std::uint8_t* sliding = nullptr;
+    int lane = 0;
+  };
+  RowSlot row_slot(std::size_t k) const
   {
     const std::uint32_t at = k < lane_of_.size() ? lane_of_[k] : kNoLane;
     if (at == kNoLane)
     {
-      return nullptr;
+      return {};
     }
     if ((at & kSingleLane) != 0)
     {
       const std::uint32_t single = at & ~kSingleLane;
-      lane = static_cast<int>(single % kRowLanes);
-      return &singles_[single / kRowLanes].point[0];
+      const RowSingle& batch = singles_[single / kRowLanes];
+      return {&batch.point[0], batch.flags.sliding[0], static_cast<int>(single % kRowLanes)};
     }
-    lane = static_cast<int>(at / 2 % kRowLanes);
-    return &rows_[at / (2 * kRowLanes)].point[at % 2];
+    const RowBatch& batch = rows_[at / (2 * kRowLanes)];
+    return {&batch.point[at % 2], batch.flags.sliding[at % 2], static_cast<int>(at / 2 % kRowLanes)};
   }
 
   FrameBuffer<RowBatch> rows_;

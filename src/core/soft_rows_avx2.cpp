@@ -9,6 +9,8 @@
 #include <immintrin.h>
 
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #include "soft_rows_kernel.h"
 
@@ -52,6 +54,25 @@ struct WideOps
 {
   W4 load(const double* f) const { return W4(_mm256_load_pd(f)); }
   void store(double* f, W4 v) const { _mm256_store_pd(f, v.v); }
+  W4 flag(const std::uint8_t* f) const
+  {
+    std::int32_t bytes = 0;
+    std::memcpy(&bytes, f, sizeof bytes);
+    const __m256i lanes = _mm256_cvtepu8_epi64(_mm_cvtsi32_si128(bytes));
+    return W4(_mm256_castsi256_pd(_mm256_cmpgt_epi64(lanes, _mm256_setzero_si256())));
+  }
+  void set_flag(std::uint8_t* f, W4 where, W4 value) const
+  {
+    const int written = _mm256_movemask_pd(where.v);
+    const int set = _mm256_movemask_pd(value.v);
+    for (int j = 0; j < kRowLanes; ++j)
+    {
+      if ((written >> j & 1) != 0)
+      {
+        f[j] = static_cast<std::uint8_t>(set >> j & 1);
+      }
+    }
+  }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<W4>& side) const
   {
     // Each body's first eight doubles as two loads of four, transposed into

@@ -6,10 +6,12 @@
 // every type, so the vector paths have exactly the scalar path's bits. The
 // lane type provides + - * /, comparisons giving a mask M, mask and/or,
 // sel(mask, if_true, if_false), neg, abs, and Ops<V> to load, store, gather
-// and scatter.
+// and scatter, and to read a batch's byte flags as a mask (flag) and write
+// them where a mask is set (set_flag).
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "soft_rows.h"
@@ -235,9 +237,9 @@ void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass,
 template <class Batch>
 bool any_rough(const Batch& r)
 {
-  for (const double rough : r.rough)
+  for (const std::uint8_t rough : r.flags.rough)
   {
-    if (rough != 0.0)
+    if (rough != 0)
     {
       return true;
     }
@@ -251,12 +253,10 @@ bool any_rough(const Batch& r)
 template <class V, class Ops, class Batch>
 V clamp_friction(const Ops& ops, Lane<V>& l, Batch& r, V2<V> ra, V2<V> rb, V needed, V normal, V old_total)
 {
-  const V zero = V(0.0);
-  const V cone = sel(ops.load(r.point[0].kinetic) != zero, ops.load(r.mu_k), ops.load(r.mu_s));
+  const V cone = sel(ops.flag(r.flags.kinetic[0]), ops.load(r.mu_k), ops.load(r.mu_s));
   const V limit = cone * normal;
-  const auto rough = ops.load(r.rough) != zero;
-  const V sliding = sel(limit < abs(needed), V(1.0), zero);
-  ops.store(r.point[0].sliding, sel(rough, sliding, ops.load(r.point[0].sliding)));
+  const auto rough = ops.flag(r.flags.rough);
+  ops.set_flag(r.flags.sliding[0], rough, limit < abs(needed));
   const V total = vmax(neg(limit), vmin(limit, needed));
   Lane<V> pushed = l;
   apply(pushed, ra, rb, scale(l.t, total - old_total));
@@ -282,21 +282,22 @@ void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
   const V normal_sum = n1 + ops.load(r.point[1].normal);
   const V old_total = ops.load(r.point[0].tangent) + ops.load(r.point[1].tangent);
   const V needed = old_total - vt * ops.load(r.pair_tangent_mass);
-  const auto rough = ops.load(r.rough) != zero;
+  const auto rough = ops.flag(r.flags.rough);
   const V total = clamp_friction(ops, l, r, ra, rb, needed, normal_sum, old_total);
-  ops.store(r.point[1].sliding, sel(rough, ops.load(r.point[0].sliding), ops.load(r.point[1].sliding)));
+  ops.set_flag(r.flags.sliding[1], rough, ops.flag(r.flags.sliding[0]));
   const V share = sel(zero < normal_sum, n1 / normal_sum, half);
   const V first = share * total;
   ops.store(r.point[0].tangent, sel(rough, first, ops.load(r.point[0].tangent)));
   ops.store(r.point[1].tangent, sel(rough, total - first, ops.load(r.point[1].tangent)));
 }
 
-/// A point's slip since it stuck (anchor_drift): 0 once it has slid.
+/// A point's slip since it stuck (anchor_drift): 0 once it has slid (`kinetic`, its batch's flags).
 template <class V, class Ops>
-V point_drift(const Ops& ops, const Lane<V>& l, const RowPoint& point, V2<V> d, V2<V> ra, V2<V> rb)
+V point_drift(const Ops& ops, const Lane<V>& l, const RowPoint& point, const std::uint8_t* kinetic, V2<V> d,
+              V2<V> ra, V2<V> rb)
 {
   const V slip = dot(d - (rb - ra), l.t);
-  return sel(ops.load(point.kinetic) != V(0.0), V(0.0), ops.load(point.anchor) + slip);
+  return sel(ops.flag(kinetic), V(0.0), ops.load(point.anchor) + slip);
 }
 
 /// The biased pass's pull back to the anchors (anchor_pull): `drift` at the
@@ -313,8 +314,8 @@ V capped_pull(const Ops& ops, const Batch& r, V drift, const RowPass& pass)
 template <class V, class Ops>
 V anchor_pull(const Ops& ops, const Lane<V>& l, const RowBatch& r, V2<V> d1, V2<V> d2, const RowPass& pass)
 {
-  const V drift1 = point_drift(ops, l, r.point[0], d1, l.ra1, l.rb1);
-  const V drift2 = point_drift(ops, l, r.point[1], d2, l.ra2, l.rb2);
+  const V drift1 = point_drift(ops, l, r.point[0], r.flags.kinetic[0], d1, l.ra1, l.rb1);
+  const V drift2 = point_drift(ops, l, r.point[1], r.flags.kinetic[1], d2, l.ra2, l.rb2);
   return capped_pull(ops, r, V(0.5) * (drift1 + drift2), pass);
 }
 
@@ -357,7 +358,7 @@ void solve_single_friction(const Ops& ops, Lane<V>& l, RowSingle& r, V pull)
   const V old = ops.load(r.point[0].tangent);
   const V total = clamp_friction(ops, l, r, l.ra1, l.rb1, old - vt * ops.load(r.tangent_mass),
                                  ops.load(r.point[0].normal), old);
-  ops.store(r.point[0].tangent, sel(ops.load(r.rough) != V(0.0), total, old));
+  ops.store(r.point[0].tangent, sel(ops.flag(r.flags.rough), total, old));
 }
 
 template <class V, class Ops>
@@ -370,7 +371,8 @@ void solve_rows(const Ops& ops, RowSingle& r, std::vector<BodyVelocity>& state, 
   {
     // The relax pass has no pull, and no drift to compute.
     const V pull =
-        pass.use_bias ? capped_pull(ops, r, point_drift(ops, l, r.point[0], d, l.ra1, l.rb1), pass) : V(0.0);
+        pass.use_bias ? capped_pull(ops, r, point_drift(ops, l, r.point[0], r.flags.kinetic[0], d, l.ra1, l.rb1), pass)
+                      : V(0.0);
     solve_single_friction(ops, l, r, pull);
   }
   ops.scatter(state, r.a, l.a);

@@ -53,6 +53,9 @@ inline M2 operator|(M2 a, M2 b) { return W2(_mm_or_pd(a.v, b.v)); }
 inline W2 sel(M2 m, W2 a, W2 b) { return W2(_mm_or_pd(_mm_and_pd(m.v, a.v), _mm_andnot_pd(m.v, b.v))); }
 inline W2 neg(W2 a) { return W2(_mm_xor_pd(a.v, _mm_set1_pd(-0.0))); }
 inline W2 abs(W2 a) { return W2(_mm_andnot_pd(_mm_set1_pd(-0.0), a.v)); }
+/// The mask of two flags, and a mask's lanes as bits (lane 0 the lowest).
+inline M2 mask2(bool lo, bool hi) { return W2(_mm_castsi128_pd(_mm_set_epi64x(hi ? -1 : 0, lo ? -1 : 0))); }
+inline int bits2(M2 m) { return _mm_movemask_pd(m.v); }
 #else
 struct W2
 {
@@ -87,6 +90,14 @@ inline M2 operator|(M2 a, M2 b) { return {vorrq_u64(a.m, b.m)}; }
 inline W2 sel(M2 m, W2 a, W2 b) { return W2(vbslq_f64(m.m, a.v, b.v)); }
 inline W2 neg(W2 a) { return W2(vnegq_f64(a.v)); }
 inline W2 abs(W2 a) { return W2(vabsq_f64(a.v)); }
+inline M2 mask2(bool lo, bool hi)
+{
+  return {vcombine_u64(vcreate_u64(lo ? ~std::uint64_t{0} : 0), vcreate_u64(hi ? ~std::uint64_t{0} : 0))};
+}
+inline int bits2(M2 m)
+{
+  return (vgetq_lane_u64(m.m, 0) != 0 ? 1 : 0) | (vgetq_lane_u64(m.m, 1) != 0 ? 2 : 0);
+}
 #endif
 
 /// Lanes offset and offset + 1 of a batch (offset 0 or 2).
@@ -95,6 +106,19 @@ struct HalfOps
   int offset = 0;
   W2 load(const double* f) const { return load2(f + offset); }
   void store(double* f, W2 v) const { store2(f + offset, v); }
+  M2 flag(const std::uint8_t* f) const { return mask2(f[offset] != 0, f[offset + 1] != 0); }
+  void set_flag(std::uint8_t* f, M2 where, M2 value) const
+  {
+    const int written = bits2(where);
+    const int set = bits2(value);
+    for (int j = 0; j < 2; ++j)
+    {
+      if ((written >> j & 1) != 0)
+      {
+        f[offset + j] = static_cast<std::uint8_t>(set >> j & 1);
+      }
+    }
+  }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<W2>& side) const
   {
     const BodyVelocity& s0 = state[body_of(index[offset])];

@@ -26,16 +26,59 @@ def pinned_line(args):
             f"(`taskset`); ours with 2 workers on both cores.\n")
 
 
-def machine_section(args, runs, stacks, scaling, default):
-    model = "unknown CPU"
+def cpu_fields():
+    """The first processor's fields of /proc/cpuinfo (empty where there is none)."""
+    fields = {}
     try:
         with open("/proc/cpuinfo") as f:
             for line in f:
-                if line.startswith("model name"):
-                    model = line.split(":", 1)[1].strip()
+                if not line.strip():
                     break
+                key, _, value = line.partition(":")
+                fields[key.strip()] = value.strip()
     except OSError:
         pass
+    return fields
+
+
+def cache_sizes():
+    """Each cache level of the first core with its size, as the kernel lists them ("L2 512K")."""
+    sizes = []
+    root = "/sys/devices/system/cpu/cpu0/cache"
+    try:
+        for index in sorted(os.listdir(root)):
+            with open(os.path.join(root, index, "level")) as f:
+                level = f.read().strip()
+            with open(os.path.join(root, index, "type")) as f:
+                kind = f.read().strip()
+            with open(os.path.join(root, index, "size")) as f:
+                size = f.read().strip()
+            if kind != "Instruction":
+                sizes.append(f"L{level} {size}")
+    except OSError:
+        pass
+    return sizes
+
+
+def cpu_description():
+    """The CPU as the report names it. The model name alone ("AMD EPYC" on this
+    host) hides the generation, and the same build's ratios to the peers moved
+    by a third between two hosts of that name (docs/performance.md, profile notes)."""
+    cpu = cpu_fields()
+    text = cpu.get("model name", "unknown CPU")
+    detail = []
+    if "cpu family" in cpu and "model" in cpu:
+        detail.append(f"family {cpu['cpu family']} model {cpu['model']}")
+    if "flags" in cpu:
+        wide = "avx2" in cpu["flags"].split()
+        detail.append("AVX2: the soft step's rows run four lanes" if wide else
+                      "no AVX2: the soft step's rows run two lanes")
+    detail += cache_sizes()
+    return f"{text} ({', '.join(detail)})" if detail else text
+
+
+def machine_section(args, runs, stacks, scaling, default):
+    model = cpu_description()
     commit = args.commit
     try:
         commit = commit or subprocess.run(["git", "-C", os.path.dirname(os.path.abspath(__file__)), "rev-parse",

@@ -51,7 +51,7 @@ struct alignas(32) RowPoint
 
 /// A batch's flags, one byte (0 or 1) per lane, beside its body indices.
 /// Every pass streams the batches through memory: as doubles the flags took
-/// a ninth of a two-point batch's bytes.
+/// a seventh of a two-point batch's bytes.
 template <int Points>
 struct RowFlags
 {

@@ -344,4 +344,42 @@ stage handed out in chunks from a shared counter, 2 or 4 per worker,
 instead of one range each (the rain of 1e4 on 2 workers 1.11 and 1.14
 times slower, the pyramid 1.19 times: a worker that keeps its own range
 from stage to stage finds it in its own cache).
+
+A nineteenth, on a second host (commits 15ec9ca and 0556e24; scratch
+drivers, not committed). The reports up to commit f8df314 ran on a host
+that also calls itself "AMD EPYC"; this one is family 23 model 1, the
+first Zen generation, which splits each 256-bit operation into two
+128-bit halves, with 512 KiB of L2 a core and 8 MiB of L3 (the machine
+line now says so). On it the build of commit f2e10b7 stepped the five
+stacks at 2.04, 1.61, 1.68, 2.59 and 2.30 times Box2D v3's time (stack
+bench, 5 rounds of 2 s; that report: 1.6, 1.36, 1.36, 1.74, 1.56), and the
+row passes took 46% of the base-100 pyramid's frame (35% in the seventh
+note). Whole processes stepping the base-100 pyramid for 120 frames,
+alternating pairs, median ratios:
+- The four-lane path is still the fastest here: the two-lane path took
+  1.44 times its time and the scalar path 1.79 times (5 pairs each).
+- Divisions do not bound the rows: each replaced by a reciprocal
+  estimate refined twice (other bits) made the base-20 pyramid 7% slower
+  (8 pairs).
+- Bytes do, a little: 128 bytes of padding in each solver point cost about
+  5% (10 pairs, 0.952), 40 bytes a lane in the rows about 6% (0.941), and
+  aligning each body's solver state to a cache line nothing (0.994).
+Commit 15ec9ca keeps the rows' flags (friction acts, kinetic, sliding) in a
+byte a lane beside the body indices instead of in doubles: 144 -> 128
+bytes a point of a two-point manifold, 192 -> 176 of a one-point one, the
+same bits. The base-100 pyramid 0.928 (10 pairs); the base-20 pyramid
+1.001 (its rows stay in cache); `collision2d_scaling_bench`, the pyramid of
+9870 boxes on 2 workers 0.916 (8 pairs), the rain of 1e4 on 1 and 2
+workers 0.978 and 0.985 with 1.4 and 1.7 MiB less at its peak. Tried after
+it and not kept: the inverse masses read from the bodies' solver state
+(already in the four-lane gather's loads) instead of the rows, 64 bytes
+less a batch: base-100 1.009, rain of 1e4 1.02, pyramid of 9870 1.01; the
+inverse inertias too, a third load a body: base-100 1.043.
+Two workers on this host, at f2e10b7: the rain of 1e4 1.68 and 1.70 times
+faster than one (two runs of `collision2d_scaling_bench` each), the pyramid
+of 9870 boxes 1.57 (the report at f8df314, on the other host: 1.19 and 1.78). A
+`perf record` of that pyramid on 2 workers finds both threads busy for the
+whole run, each with about half of every stage: what the second worker
+loses is its pace while both run (the L3 and memory they share), not a
+stage left on one thread.
 """

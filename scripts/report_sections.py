@@ -43,21 +43,17 @@ def cpu_fields():
 
 def cache_sizes():
     """Each cache level of the first core with its size, as the kernel lists them ("L2 512K")."""
-    sizes = []
     root = "/sys/devices/system/cpu/cpu0/cache"
+
+    def read(index, name):
+        with open(os.path.join(root, index, name)) as f:
+            return f.read().strip()
+
     try:
-        for index in sorted(os.listdir(root)):
-            with open(os.path.join(root, index, "level")) as f:
-                level = f.read().strip()
-            with open(os.path.join(root, index, "type")) as f:
-                kind = f.read().strip()
-            with open(os.path.join(root, index, "size")) as f:
-                size = f.read().strip()
-            if kind != "Instruction":
-                sizes.append(f"L{level} {size}")
+        return [f"L{read(i, 'level')} {read(i, 'size')}" for i in sorted(os.listdir(root))
+                if i.startswith("index") and read(i, "type") != "Instruction"]
     except OSError:
-        pass
-    return sizes
+        return []
 
 
 def cpu_description():

@@ -63,15 +63,7 @@ struct WideOps
   }
   void set_flag(std::uint8_t* f, W4 where, W4 value) const
   {
-    const int written = _mm256_movemask_pd(where.v);
-    const int set = _mm256_movemask_pd(value.v);
-    for (int j = 0; j < kRowLanes; ++j)
-    {
-      if ((written >> j & 1) != 0)
-      {
-        f[j] = static_cast<std::uint8_t>(set >> j & 1);
-      }
-    }
+    rows::write_flag_bits(f, kRowLanes, _mm256_movemask_pd(where.v), _mm256_movemask_pd(value.v));
   }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<W4>& side) const
   {

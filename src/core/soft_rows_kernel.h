@@ -27,6 +27,19 @@ inline double sel(bool m, double a, double b) { return m ? a : b; }
 inline double neg(double a) { return -a; }
 inline double abs(double a) { return std::abs(a); }
 
+/// set_flag of the vector paths, from their masks as bits (lane j is bit j):
+/// f[j] = bit j of `set` wherever bit j of `written` is set.
+inline void write_flag_bits(std::uint8_t* f, int lanes, int written, int set)
+{
+  for (int j = 0; j < lanes; ++j)
+  {
+    if ((written >> j & 1) != 0)
+    {
+      f[j] = static_cast<std::uint8_t>(set >> j & 1);
+    }
+  }
+}
+
 /// std::max(a, b) and std::min(a, b) as selects, so zeros keep their sign alike.
 template <class V>
 V vmax(V a, V b)

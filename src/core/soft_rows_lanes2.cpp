@@ -109,15 +109,7 @@ struct HalfOps
   M2 flag(const std::uint8_t* f) const { return mask2(f[offset] != 0, f[offset + 1] != 0); }
   void set_flag(std::uint8_t* f, M2 where, M2 value) const
   {
-    const int written = bits2(where);
-    const int set = bits2(value);
-    for (int j = 0; j < 2; ++j)
-    {
-      if ((written >> j & 1) != 0)
-      {
-        f[offset + j] = static_cast<std::uint8_t>(set >> j & 1);
-      }
-    }
+    rows::write_flag_bits(f + offset, 2, bits2(where), bits2(value));
   }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<W2>& side) const
   {

@@ -231,14 +231,20 @@ void WorldImpl::pose_bodies()
     for_each_body([this](std::size_t i) { pose_range(i, i + 1); });
     return;
   }
-  posed_offset_.resize(n);
-  std::size_t total = 0;
-  for (std::size_t i = 0; i < n; ++i)
+  // Only an edit changes a body's vertex count, and the bodies' records are
+  // cold here: the offsets are laid out again after one.
+  if (posed_offset_.size() != n || posed_version_ != version_)
   {
-    posed_offset_[i] = total;
-    total += 2 * bodies_[i].vertex_count();
+    posed_offset_.resize(n);
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      posed_offset_[i] = total;
+      total += 2 * bodies_[i].vertex_count();
+    }
+    posed_vertices_.resize(total);
+    posed_version_ = version_;
   }
-  posed_vertices_.resize(total);
   workers_.parallel_for(n, kMinSharedBodies,
                         [this](std::size_t begin, std::size_t end) { pose_range(begin, end); });
 }

@@ -47,6 +47,8 @@ struct WorldImpl : WorldState
   void advance_body(std::size_t i, const StepContext& ctx, bool swept);
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
+  /// Of the dynamic bodies after the step (J), summed in body order.
+  double kinetic_energy();
   /// Throws std::overflow_error naming the first body whose state is not
   /// finite. Each frame checks before it publishes its contacts: a step that
   /// publishes once then keeps its starting contacts in place (save_motion).

@@ -81,12 +81,14 @@ struct WorldState
   /// in posed_vertices_ (2 vertex_count() entries).
   std::vector<std::size_t> posed_offset_;
   std::vector<Vec2> posed_vertices_;
+  std::uint64_t posed_version_ = 0;       ///< version_ when posed_offset_ was laid out
   std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
   std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in contacts_
   std::vector<double> partial_max_;      ///< max_over's result of each part
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
   std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
+  std::vector<double> energies_;          ///< kinetic_energy: each summed body's, when the workers share it
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   // The broad phase looks from the movers (world_contacts.cpp).

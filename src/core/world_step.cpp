@@ -235,19 +235,44 @@ void WorldImpl::finish_report(StepReport& report)
   {
     report.max_penetration = followed_known_ ? followed_deepest_ : followed_penetration();
   }
+  report.kinetic_energy += kinetic_energy();
+  report.sleeping_bodies += asleep_bodies();
+}
+
+double WorldImpl::kinetic_energy()
+{
   // A sleeping body's kinetic energy is exactly 0: summing the movers' in
   // order gives the bits of summing every body's.
   const bool movers_only = movers_current() && !body_pass_full_;
   const std::size_t count = movers_only ? movers_.size() : bodies_.size();
+  const auto energy = [&](std::size_t k) {
+    const Body& b = bodies_[movers_only ? movers_[k] : k];
+    return b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;
+  };
+  double sum = 0.0;
+  if (workers_.workers() == 1 || count < kMinSharedBodies)
+  {
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      sum += energy(k);
+    }
+    return sum;
+  }
+  // The bodies' records are cold by now: the workers read them into a dense
+  // list, summed in body order, so the bits do not depend on the worker
+  // count (adding a static body's +0 leaves a sum of energies as it is).
+  resize_to_overwrite(energies_, count);
+  workers_.parallel_for(count, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      energies_[k] = energy(k);
+    }
+  });
   for (std::size_t k = 0; k < count; ++k)
   {
-    const std::size_t i = movers_only ? movers_[k] : k;
-    if (bodies_[i].type() == BodyType::Dynamic)
-    {
-      report.kinetic_energy += bodies_[i].kinetic_energy();
-    }
+    sum += energies_[k];
   }
-  report.sleeping_bodies += asleep_bodies();
+  return sum;
 }
 
 void WorldImpl::require_finite_state()

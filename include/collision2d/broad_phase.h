@@ -84,7 +84,26 @@ private:
   void place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner);
   void choose_cell_size(const std::vector<Aabb>& boxes);
   CellRange cells_of(const Aabb& box) const;
+  /// Each box's cells and class, then the grid boxes and the large ones
+  /// listed in box order, with each grid box's first entry and the cells the
+  /// grid covers (in parts with a runner, the lists as one pass makes them).
   void classify(const std::vector<Aabb>& boxes, RangeRunner* runner);
+  /// What classify counts of some boxes; for a part, then where its lists start.
+  struct GridLayout
+  {
+    std::size_t grid = 0;   ///< boxes in the grid
+    std::size_t large = 0;  ///< boxes too large for it
+    std::size_t entries = 0;
+    CellRange occupied{0, 0, -1, -1};  ///< the grid boxes' cells (none: empty)
+  };
+  /// classify without a runner.
+  void list_in_one_pass(const std::vector<Aabb>& boxes);
+  /// Classes boxes [begin, end) and counts them.
+  GridLayout count_classes(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end);
+  /// Lists the classed boxes [begin, end) from `at` on.
+  void list_classes(std::size_t begin, std::size_t end, GridLayout at);
+  /// The smallest range covering both.
+  static CellRange cover(const CellRange& p, const CellRange& q);
   /// Box i's class, its cells stored in ranges_ when usable.
   BoxClass classify_box(const std::vector<Aabb>& boxes, std::size_t i);
   void find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
@@ -111,7 +130,7 @@ private:
                        std::vector<BodyPair>& pairs);
   void pairs_of_large(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
   void large_against_grid(const std::vector<Aabb>& boxes, std::size_t large, std::vector<BodyPair>& pairs) const;
-  void sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs);
+  void sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs, RangeRunner* runner);
 
   // Grid geometry of the current call.
   double cell_ = 1.0;
@@ -147,10 +166,12 @@ private:
   std::vector<std::size_t> pair_start_;
   std::vector<BodyPair> sorted_pairs_;
   std::vector<std::vector<BodyPair>> part_pairs_;  // each part's pairs when a runner shares the grid
-  std::vector<std::size_t> first_entry_;  // when shared: each grid box's first entry
+  std::vector<std::size_t> first_entry_;  // each grid box's first entry
   std::vector<std::size_t> part_count_;   // when shared: per part and bucket, a count, then a cursor
   std::vector<LowCorner> corners_;        // each part's lowest corner
   std::vector<BoxClass> box_class_;       // when shared: each box's class
+  std::vector<GridLayout> part_layouts_;  // when shared: classify's count of each part
+  std::size_t entry_count_ = 0;           // the grid boxes' entries (classify)
 };
 
 }  // namespace collision2d

@@ -88,7 +88,7 @@ void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<Bod
   fill_grid(runner);
   pairs_in_grid(boxes, pairs, runner);
   pairs_of_large(boxes, pairs);
-  sort_pairs(boxes.size(), pairs);
+  sort_pairs(boxes.size(), pairs, runner);
 }
 
 void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
@@ -201,38 +201,109 @@ BroadPhase::CellRange BroadPhase::cells_of(const Aabb& box) const
 
 void BroadPhase::classify(const std::vector<Aabb>& boxes, RangeRunner* runner)
 {
-  ranges_.resize(boxes.size());
-  grid_boxes_.clear();
-  large_.clear();
-  const std::size_t parts = detail::runner_parts(runner, boxes.size());
+  const std::size_t n = boxes.size();
+  const std::size_t parts = detail::runner_parts(runner, n);
+  ranges_.resize(n);
   if (parts == 1)
   {
-    for (std::size_t i = 0; i < boxes.size(); ++i)
-    {
-      const BoxClass c = classify_box(boxes, i);
-      if (c != BoxClass::Unusable)
-      {
-        (c == BoxClass::Large ? large_ : grid_boxes_).push_back(i);
-      }
-    }
+    list_in_one_pass(boxes);
     return;
   }
-  // The cells in parts, then the lists in box order.
-  box_class_.resize(boxes.size());
+  // Counted in parts, then each part's lists written from where the parts
+  // before it end: the lists one pass in box order makes.
+  box_class_.resize(n);
+  part_layouts_.resize(parts);
   detail::run_parts(*runner, parts, [&](std::size_t part) {
-    for (std::size_t i = detail::part_begin(boxes.size(), part, parts);
-         i < detail::part_begin(boxes.size(), part + 1, parts); ++i)
-    {
-      box_class_[i] = classify_box(boxes, i);
-    }
+    part_layouts_[part] = count_classes(boxes, detail::part_begin(n, part, parts), detail::part_begin(n, part + 1, parts));
   });
+  GridLayout whole;
+  for (GridLayout& layout : part_layouts_)
+  {
+    const GridLayout counted = layout;
+    layout = GridLayout{whole.grid, whole.large, whole.entries, CellRange{}};  // where the part's lists start
+    whole.occupied = counted.grid == 0 ? whole.occupied
+                     : whole.grid == 0 ? counted.occupied
+                                       : cover(whole.occupied, counted.occupied);
+    whole.grid += counted.grid;
+    whole.large += counted.large;
+    whole.entries += counted.entries;
+  }
+  detail::resize_to_overwrite(grid_boxes_, whole.grid);
+  detail::resize_to_overwrite(first_entry_, whole.grid);
+  detail::resize_to_overwrite(large_, whole.large);
+  detail::run_parts(*runner, parts, [&](std::size_t part) {
+    list_classes(detail::part_begin(n, part, parts), detail::part_begin(n, part + 1, parts), part_layouts_[part]);
+  });
+  entry_count_ = whole.entries;
+  occupied_ = whole.occupied;
+}
+
+void BroadPhase::list_in_one_pass(const std::vector<Aabb>& boxes)
+{
+  // The lists, then the entries: letting the lists and first_entry_ grow in
+  // turn left a large rain's heap with a higher peak (docs/performance.md).
+  grid_boxes_.clear();
+  large_.clear();
   for (std::size_t i = 0; i < boxes.size(); ++i)
   {
-    if (box_class_[i] != BoxClass::Unusable)
+    const BoxClass c = classify_box(boxes, i);
+    if (c != BoxClass::Unusable)
     {
-      (box_class_[i] == BoxClass::Large ? large_ : grid_boxes_).push_back(i);
+      (c == BoxClass::Large ? large_ : grid_boxes_).push_back(i);
     }
   }
+  GridLayout whole;
+  first_entry_.resize(grid_boxes_.size());
+  for (std::size_t k = 0; k < grid_boxes_.size(); ++k)
+  {
+    const CellRange& r = ranges_[grid_boxes_[k]];
+    first_entry_[k] = whole.entries;
+    whole.entries += static_cast<std::size_t>(detail::cell_area(r.x0, r.y0, r.x1, r.y1));
+    whole.occupied = k == 0 ? r : cover(whole.occupied, r);
+  }
+  entry_count_ = whole.entries;
+  occupied_ = whole.occupied;
+}
+
+BroadPhase::GridLayout BroadPhase::count_classes(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end)
+{
+  GridLayout counted;  // in locals: the parts' slots share a cache line
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    box_class_[i] = classify_box(boxes, i);
+    if (box_class_[i] == BoxClass::Grid)
+    {
+      const CellRange& r = ranges_[i];
+      counted.occupied = counted.grid == 0 ? r : cover(counted.occupied, r);
+      ++counted.grid;
+      counted.entries += static_cast<std::size_t>(detail::cell_area(r.x0, r.y0, r.x1, r.y1));
+    }
+    counted.large += box_class_[i] == BoxClass::Large ? 1 : 0;
+  }
+  return counted;
+}
+
+void BroadPhase::list_classes(std::size_t begin, std::size_t end, GridLayout at)
+{
+  for (std::size_t i = begin; i < end; ++i)
+  {
+    if (box_class_[i] == BoxClass::Grid)
+    {
+      const CellRange& r = ranges_[i];
+      grid_boxes_[at.grid] = i;
+      first_entry_[at.grid++] = at.entries;
+      at.entries += static_cast<std::size_t>(detail::cell_area(r.x0, r.y0, r.x1, r.y1));
+    }
+    else if (box_class_[i] == BoxClass::Large)
+    {
+      large_[at.large++] = i;
+    }
+  }
+}
+
+BroadPhase::CellRange BroadPhase::cover(const CellRange& p, const CellRange& q)
+{
+  return {std::min(p.x0, q.x0), std::min(p.y0, q.y0), std::max(p.x1, q.x1), std::max(p.y1, q.y1)};
 }
 
 BroadPhase::BoxClass BroadPhase::classify_box(const std::vector<Aabb>& boxes, std::size_t i)
@@ -273,7 +344,7 @@ void BroadPhase::pairs_of_large(const std::vector<Aabb>& boxes, std::vector<Body
   }
 }
 
-void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs)
+void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
   // Counting sort on the first index, then each body's few partners sorted:
   // O(n + pairs) where a full sort would be O(pairs log pairs).
@@ -294,10 +365,24 @@ void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs)
   {
     sorted_pairs_[--pair_start_[p.first]] = p;
   }
-  for (std::size_t i = 0; i < box_count; ++i)
+  // Each body's group is its own: the parts sort theirs apart.
+  const auto sort_groups = [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i)
+    {
+      std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
+                sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i + 1]));
+    }
+  };
+  const std::size_t parts = detail::runner_parts(runner, box_count);
+  if (parts == 1)
   {
-    std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
-              sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i + 1]));
+    sort_groups(0, box_count);
+  }
+  else
+  {
+    detail::run_parts(*runner, parts, [&](std::size_t part) {
+      sort_groups(detail::part_begin(box_count, part, parts), detail::part_begin(box_count, part + 1, parts));
+    });
   }
   // Swapping hands the sorted buffer out and keeps the old one as scratch.
   pairs.swap(sorted_pairs_);

@@ -33,11 +33,6 @@ constexpr std::uint64_t kHashX = 0x9E3779B97F4A7C15ull;
 constexpr std::uint64_t kHashY = 0xC2B2AE3D27D4EB4Full;
 constexpr unsigned kHashFold = 32;  // bits folded down so the mask sees the high bits
 
-std::int64_t area(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1)
-{
-  return (static_cast<std::int64_t>(x1) - x0 + 1) * (static_cast<std::int64_t>(y1) - y0 + 1);
-}
-
 std::size_t power_of_two_at_least(std::size_t n)
 {
   std::size_t p = 1;
@@ -66,7 +61,7 @@ std::size_t BroadPhase::bucket_of(std::int32_t cx, std::int32_t cy) const
 std::size_t BroadPhase::choose_layout(std::size_t entry_count)
 {
   const std::int64_t cells =
-      grid_boxes_.empty() ? 0 : area(occupied_.x0, occupied_.y0, occupied_.x1, occupied_.y1);
+      grid_boxes_.empty() ? 0 : detail::cell_area(occupied_.x0, occupied_.y0, occupied_.x1, occupied_.y1);
   if (cells > 0 && cells <= kDenseCellsPerEntry * static_cast<std::int64_t>(entry_count))
   {
     dense_width_ = static_cast<std::int64_t>(occupied_.x1) - occupied_.x0 + 1;
@@ -82,18 +77,7 @@ std::size_t BroadPhase::choose_layout(std::size_t entry_count)
 
 void BroadPhase::fill_grid(RangeRunner* runner)
 {
-  std::size_t entry_count = 0;
-  occupied_ = {0, 0, -1, -1};
-  first_entry_.resize(grid_boxes_.size());
-  for (std::size_t k = 0; k < grid_boxes_.size(); ++k)
-  {
-    const CellRange& r = ranges_[grid_boxes_[k]];
-    first_entry_[k] = entry_count;
-    entry_count += static_cast<std::size_t>(area(r.x0, r.y0, r.x1, r.y1));
-    occupied_ = k == 0 ? r
-                       : CellRange{std::min(occupied_.x0, r.x0), std::min(occupied_.y0, r.y0),
-                                   std::max(occupied_.x1, r.x1), std::max(occupied_.y1, r.y1)};
-  }
+  const std::size_t entry_count = entry_count_;
   const std::size_t bucket_count = choose_layout(entry_count);
   bucket_start_.assign(bucket_count + 1, 0);
   entries_.resize(entry_count);
@@ -297,7 +281,7 @@ void BroadPhase::large_against_grid(const std::vector<Aabb>& boxes, std::size_t 
   };
   // Probe the covered cells, or scan every entry when that is cheaper (a slab
   // under the whole scene covers more cells than are occupied).
-  if (area(clip.x0, clip.y0, clip.x1, clip.y1) >= static_cast<std::int64_t>(entries_.size()))
+  if (detail::cell_area(clip.x0, clip.y0, clip.x1, clip.y1) >= static_cast<std::int64_t>(entries_.size()))
   {
     for (const Entry& e : entries_)
     {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "collision2d/broad_phase.h"
@@ -17,6 +18,12 @@ namespace detail
 /// Boxes or grid entries below which a pass stays in one part: too little
 /// work to pay for waking the runner's threads.
 constexpr std::size_t kMinSharedBroadItems = 4096;
+
+/// Cells in the inclusive range [x0, x1] x [y0, y1].
+inline std::int64_t cell_area(std::int32_t x0, std::int32_t y0, std::int32_t x1, std::int32_t y1)
+{
+  return (static_cast<std::int64_t>(x1) - x0 + 1) * (static_cast<std::int64_t>(y1) - y0 + 1);
+}
 
 /// Whether a box takes part in pairing: finite, with lo <= hi on both axes.
 /// Any other box is empty and pairs with nothing.

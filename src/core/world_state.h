@@ -88,7 +88,7 @@ struct WorldState
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
   std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
-  std::vector<double> energies_;          ///< kinetic_energy: each summed body's, when the workers share it
+  std::vector<double> block_energies_;    ///< kinetic_energy: each block's sum
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;
   // The broad phase looks from the movers (world_contacts.cpp).

@@ -30,6 +30,15 @@ namespace collision2d
 {
 namespace detail
 {
+namespace
+{
+/// Bodies whose kinetic energies are summed as one chain (kinetic_energy):
+/// a world of up to this many sums them all in one, as a serial loop would.
+constexpr std::size_t kEnergyBlock = 512;
+
+std::size_t energy_blocks(std::size_t bodies) { return (bodies + kEnergyBlock - 1) / kEnergyBlock; }
+
+}  // namespace
 
 StepReport WorldImpl::step(int frames)
 {
@@ -45,6 +54,8 @@ StepReport WorldImpl::step(int frames)
   {
     return report;
   }
+  // finish_report must not allocate: the frames are kept by then.
+  make_room(block_energies_, energy_blocks(bodies_.size()));
   save_motion(frames);
   followed_known_ = false;  // publish_contacts works it out again for this step
   try
@@ -241,36 +252,30 @@ void WorldImpl::finish_report(StepReport& report)
 
 double WorldImpl::kinetic_energy()
 {
-  // A sleeping body's kinetic energy is exactly 0: summing the movers' in
-  // order gives the bits of summing every body's.
+  // A sleeping body's kinetic energy is exactly 0: summing the movers'
+  // gives the bits of summing every body's. Summed in blocks of a fixed
+  // size, then the blocks in order, the bits do not depend on the worker
+  // count, and the workers share the reads of the bodies' cold records.
   const bool movers_only = movers_current() && !body_pass_full_;
   const std::size_t count = movers_only ? movers_.size() : bodies_.size();
-  const auto energy = [&](std::size_t k) {
-    const Body& b = bodies_[movers_only ? movers_[k] : k];
-    return b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;
-  };
-  double sum = 0.0;
-  if (workers_.workers() == 1 || count < kMinSharedBodies)
-  {
-    for (std::size_t k = 0; k < count; ++k)
+  const std::size_t blocks = energy_blocks(count);
+  block_energies_.resize(blocks);  // room made before the frames (step)
+  workers_.parallel_for(blocks, kMinSharedBodies / kEnergyBlock, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t block = begin; block < end; ++block)
     {
-      sum += energy(k);
-    }
-    return sum;
-  }
-  // The bodies' records are cold by now: the workers read them into a dense
-  // list, summed in body order, so the bits do not depend on the worker
-  // count (adding a static body's +0 leaves a sum of energies as it is).
-  resize_to_overwrite(energies_, count);
-  workers_.parallel_for(count, kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      energies_[k] = energy(k);
+      double sum = 0.0;
+      for (std::size_t k = block * kEnergyBlock; k < std::min(count, (block + 1) * kEnergyBlock); ++k)
+      {
+        const Body& b = bodies_[movers_only ? movers_[k] : k];
+        sum += b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;  // + 0 leaves a sum >= 0 as it is
+      }
+      block_energies_[block] = sum;
     }
   });
-  for (std::size_t k = 0; k < count; ++k)
+  double sum = 0.0;
+  for (double block : block_energies_)
   {
-    sum += energies_[k];
+    sum += block;
   }
   return sum;
 }

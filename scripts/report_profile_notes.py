@@ -382,4 +382,35 @@ of 9870 boxes 1.57 (the report at f8df314, on the other host: 1.19 and 1.78). A
 whole run, each with about half of every stage: what the second worker
 loses is its pace while both run (the L3 and memory they share), not a
 stage left on one thread.
+
+A twentieth, on the same host (commits ca83380, 3b83b1d and d41dd57). The
+threads' samples in `perf record` of the rain of 1e5 bodies on 2 workers
+(frames 60 to 80) showed what the calling thread still did alone while the
+second worker waited: 6.7% of all samples, about 13% of its own. The step
+report's kinetic energy read every body's cold record in one loop (2.2%),
+the polygons' vertex offsets were laid out again every frame though only
+an edit changes them (1.4%), and the broad phase listed the classified
+boxes, walked them for the grid's entry count and sorted each body's pairs
+on that thread (2.7%). The energy is now summed in blocks of 512 bodies
+that the workers read in parts (the block sums added in order: the same
+bits for any worker count), the offsets are kept until an edit, and the
+broad phase counts each part's boxes and entries, then writes each part's
+lists from where the parts before it end. `collision2d_scaling_bench`,
+whole processes, alternating pairs, median new/old against de25f51: the
+rain of 1e5 on 2 workers 0.947 (8 pairs, every one below 1) and on 1
+worker 0.978 (6), the rain of 1e4 on 2 workers 0.965 (10), the pyramids of
+9870 and 99681 boxes on 2 workers 1.008 and 1.000; peak memory unchanged.
+At the rain of 1e4 alone the first of these changes measured nothing
+(1.0006, 12 pairs): there the serial stages were under 2% of the samples.
+Two heap effects on the way: a list of every body's energy (0.8 MiB for 1e5
+bodies) raised the pyramid of 99681 boxes' peak on 2 workers by 4.7 MiB,
+and letting the grid lists and their entry offsets grow in turn (one loop
+instead of two) raised the 1-worker rain of 1e5's by 5.4 MiB; the block
+sums and the old order of growth left both peaks as they were. Tried and
+not kept: the rows' softness as a flag a lane choosing one of the frame's
+two (contacts with a body that cannot move are the stiffer), 64 bytes
+less a batch (RowBatch 1024 -> 960, the same bits): the base-100 pyramid
+0.983, the base-20 1.015 (10 pairs each), the pyramid of 9870 boxes on 2
+workers 0.970 and the rain of 1e4 on 2 workers 1.004 (8 each), within this
+host's spread; the two selects a lane cost about what the loads saved.
 """

@@ -96,7 +96,7 @@ private:
     std::size_t entries = 0;
     CellRange occupied{0, 0, -1, -1};  ///< the grid boxes' cells (none: empty)
   };
-  /// classify without a runner.
+  /// classify on the calling thread alone (no runner, or too few boxes to share).
   void list_in_one_pass(const std::vector<Aabb>& boxes);
   /// Classes boxes [begin, end) and counts them.
   GridLayout count_classes(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end);

@@ -214,7 +214,8 @@ void BroadPhase::classify(const std::vector<Aabb>& boxes, RangeRunner* runner)
   box_class_.resize(n);
   part_layouts_.resize(parts);
   detail::run_parts(*runner, parts, [&](std::size_t part) {
-    part_layouts_[part] = count_classes(boxes, detail::part_begin(n, part, parts), detail::part_begin(n, part + 1, parts));
+    part_layouts_[part] =
+        count_classes(boxes, detail::part_begin(n, part, parts), detail::part_begin(n, part + 1, parts));
   });
   GridLayout whole;
   for (GridLayout& layout : part_layouts_)

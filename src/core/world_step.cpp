@@ -252,22 +252,39 @@ void WorldImpl::finish_report(StepReport& report)
 
 double WorldImpl::kinetic_energy()
 {
-  // A sleeping body's kinetic energy is exactly 0: summing the movers'
-  // gives the bits of summing every body's. Summed in blocks of a fixed
-  // size, then the blocks in order, the bits do not depend on the worker
-  // count, and the workers share the reads of the bodies' cold records.
+  // Summed in blocks of a fixed number of body indices, then the blocks in
+  // order: the bits do not depend on the worker count, and the workers share
+  // the reads of the bodies' cold records. A body that does not move has no
+  // energy, so a block summing only its movers has the bits of summing all
+  // its bodies.
   const bool movers_only = movers_current() && !body_pass_full_;
-  const std::size_t count = movers_only ? movers_.size() : bodies_.size();
-  const std::size_t blocks = energy_blocks(count);
-  block_energies_.resize(blocks);  // room made before the frames (step)
-  workers_.parallel_for(blocks, kMinSharedBodies / kEnergyBlock, [&](std::size_t begin, std::size_t end) {
+  const std::size_t n = bodies_.size();
+  block_energies_.resize(energy_blocks(n));  // room made before the frames (step)
+  const auto energy = [this](std::size_t i) {
+    const Body& b = bodies_[i];
+    return b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;  // + 0 leaves a sum >= 0 as it is
+  };
+  const std::size_t min_shared = kMinSharedBodies / kEnergyBlock;
+  workers_.parallel_for(block_energies_.size(), min_shared, [&](std::size_t begin, std::size_t end) {
     for (std::size_t block = begin; block < end; ++block)
     {
+      const std::size_t first = block * kEnergyBlock;
+      const std::size_t last = std::min(n, first + kEnergyBlock);
       double sum = 0.0;
-      for (std::size_t k = block * kEnergyBlock; k < std::min(count, (block + 1) * kEnergyBlock); ++k)
+      if (movers_only)  // movers_ ascends
       {
-        const Body& b = bodies_[movers_only ? movers_[k] : k];
-        sum += b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;  // + 0 leaves a sum >= 0 as it is
+        const auto from = std::lower_bound(movers_.begin(), movers_.end(), first);
+        for (auto it = from; it != movers_.end() && *it < last; ++it)
+        {
+          sum += energy(*it);
+        }
+      }
+      else
+      {
+        for (std::size_t i = first; i < last; ++i)
+        {
+          sum += energy(i);
+        }
       }
       block_energies_[block] = sum;
     }

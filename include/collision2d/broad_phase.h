@@ -95,6 +95,10 @@ private:
     std::size_t large = 0;  ///< boxes too large for it
     std::size_t entries = 0;
     CellRange occupied{0, 0, -1, -1};  ///< the grid boxes' cells (none: empty)
+    /// Counts a grid box covering `cells`.
+    void add_grid_box(const CellRange& cells);
+    /// Adds another part's count.
+    void add(const GridLayout& other);
   };
   /// classify on the calling thread alone (no runner, or too few boxes to share).
   void list_in_one_pass(const std::vector<Aabb>& boxes);
@@ -102,8 +106,6 @@ private:
   GridLayout count_classes(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end);
   /// Lists the classed boxes [begin, end) from `at` on.
   void list_classes(std::size_t begin, std::size_t end, GridLayout at);
-  /// The smallest range covering both.
-  static CellRange cover(const CellRange& p, const CellRange& q);
   /// Box i's class, its cells stored in ranges_ when usable.
   BoxClass classify_box(const std::vector<Aabb>& boxes, std::size_t i);
   void find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);

@@ -222,12 +222,7 @@ void BroadPhase::classify(const std::vector<Aabb>& boxes, RangeRunner* runner)
   {
     const GridLayout counted = layout;
     layout = GridLayout{whole.grid, whole.large, whole.entries, CellRange{}};  // where the part's lists start
-    whole.occupied = counted.grid == 0 ? whole.occupied
-                     : whole.grid == 0 ? counted.occupied
-                                       : cover(whole.occupied, counted.occupied);
-    whole.grid += counted.grid;
-    whole.large += counted.large;
-    whole.entries += counted.entries;
+    whole.add(counted);
   }
   detail::resize_to_overwrite(grid_boxes_, whole.grid);
   detail::resize_to_overwrite(first_entry_, whole.grid);
@@ -257,10 +252,8 @@ void BroadPhase::list_in_one_pass(const std::vector<Aabb>& boxes)
   first_entry_.resize(grid_boxes_.size());
   for (std::size_t k = 0; k < grid_boxes_.size(); ++k)
   {
-    const CellRange& r = ranges_[grid_boxes_[k]];
     first_entry_[k] = whole.entries;
-    whole.entries += static_cast<std::size_t>(detail::cell_area(r.x0, r.y0, r.x1, r.y1));
-    whole.occupied = k == 0 ? r : cover(whole.occupied, r);
+    whole.add_grid_box(ranges_[grid_boxes_[k]]);
   }
   entry_count_ = whole.entries;
   occupied_ = whole.occupied;
@@ -274,10 +267,7 @@ BroadPhase::GridLayout BroadPhase::count_classes(const std::vector<Aabb>& boxes,
     box_class_[i] = classify_box(boxes, i);
     if (box_class_[i] == BoxClass::Grid)
     {
-      const CellRange& r = ranges_[i];
-      counted.occupied = counted.grid == 0 ? r : cover(counted.occupied, r);
-      ++counted.grid;
-      counted.entries += static_cast<std::size_t>(detail::cell_area(r.x0, r.y0, r.x1, r.y1));
+      counted.add_grid_box(ranges_[i]);
     }
     counted.large += box_class_[i] == BoxClass::Large ? 1 : 0;
   }
@@ -302,9 +292,21 @@ void BroadPhase::list_classes(std::size_t begin, std::size_t end, GridLayout at)
   }
 }
 
-BroadPhase::CellRange BroadPhase::cover(const CellRange& p, const CellRange& q)
+void BroadPhase::GridLayout::add_grid_box(const CellRange& cells)
 {
-  return {std::min(p.x0, q.x0), std::min(p.y0, q.y0), std::max(p.x1, q.x1), std::max(p.y1, q.y1)};
+  add(GridLayout{1, 0, static_cast<std::size_t>(detail::cell_area(cells.x0, cells.y0, cells.x1, cells.y1)), cells});
+}
+
+void BroadPhase::GridLayout::add(const GridLayout& other)
+{
+  const CellRange& o = other.occupied;
+  occupied = other.grid == 0 ? occupied
+             : grid == 0     ? o
+                             : CellRange{std::min(occupied.x0, o.x0), std::min(occupied.y0, o.y0),
+                                         std::max(occupied.x1, o.x1), std::max(occupied.y1, o.y1)};
+  grid += other.grid;
+  large += other.large;
+  entries += other.entries;
 }
 
 BroadPhase::BoxClass BroadPhase::classify_box(const std::vector<Aabb>& boxes, std::size_t i)

@@ -264,6 +264,11 @@ double WorldImpl::kinetic_energy()
     const Body& b = bodies_[i];
     return b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;  // + 0 leaves a sum >= 0 as it is
   };
+  // Where body index i starts in the list summed: the bodies, or the movers (movers_ ascends).
+  const auto position = [&](std::size_t i) {
+    return movers_only ? static_cast<std::size_t>(std::lower_bound(movers_.begin(), movers_.end(), i) - movers_.begin())
+                       : i;
+  };
   const std::size_t min_shared = kMinSharedBodies / kEnergyBlock;
   workers_.parallel_for(block_energies_.size(), min_shared, [&](std::size_t begin, std::size_t end) {
     for (std::size_t block = begin; block < end; ++block)
@@ -271,20 +276,10 @@ double WorldImpl::kinetic_energy()
       const std::size_t first = block * kEnergyBlock;
       const std::size_t last = std::min(n, first + kEnergyBlock);
       double sum = 0.0;
-      if (movers_only)  // movers_ ascends
+      const std::size_t end_k = position(last);
+      for (std::size_t k = position(first); k < end_k; ++k)
       {
-        const auto from = std::lower_bound(movers_.begin(), movers_.end(), first);
-        for (auto it = from; it != movers_.end() && *it < last; ++it)
-        {
-          sum += energy(*it);
-        }
-      }
-      else
-      {
-        for (std::size_t i = first; i < last; ++i)
-        {
-          sum += energy(i);
-        }
+        sum += energy(movers_only ? movers_[k] : k);
       }
       block_energies_[block] = sum;
     }

@@ -102,8 +102,13 @@ struct WorldImpl : WorldState
   /// After move_body: a stopped body held, a free one on its parabola,
   /// and the pose change its contacts follow.
   void follow_body(std::size_t i, const StepContext& ctx);
-  /// The angles in frame_theta_ set on the bodies that turned.
-  void turn_bodies();
+  /// How body i moves in this frame's substeps.
+  FrameMotion frame_motion(std::size_t i) const;
+  /// move_body on the frame's poses (frame_position_, frame_theta_).
+  void move_in_frame(std::size_t i, const StepContext& ctx, bool swept);
+  /// The poses in frame_position_ and frame_theta_ set on the bodies, with
+  /// their velocities when `velocities`.
+  void place_bodies(bool velocities);
   void integrate_velocities(const StepContext& ctx, bool first);
   /// The soft passes, or in exact mode each island's LCP (the passes then
   /// take only the islands it could not solve).
@@ -270,6 +275,7 @@ struct WorldImpl : WorldState
 
   // world_solve.cpp: the velocity stage on the contact-solver kernel.
   void load_velocities();
+  void load_velocity(std::size_t i);
   void store_velocities();
   void store_velocity(std::size_t i);
   void prepare_points(const ActiveEffects& effects);

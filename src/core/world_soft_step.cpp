@@ -51,8 +51,8 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // frame, each pair's points prepared (masses, softness) as they are added.
   const PointPreparation preparation = point_preparation(ctx);
   detect(ctx, settings_.speculative_margin, report, &preparation);  // world_contacts.cpp
-  // 2. Prepare the bodies; the rows from the prepared points.
-  load_velocities();                                      // world_solve.cpp
+  // 2. Prepare the bodies (velocities, poses, which touch); the rows from
+  // the prepared points.
   prepare_soft_bodies();
   if (rows_on())
   {
@@ -71,14 +71,13 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     restitute(report);
     ++report.substeps;
   }
-  turn_bodies();
-  // 4. The impulses kept for next frame: publishing reads each point's back
-  // from its row.
+  // 4. The poses and velocities onto the bodies; the impulses kept for next
+  // frame: publishing reads each point's back from its row.
+  place_bodies(true);
   if (rows_on())
   {
     soft_rows_.drop_spare_body(velocity_);
   }
-  store_velocities();
   report.contact_count = points_.size() + sleeping_contacts_.size();
   require_finite_state();                                 // world_step.cpp: before the contacts are published
   if (ctx.effects.sleeping)
@@ -106,15 +105,22 @@ bool WorldImpl::prepare_pair_points(const PointPreparation& how, std::size_t k)
 
 void WorldImpl::prepare_soft_bodies()
 {
+  velocity_.resize(bodies_.size());
   stopped_.resize(bodies_.size());
   touching_.resize(bodies_.size());
   held_position_.resize(bodies_.size());
   held_theta_.resize(bodies_.size());
   prepared_position_.resize(bodies_.size());
   prepared_theta_.resize(bodies_.size());
+  frame_position_.resize(bodies_.size());
   frame_theta_.resize(bodies_.size());
+  frame_motion_.resize(bodies_.size());
   swept_reach_sq_.resize(bodies_.size());
-  for_each_body([this](std::size_t i) { reset_body_motion(i); });
+  // One pass over the body records, which a large world streams from memory.
+  for_each_body([this](std::size_t i) {
+    load_velocity(i);                                     // world_solve.cpp
+    reset_body_motion(i);
+  });
   // The frame's active points are those of the pairs that hit (detect()),
   // so the short pair list says which bodies they touch.
   for (std::size_t k = 0; k < pairs_.size(); ++k)
@@ -172,16 +178,24 @@ bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
 
 void WorldImpl::reset_body_motion(std::size_t i)
 {
-  BodyVelocity& body = velocity_[i];
-  body.moved = Vec2{0.0, 0.0};
-  body.turned_cos = 1.0;
-  body.turned_sin = 0.0;
   prepared_position_[i] = bodies_[i].position();
   prepared_theta_[i] = bodies_[i].theta();
+  frame_position_[i] = bodies_[i].position();
   frame_theta_[i] = bodies_[i].theta();
+  frame_motion_[i] = frame_motion(i);
   stopped_[i] = false;
   touching_[i] = false;
   swept_reach_sq_[i] = sweep_reach_sq(i);
+}
+
+FrameMotion WorldImpl::frame_motion(std::size_t i) const
+{
+  const BodyType type = bodies_[i].type();
+  if (type == BodyType::Static || asleep_[i])
+  {
+    return FrameMotion::Still;
+  }
+  return type == BodyType::Kinematic ? FrameMotion::Kinematic : FrameMotion::Dynamic;
 }
 
 void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)
@@ -191,7 +205,7 @@ void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)
   // After the first substep a body no contact touches has had this kick in
   // the last move pass (integrate_positions), while its velocity was in cache.
   for_each_body([&](std::size_t i) {
-    if ((first || touching_[i]) && awake_dynamic(i))
+    if ((first || touching_[i]) && frame_motion_[i] == FrameMotion::Dynamic)
     {
       velocity_[i].v = velocity_[i].v + gravity_kick;
       if (touching_[i])
@@ -258,25 +272,17 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool k
   // with its velocity, shared among the workers. A body stopped at its time
   // of impact stays there for the rest of the frame, velocity kept: no
   // contact stops it before the next frame's collide finds the touching pair.
-  // The velocities go onto the bodies in the move pass (a sweep stores them
-  // first): one pass over the bodies fewer.
   const bool swept = sweep(ctx.h, report, false);         // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
-  thetas_pending_ = true;
+  poses_pending_ = true;
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
-  // The angles go to frame_theta_ and onto the bodies, with their sine and
-  // cosine, once per frame (turn_bodies): nothing reads them between.
+  // The poses stay in frame_position_ and frame_theta_ and go onto the
+  // bodies once per frame (place_bodies), as do the velocities: a substep
+  // reads and writes no body record, which a large world streams from memory.
   for_each_body([&](std::size_t i) {
-    if (!swept)
-    {
-      store_velocity(i);
-    }
-    if (move_body(i, ctx, swept))
-    {
-      frame_theta_[i] = frame_theta_[i] + bodies_[i].omega() * ctx.h;
-    }
+    move_in_frame(i, ctx, swept);
     follow_body(i, ctx);
-    if (kick_free && !touching_[i] && awake_dynamic(i))
+    if (kick_free && !touching_[i] && frame_motion_[i] == FrameMotion::Dynamic)
     {
       // Nothing reads its velocity before the next substep's kick would.
       velocity_[i].v = velocity_[i].v + gravity_kick;
@@ -284,15 +290,46 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool k
   });
 }
 
-void WorldImpl::turn_bodies()
+void WorldImpl::move_in_frame(std::size_t i, const StepContext& ctx, bool swept)
 {
-  if (!thetas_pending_)
+  // move_body's arithmetic on the frame's poses, the velocities the solver left.
+  const FrameMotion motion = frame_motion_[i];
+  if (motion == FrameMotion::Still)
   {
     return;
   }
-  thetas_pending_ = false;
-  for_each_body([this](std::size_t i) {
+  const BodyVelocity& state = velocity_[i];
+  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
+  frame_position_[i] = frame_position_[i] + state.v * travel;
+  // Kinematic bodies follow their set spin whatever the rotation toggle says.
+  if ((ctx.effects.rotation || motion == FrameMotion::Kinematic) && state.omega != 0.0)
+  {
+    frame_theta_[i] = frame_theta_[i] + state.omega * ctx.h;
+  }
+}
+
+void WorldImpl::place_bodies(bool velocities)
+{
+  const bool poses = poses_pending_;
+  poses_pending_ = false;
+  if (!poses && !velocities)
+  {
+    return;
+  }
+  for_each_body([&](std::size_t i) {
     Body& b = bodies_[i];
+    if (velocities)
+    {
+      store_velocity(i);                                  // world_solve.cpp
+    }
+    if (!poses)
+    {
+      return;
+    }
+    if (frame_motion_[i] != FrameMotion::Still)
+    {
+      b.set_position(frame_position_[i]);
+    }
     const double theta = frame_theta_[i];
     if (theta != b.theta() || std::signbit(theta) != std::signbit(b.theta()))
     {
@@ -303,31 +340,31 @@ void WorldImpl::turn_bodies()
 
 void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
 {
-  Body& b = bodies_[i];
+  Vec2& position = frame_position_[i];
   if (stopped_[i])
   {
-    b.set_position(held_position_[i]);
+    position = held_position_[i];
     frame_theta_[i] = held_theta_[i];
     return;
   }
   if (clamped(i))
   {
     stopped_[i] = true;
-    held_position_[i] = b.position();
+    held_position_[i] = position;
     held_theta_[i] = frame_theta_[i];
   }
-  else if (!touching_[i] && awake_dynamic(i))
+  else if (!touching_[i] && frame_motion_[i] == FrameMotion::Dynamic)
   {
     // In free flight the substep's mean velocity is the end one less half
     // its gravity kick: a thrown body follows its parabola exactly.
-    b.set_position(b.position() - (0.5 * ctx.h * ctx.h) * settings_.gravity);
+    position = position - (0.5 * ctx.h * ctx.h) * settings_.gravity;
   }
   if (!touching_[i])
   {
     return;  // only contact points read a body's motion since prepare
   }
   BodyVelocity& state = velocity_[i];
-  state.moved = b.position() - prepared_position_[i];
+  state.moved = position - prepared_position_[i];
   turn_of(frame_theta_[i] - prepared_theta_[i], state.turned_cos, state.turned_sin);
 }
 

@@ -13,10 +13,13 @@ namespace detail
 void WorldImpl::load_velocities()
 {
   velocity_.resize(bodies_.size());
-  for_each_body([this](std::size_t i) {
-    const Body& b = bodies_[i];
-    set_body_velocity(velocity_[i], b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
-  });
+  for_each_body([this](std::size_t i) { load_velocity(i); });
+}
+
+void WorldImpl::load_velocity(std::size_t i)
+{
+  const Body& b = bodies_[i];
+  set_body_velocity(velocity_[i], b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
 }
 
 void WorldImpl::store_velocities()

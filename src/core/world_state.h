@@ -25,6 +25,15 @@ namespace collision2d
 {
 namespace detail
 {
+/// How a body moves in a soft frame's substeps: not at all (static or
+/// asleep), under gravity and its contacts, or at its set velocity.
+enum class FrameMotion : unsigned char
+{
+  Still,
+  Dynamic,
+  Kinematic
+};
+
 struct WorldState
 {
   explicit WorldState(const WorldSettings& settings) : settings_(settings) {}
@@ -116,8 +125,10 @@ struct WorldState
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep
   std::vector<Vec2> prepared_position_;  ///< soft step: pose when the frame's contacts were prepared
   std::vector<double> prepared_theta_;
-  std::vector<double> frame_theta_;      ///< soft step: each body's angle during the substeps (turn_bodies)
-  bool thetas_pending_ = false;          ///< frame_theta_ holds angles not yet set on the bodies
+  std::vector<Vec2> frame_position_;     ///< soft step: each body's pose during the substeps (place_bodies)
+  std::vector<double> frame_theta_;
+  std::vector<FrameMotion> frame_motion_;  ///< soft step: how each body moves this frame
+  bool poses_pending_ = false;           ///< frame_position_ and frame_theta_ hold poses not yet on the bodies
   /// soft step: stopped at its time of impact this frame (bytes, not bits:
   /// the workers set their own bodies' flags at once)
   std::vector<unsigned char> stopped_;

@@ -105,11 +105,9 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
   {
     return false;
   }
-  if (!stored)
-  {
-    store_velocities();  // the pairs' sweeps read every body's velocity
-  }
-  turn_bodies();  // the soft step's angles so far: sweeping reads the outlines
+  // The pairs' sweeps read every body's velocity and outline: the soft
+  // step's velocities and poses so far go onto the bodies.
+  place_bodies(!stored);
   const std::size_t n = bodies_.size();
   toi_.assign(n, 1.0);
   boxes_.resize(n);

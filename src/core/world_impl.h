@@ -53,6 +53,8 @@ struct WorldImpl : WorldState
   /// finite. Each frame checks before it publishes its contacts: a step that
   /// publishes once then keeps its starting contacts in place (save_motion).
   void require_finite_state();
+  /// Throws that overflow_error for body i (an index).
+  [[noreturn]] void throw_non_finite(std::size_t i) const;
   /// Keeps aside what a step of `frames` frames changes.
   void save_motion(int frames);
   void restore_motion();
@@ -107,8 +109,9 @@ struct WorldImpl : WorldState
   /// move_body on the frame's poses (frame_position_, frame_theta_).
   void move_in_frame(std::size_t i, const StepContext& ctx, bool swept);
   /// The poses in frame_position_ and frame_theta_ set on the bodies, with
-  /// their velocities when `velocities`.
-  void place_bodies(bool velocities);
+  /// their velocities when `velocities`. Returns the first body it visited
+  /// whose state is not finite (as require_finite_state), else the body count.
+  std::size_t place_bodies(bool velocities);
   void integrate_velocities(const StepContext& ctx, bool first);
   /// The soft passes, or in exact mode each island's LCP (the passes then
   /// take only the islands it could not solve).

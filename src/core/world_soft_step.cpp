@@ -71,15 +71,19 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     restitute(report);
     ++report.substeps;
   }
-  // 4. The poses and velocities onto the bodies; the impulses kept for next
-  // frame: publishing reads each point's back from its row.
-  place_bodies(true);
+  // 4. The poses and velocities onto the bodies, checked finite before the
+  // contacts are published; the impulses kept for next frame: publishing
+  // reads each point's back from its row.
+  const std::size_t bad = place_bodies(true);
+  if (bad != bodies_.size())
+  {
+    throw_non_finite(bad);                                // world_step.cpp
+  }
   if (rows_on())
   {
     soft_rows_.drop_spare_body(velocity_);
   }
   report.contact_count = points_.size() + sleeping_contacts_.size();
-  require_finite_state();                                 // world_step.cpp: before the contacts are published
   if (ctx.effects.sleeping)
   {
     make_room_to_move_contacts(points_.size());                 // world_sleep.cpp: nothing after the publish allocates
@@ -308,13 +312,14 @@ void WorldImpl::move_in_frame(std::size_t i, const StepContext& ctx, bool swept)
   }
 }
 
-void WorldImpl::place_bodies(bool velocities)
+std::size_t WorldImpl::place_bodies(bool velocities)
 {
   const bool poses = poses_pending_;
   poses_pending_ = false;
+  std::atomic<std::size_t> first_bad{bodies_.size()};
   if (!poses && !velocities)
   {
-    return;
+    return first_bad.load();
   }
   for_each_body([&](std::size_t i) {
     Body& b = bodies_[i];
@@ -322,20 +327,25 @@ void WorldImpl::place_bodies(bool velocities)
     {
       store_velocity(i);                                  // world_solve.cpp
     }
-    if (!poses)
+    if (poses)
     {
-      return;
+      if (frame_motion_[i] != FrameMotion::Still)
+      {
+        b.set_position(frame_position_[i]);
+      }
+      const double theta = frame_theta_[i];
+      if (theta != b.theta() || std::signbit(theta) != std::signbit(b.theta()))
+      {
+        b.set_theta(theta);
+      }
     }
-    if (frame_motion_[i] != FrameMotion::Still)
+    // Checked here while the record is in cache: a pass over the bodies fewer.
+    if (non_finite_state_field(b) != nullptr)
     {
-      b.set_position(frame_position_[i]);
-    }
-    const double theta = frame_theta_[i];
-    if (theta != b.theta() || std::signbit(theta) != std::signbit(b.theta()))
-    {
-      b.set_theta(theta);
+      lower_to(first_bad, i);
     }
   });
+  return first_bad.load();
 }
 
 void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)

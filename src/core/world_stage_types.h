@@ -98,6 +98,15 @@ inline void raise_to(std::atomic<double>& best, double value)
   }
 }
 
+/// best = std::min(best, value) from several workers, in any order.
+inline void lower_to(std::atomic<std::size_t>& best, std::size_t value)
+{
+  std::size_t seen = best.load();
+  while (value < seen && !best.compare_exchange_weak(seen, value))
+  {
+  }
+}
+
 /// The root of island i in a union-find forest, halving the path on the way.
 inline std::size_t island_root(std::vector<std::size_t>& parent, std::size_t i)
 {

@@ -313,11 +313,16 @@ void WorldImpl::require_finite_state()
                                       [n](std::size_t found, std::size_t part) { return found != n ? found : part; });
   if (i != n)
   {
-    std::ostringstream msg;
-    msg << "step: body " << ids_[i] << " overflowed to a non-finite state in frame " << frame_count_ + 1
-        << " (its speed, size or mass lies far beyond the supported ranges)";
-    throw std::overflow_error(msg.str());
+    throw_non_finite(i);
   }
+}
+
+void WorldImpl::throw_non_finite(std::size_t i) const
+{
+  std::ostringstream msg;
+  msg << "step: body " << ids_[i] << " overflowed to a non-finite state in frame " << frame_count_ + 1
+      << " (its speed, size or mass lies far beyond the supported ranges)";
+  throw std::overflow_error(msg.str());
 }
 
 namespace

@@ -132,7 +132,8 @@ void WorldImpl::find_mover_pairs()
       // each body can travel in the frame (reach_ is 0 for a resting body).
       const std::size_t i = looked_[k];
       reach_[i] = margin_ > 0.0 && !is_resting_[i] ? frame_reach(bodies_[i]) : 0.0;
-      mover_boxes_[k] = margin_ > 0.0 ? bodies_[i].aabb().inflated(margin_ + reach_[i]) : bodies_[i].aabb();
+      const Aabb box = posed_box(i);
+      mover_boxes_[k] = margin_ > 0.0 ? box.inflated(margin_ + reach_[i]) : box;
     }
   });
   fat_pairs_.find_pairs(mover_boxes_, broad_phase_, mover_pairs_, workers_);  // fat_box_pairs.h
@@ -268,6 +269,24 @@ PosedPolygon WorldImpl::posed(std::size_t i) const
   }
   const Vec2* vertices = posed_vertices_.data() + posed_offset_[i];
   return {&b, vertices, vertices + b.vertex_count()};
+}
+
+Aabb WorldImpl::posed_box(std::size_t i) const
+{
+  // Body::aabb() turns the polygon's vertices again, from a block of their
+  // own; the outline just laid out holds the same sums (world_vertex_of).
+  const PosedPolygon p = posed(i);
+  if (p.vertices == nullptr)
+  {
+    return bodies_[i].aabb();
+  }
+  Aabb box{p.vertices[0], p.vertices[0]};
+  for (const Vec2* v = p.vertices + 1; v != p.normals; ++v)
+  {
+    box.lo = {std::min(box.lo.x, v->x), std::min(box.lo.y, v->y)};
+    box.hi = {std::max(box.hi.x, v->x), std::max(box.hi.y, v->y)};
+  }
+  return box;
 }
 
 bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const

@@ -212,6 +212,8 @@ struct WorldImpl : WorldState
   /// Every polygon's outline at its pose now, into posed_vertices_ (workers share it).
   void pose_bodies();
   void pose_range(std::size_t begin, std::size_t end);
+  /// Body i's tight box, read from its outline (pose_bodies) when it has one.
+  Aabb posed_box(std::size_t i) const;
   PosedPolygon posed(std::size_t i) const;
   /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (the workers share it).
   void collide_range(std::size_t begin, std::size_t end);

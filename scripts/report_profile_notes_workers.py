@@ -1,0 +1,117 @@
+"""The later profile notes (the nineteenth on): what a second worker and the
+memory stream cost on the hosts that ran the reports. report_profile_notes.py
+joins them to the earlier ones."""
+
+PROFILE_NOTES_WORKERS = """A nineteenth, on a second host (commits 15ec9ca and 0556e24; scratch
+drivers, not committed). The reports up to commit f8df314 ran on a host
+that also calls itself "AMD EPYC"; this one is family 23 model 1, the
+first Zen generation, which splits each 256-bit operation into two
+128-bit halves, with 512 KiB of L2 a core and 8 MiB of L3 (the machine
+line now says so). On it the build of commit f2e10b7 stepped the five
+stacks at 2.04, 1.61, 1.68, 2.59 and 2.30 times Box2D v3's time (stack
+bench, 5 rounds of 2 s; that report: 1.6, 1.36, 1.36, 1.74, 1.56), and the
+row passes took 46% of the base-100 pyramid's frame (35% in the seventh
+note). Whole processes stepping the base-100 pyramid for 120 frames,
+alternating pairs, median ratios:
+- The four-lane path is still the fastest here: the two-lane path took
+  1.44 times its time and the scalar path 1.79 times (5 pairs each).
+- Divisions do not bound the rows: each replaced by a reciprocal
+  estimate refined twice (other bits) made the base-20 pyramid 7% slower
+  (8 pairs).
+- Bytes do, a little: 128 bytes of padding in each solver point cost about
+  5% (10 pairs, 0.952), 40 bytes a lane in the rows about 6% (0.941), and
+  aligning each body's solver state to a cache line nothing (0.994).
+Commit 15ec9ca keeps the rows' flags (friction acts, kinetic, sliding) in a
+byte a lane beside the body indices instead of in doubles: 144 -> 128
+bytes a point of a two-point manifold, 192 -> 176 of a one-point one, the
+same bits. The base-100 pyramid 0.928 (10 pairs); the base-20 pyramid
+1.001 (its rows stay in cache); `collision2d_scaling_bench`, the pyramid of
+9870 boxes on 2 workers 0.916 (8 pairs), the rain of 1e4 on 1 and 2
+workers 0.978 and 0.985 with 1.4 and 1.7 MiB less at its peak. Tried after
+it and not kept: the inverse masses read from the bodies' solver state
+(already in the four-lane gather's loads) instead of the rows, 64 bytes
+less a batch: base-100 1.009, rain of 1e4 1.02, pyramid of 9870 1.01; the
+inverse inertias too, a third load a body: base-100 1.043.
+Two workers on this host, at f2e10b7: the rain of 1e4 1.68 and 1.70 times
+faster than one (two runs of `collision2d_scaling_bench` each), the pyramid
+of 9870 boxes 1.57 (the report at f8df314, on the other host: 1.19 and 1.78). A
+`perf record` of that pyramid on 2 workers finds both threads busy for the
+whole run, each with about half of every stage: what the second worker
+loses is its pace while both run (the L3 and memory they share), not a
+stage left on one thread.
+
+A twentieth, on the same host (commits ca83380, 3b83b1d and d41dd57). The
+threads' samples in `perf record` of the rain of 1e5 bodies on 2 workers
+(frames 60 to 80) showed what the calling thread still did alone while the
+second worker waited: 6.7% of all samples, about 13% of its own. The step
+report's kinetic energy read every body's cold record in one loop (2.2%),
+the polygons' vertex offsets were laid out again every frame though only
+an edit changes them (1.4%), and the broad phase listed the classified
+boxes, walked them for the grid's entry count and sorted each body's pairs
+on that thread (2.7%). The energy is now summed in blocks of 512 bodies
+that the workers read in parts (the block sums added in order: the same
+bits for any worker count), the offsets are kept until an edit, and the
+broad phase counts each part's boxes and entries, then writes each part's
+lists from where the parts before it end. `collision2d_scaling_bench`,
+whole processes, alternating pairs, median new/old against de25f51: the
+rain of 1e5 on 2 workers 0.947 (8 pairs, every one below 1) and on 1
+worker 0.978 (6), the rain of 1e4 on 2 workers 0.965 (10), the pyramids of
+9870 and 99681 boxes on 2 workers 1.008 and 1.000; peak memory unchanged.
+At the rain of 1e4 alone the first of these changes measured nothing
+(1.0006, 12 pairs): there the serial stages were under 2% of the samples.
+Two heap effects on the way: a list of every body's energy (0.8 MiB for 1e5
+bodies) raised the pyramid of 99681 boxes' peak on 2 workers by 4.7 MiB,
+and letting the grid lists and their entry offsets grow in turn (one loop
+instead of two) raised the 1-worker rain of 1e5's by 5.4 MiB; the block
+sums and the old order of growth left both peaks as they were. Tried and
+not kept: the rows' softness as a flag a lane choosing one of the frame's
+two (contacts with a body that cannot move are the stiffer), 64 bytes
+less a batch (RowBatch 1024 -> 960, the same bits): the base-100 pyramid
+0.983, the base-20 1.015 (10 pairs each), the pyramid of 9870 boxes on 2
+workers 0.970 and the rain of 1e4 on 2 workers 1.004 (8 each), within this
+host's spread; the two selects a lane cost about what the loads saved.
+
+A twenty-first, on the same host (commits 10f7c1a, 6321686 and a8c5669;
+stage timers in a scratch build, not committed, frames 60 to 65 of the
+rain of 1e5 and 4 to 13 of the pyramid of 9870 boxes, as the scaling
+bench times them). In the rain the passes over every body took about 70%
+of a frame, and one alone a quarter: the substeps moved each body on its
+160-byte record, position and velocity, four times a frame (37 ns a body
+and substep, about what streaming two lines of the record in and out
+costs here). The poses now stay in frame_position_ and frame_theta_ and go
+onto the records once a frame (or before a sweep reads them); loading the
+velocities joins the pass that resets each body's motion, and storing
+them, the finite-state check and placing the poses are one pass; a
+mover's box is read from its outline just laid out, not from its vertices
+turned again. The same bits (golden hashes). In-process (timers on), the
+first commit took the rain of 1e5 from 58 to 44 ms a frame on 1 worker
+and from 36 to 26 on 2.
+`collision2d_scaling_bench`, whole processes, alternating pairs, median
+new/old against 18bbce0: the rain of 1e5 on 1 worker 0.787 and on 2
+0.730 (8 pairs each; peak 194.1 -> 191.1 and 210.3 -> 203.6 MiB), the
+rain of 1e4 on 2 workers 0.925, the pyramids of 9870 and 99681 boxes on 2
+workers 0.950 and 0.945 (8 and 6 pairs; peak +0.7 and +1.5 MiB, the two
+new arrays' 17 bytes a body); the base-20 stack 0.990 (8 pairs).
+What two workers still lose, per stage (1 worker / 2 workers): on the
+pyramid of 9870 boxes the row passes scale 1.82 to 1.89, the narrow phase
+1.5 to 1.6, publishing 1.54, filling the rows 1.37, ordering the
+manifolds 1.1 and colouring them 0.6 (one thread, reading what two
+wrote). A `memcpy` of 64 MiB copies 16.1 to 16.8 GB/s on one thread here
+and 21.0 to 23.1 on two (1.3 to 1.37 times): a stage that streams its
+data from memory cannot go much faster on the second core, and at these
+sizes filling, publishing and the narrow phase do. The 1.7 times asked
+of 2 workers on the large scenes needs fewer bytes a contact point, not
+more sharing. The same shows one thread's way: from the base-20 pyramid
+to the base-60 one, filling the rows grows from 3% to 10% of a frame and
+publishing from 3% to 8%, as base-60's point layouts (about 9 MB) pass the
+8 MiB L3 while Box2D v3's 1830 boxes (about 7 MB) stay in it; that is
+where its ratio (2.5 times) parts from base-20's and base-100's. Tried
+and not kept: marking the bodies for the sweep where their velocity for
+the substep is set (0.985, 10 pairs: most of the rain's bodies touch
+others through speculative contacts, so the marking pass stayed); a
+software prefetch of each colour's next batch while filling the rows
+(filling 9.8% -> 8.9% of base-60's samples, frame times within the
+spread); transparent huge pages for the whole process, as in the
+sixteenth (the pyramid of 99681 boxes within the spread on 1 and 2
+workers).
+"""

@@ -53,7 +53,7 @@ double WorldImpl::frame_reach(const Body& b) const
 
 void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report, const PointPreparation* prepare)
 {
-  pose_bodies();
+  pose_bodies();                                          // world_pose.cpp
   margin_ = margin;
   // Kept within the margin: a feature out of reach when the points were found
   // cannot reach the other body before the pair is found again.
@@ -221,72 +221,6 @@ bool WorldImpl::refresh_resting_grid()
   }
   resting_grid_.build(boxes_, resting_);
   return true;
-}
-
-void WorldImpl::pose_bodies()
-{
-  const std::size_t n = bodies_.size();
-  if (!body_pass_full_ && posed_offset_.size() == n)
-  {
-    // A resting body's outline is where the frame that made it rest put it.
-    for_each_body([this](std::size_t i) { pose_range(i, i + 1); });
-    return;
-  }
-  // Only an edit changes a body's vertex count, and the bodies' records are
-  // cold here: the offsets are laid out again after one.
-  if (posed_offset_.size() != n || posed_version_ != version_)
-  {
-    posed_offset_.resize(n);
-    std::size_t total = 0;
-    for (std::size_t i = 0; i < n; ++i)
-    {
-      posed_offset_[i] = total;
-      total += 2 * bodies_[i].vertex_count();
-    }
-    posed_vertices_.resize(total);
-    posed_version_ = version_;
-  }
-  workers_.parallel_for(n, kMinSharedBodies,
-                        [this](std::size_t begin, std::size_t end) { pose_range(begin, end); });
-}
-
-void WorldImpl::pose_range(std::size_t begin, std::size_t end)
-{
-  for (std::size_t i = begin; i < end; ++i)
-  {
-    const Body& b = bodies_[i];
-    Vec2* vertices = posed_vertices_.data() + posed_offset_[i];
-    pose_polygon(b, vertices, vertices + b.vertex_count());
-  }
-}
-
-PosedPolygon WorldImpl::posed(std::size_t i) const
-{
-  const Body& b = bodies_[i];
-  if (b.shape() == Shape::Disk)
-  {
-    return {&b, nullptr, nullptr};
-  }
-  const Vec2* vertices = posed_vertices_.data() + posed_offset_[i];
-  return {&b, vertices, vertices + b.vertex_count()};
-}
-
-Aabb WorldImpl::posed_box(std::size_t i) const
-{
-  // Body::aabb() turns the polygon's vertices again, from a block of their
-  // own; the outline just laid out holds the same sums (world_vertex_of).
-  const PosedPolygon p = posed(i);
-  if (p.vertices == nullptr)
-  {
-    return bodies_[i].aabb();
-  }
-  Aabb box{p.vertices[0], p.vertices[0]};
-  for (const Vec2* v = p.vertices + 1; v != p.normals; ++v)
-  {
-    box.lo = {std::min(box.lo.x, v->x), std::min(box.lo.y, v->y)};
-    box.hi = {std::max(box.hi.x, v->x), std::max(box.hi.y, v->y)};
-  }
-  return box;
 }
 
 bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const

@@ -209,6 +209,7 @@ struct WorldImpl : WorldState
   /// With `posed`, the polygons' outlines come from pose_bodies (the poses
   /// must not have changed since).
   bool collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const;
+  // world_pose.cpp: the outlines.
   /// Every polygon's outline at its pose now, into posed_vertices_ (workers share it).
   void pose_bodies();
   void pose_range(std::size_t begin, std::size_t end);

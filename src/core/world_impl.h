@@ -53,6 +53,8 @@ struct WorldImpl : WorldState
   /// finite. Each frame checks before it publishes its contacts: a step that
   /// publishes once then keeps its starting contacts in place (save_motion).
   void require_finite_state();
+  /// Lowers first_bad to i when body i's state is not finite.
+  void note_non_finite(std::size_t i, std::atomic<std::size_t>& first_bad) const;
   /// Throws that overflow_error for body i (an index).
   [[noreturn]] void throw_non_finite(std::size_t i) const;
   /// Keeps aside what a step of `frames` frames changes.
@@ -104,8 +106,10 @@ struct WorldImpl : WorldState
   /// After move_body: a stopped body held, a free one on its parabola,
   /// and the pose change its contacts follow.
   void follow_body(std::size_t i, const StepContext& ctx);
-  /// How body i moves in this frame's substeps.
+  /// How body i moves in this frame's substeps (world_step.cpp).
   FrameMotion frame_motion(std::size_t i) const;
+  /// Whether a body that moves so, at spin omega, turns in a substep.
+  static bool turns(const StepContext& ctx, FrameMotion motion, double omega);
   /// move_body on the frame's poses (frame_position_, frame_theta_).
   void move_in_frame(std::size_t i, const StepContext& ctx, bool swept);
   /// The poses in frame_position_ and frame_theta_ set on the bodies, with

@@ -192,16 +192,6 @@ void WorldImpl::reset_body_motion(std::size_t i)
   swept_reach_sq_[i] = sweep_reach_sq(i);
 }
 
-FrameMotion WorldImpl::frame_motion(std::size_t i) const
-{
-  const BodyType type = bodies_[i].type();
-  if (type == BodyType::Static || asleep_[i])
-  {
-    return FrameMotion::Still;
-  }
-  return type == BodyType::Kinematic ? FrameMotion::Kinematic : FrameMotion::Dynamic;
-}
-
 void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)
 {
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
@@ -305,8 +295,7 @@ void WorldImpl::move_in_frame(std::size_t i, const StepContext& ctx, bool swept)
   const BodyVelocity& state = velocity_[i];
   const double travel = swept ? toi_[i] * ctx.h : ctx.h;
   frame_position_[i] = frame_position_[i] + state.v * travel;
-  // Kinematic bodies follow their set spin whatever the rotation toggle says.
-  if ((ctx.effects.rotation || motion == FrameMotion::Kinematic) && state.omega != 0.0)
+  if (turns(ctx, motion, state.omega))
   {
     frame_theta_[i] = frame_theta_[i] + state.omega * ctx.h;
   }
@@ -340,10 +329,7 @@ std::size_t WorldImpl::place_bodies(bool velocities)
       }
     }
     // Checked here while the record is in cache: a pass over the bodies fewer.
-    if (non_finite_state_field(b) != nullptr)
-    {
-      lower_to(first_bad, i);
-    }
+    note_non_finite(i, first_bad);
   });
   return first_bad.load();
 }

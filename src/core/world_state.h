@@ -96,7 +96,6 @@ struct WorldState
   std::vector<double> partial_max_;      ///< max_over's result of each part
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
-  std::vector<std::size_t> first_bad_;    ///< require_finite_state: each part's first bad body
   std::vector<double> block_energies_;    ///< kinetic_energy: each block's sum
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;

@@ -192,18 +192,33 @@ void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepCon
   }
 }
 
+FrameMotion WorldImpl::frame_motion(std::size_t i) const
+{
+  const BodyType type = bodies_[i].type();
+  if (type == BodyType::Static || asleep_[i])
+  {
+    return FrameMotion::Still;
+  }
+  return type == BodyType::Kinematic ? FrameMotion::Kinematic : FrameMotion::Dynamic;
+}
+
+bool WorldImpl::turns(const StepContext& ctx, FrameMotion motion, double omega)
+{
+  // Kinematic bodies follow their set spin whatever the rotation toggle says.
+  return (ctx.effects.rotation || motion == FrameMotion::Kinematic) && omega != 0.0;
+}
+
 bool WorldImpl::move_body(std::size_t i, const StepContext& ctx, bool swept)
 {
-  Body& b = bodies_[i];
-  if (b.type() == BodyType::Static || asleep_[i])
+  const FrameMotion motion = frame_motion(i);
+  if (motion == FrameMotion::Still)
   {
     return false;
   }
+  Body& b = bodies_[i];
   const double travel = swept ? toi_[i] * ctx.h : ctx.h;
   b.set_position(b.position() + b.velocity() * travel);
-  // Kinematic bodies follow their set spin whatever the rotation toggle says.
-  const bool turns = ctx.effects.rotation || b.type() == BodyType::Kinematic;
-  return turns && b.omega() != 0.0;
+  return turns(ctx, motion, b.omega());
 }
 
 void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
@@ -294,26 +309,21 @@ double WorldImpl::kinetic_energy()
 
 void WorldImpl::require_finite_state()
 {
-  // Each part finds its first bad body; the first part's that has one is the
-  // first of all.
   // Only the bodies the frame visited can have changed (for_each_body).
-  const std::size_t n = bodies_.size();
-  const auto first_bad_in = [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      const std::size_t i = visited(k);
-      if (non_finite_state_field(bodies_[i]) != nullptr)
-      {
-        return i;
-      }
-    }
-    return n;
-  };
-  const std::size_t i = fold_in_parts(visited_count(), kMinSharedBodies, first_bad_, n, first_bad_in,
-                                      [n](std::size_t found, std::size_t part) { return found != n ? found : part; });
-  if (i != n)
+  std::atomic<std::size_t> first_bad{bodies_.size()};
+  for_each_body([&](std::size_t i) { note_non_finite(i, first_bad); });
+  if (first_bad.load() != bodies_.size())
   {
-    throw_non_finite(i);
+    throw_non_finite(first_bad.load());
+  }
+}
+
+void WorldImpl::note_non_finite(std::size_t i, std::atomic<std::size_t>& first_bad) const
+{
+  // The lowest index, whichever worker finds it: the same body for any split.
+  if (non_finite_state_field(bodies_[i]) != nullptr)
+  {
+    lower_to(first_bad, i);
   }
 }
 

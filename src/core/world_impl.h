@@ -57,6 +57,7 @@ struct WorldImpl : WorldState
   void note_non_finite(std::size_t i, std::atomic<std::size_t>& first_bad) const;
   /// Throws that overflow_error for body i (an index).
   [[noreturn]] void throw_non_finite(std::size_t i) const;
+  // world_rollback.cpp: what a refused step puts back.
   /// Keeps aside what a step of `frames` frames changes.
   void save_motion(int frames);
   void restore_motion();

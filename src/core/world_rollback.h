@@ -1,5 +1,5 @@
 // Internal to the core: what a step keeps aside so that a failed step puts
-// the World back exactly as it was (world_step.cpp keeps and restores it;
+// the World back exactly as it was (world_rollback.cpp keeps and restores it;
 // world_sleeping_contacts.cpp keeps what sleeping changes). Kept across
 // steps: no allocation per step once warmed up.
 #pragma once

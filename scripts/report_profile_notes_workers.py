@@ -118,8 +118,8 @@ workers).
 A twenty-second, on the same host: how the core is built. catkin builds
 the core as a shared library, compiled position-independent, and GCC then
 assumes any of its global functions may be replaced at load time: it
-calls them through the PLT and inlines none across the World's files and
-the contact verbs'. Measured at 63516d4 (whole processes, alternating
+calls each through the PLT, even from its own file, and inlines none
+where it is called. Measured at 63516d4 (whole processes, alternating
 pairs, median ratio), a scratch program stepping the report's
 heavy_on_light_1e2 scene at the defaults ran 1.174 times as long on a
 shared core as on the static one the benchmarks link (10 pairs), the

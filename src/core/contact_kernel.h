@@ -234,13 +234,16 @@ void solve_friction_pair(ContactPoint& first, ContactPoint& second, std::vector<
                          double bias = 0.0);
 /// Soft step: the offset between the point's anchors on its two bodies now
 /// (m), from their pose changes since prepare; the gap and the slip follow.
-Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state);
+inline Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state)
+{
+  const BodyVelocity& a = state[p.a];
+  const BodyVelocity& b = state[p.b];
+  return b.moved - a.moved + rotate(p.r_b, b.turned_cos, b.turned_sin) - rotate(p.r_a, a.turned_cos, a.turned_sin);
+}
 /// The gap (m, < 0 overlapping) and the tangential slip since prepare (m) at
 /// an anchor offset.
 inline double separation_at(const ContactPoint& p, Vec2 offset) { return p.base_separation + dot(offset, p.normal); }
 inline double slip_at(const ContactPoint& p, Vec2 offset) { return dot(offset - (p.r_b - p.r_a), p.tangent()); }
-/// Soft step: the point's tangential slip since prepare, from the bodies' pose changes (m).
-double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state);
 /// Both normals and the midpoint friction row solved at once assuming the pair
 /// sticks; false, changing nothing, unless that keeps both normal impulses
 /// >= 0 and the friction inside its cone.
@@ -268,18 +271,20 @@ double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>
 /// Soft step: a gap at most this wide touches (m); one closed exactly within
 /// a substep leaves only round-off.
 constexpr double kTouchingGap = 1e-9;
-/// One soft update of the normal impulse. A speculative point (gap > 0) only
-/// removes the approach that would close its gap within the substep; an
-/// overlapping one, with `use_bias`, is pushed out at most at `max_push` (m/s)
-/// through the point's softness; without bias (the relax pass) it only stops
-/// the approach.
-void solve_soft_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias);
+/// One soft update of the normal impulse at the point's gap now (`gap`, its
+/// separation_at the anchor offset, which the caller reads once for the
+/// friction's pull too). A speculative point (gap > 0) only removes the
+/// approach that would close its gap within the substep; an overlapping one,
+/// with `use_bias`, is pushed out at most at `max_push` (m/s) through the
+/// point's softness; without bias (the relax pass) it only stops the approach.
+void solve_soft_normal(ContactPoint& p, double gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
+                       bool use_bias);
 /// A manifold's two points solved together (the 2x2 LCP of the rigid update,
 /// each point's result scaled by its softness), so neither point's impulse
 /// tilts the body against the other; nearly dependent points go one by one.
 /// Reads first.pair_k12 and first.pair_block, set when the frame is prepared.
-void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
-                             double inv_h, double max_push, bool use_bias);
+void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, double first_gap, double second_gap,
+                             std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias);
 /// Takes back a point's whole normal impulse.
 void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// Drives a point toward its Newton target, of either sign (normal impulse

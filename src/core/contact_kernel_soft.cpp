@@ -27,33 +27,18 @@ Softness make_softness(double hertz, double damping_ratio, double h)
   return Softness{omega / a1, a2 * (1.0 / (1.0 + a2))};
 }
 
-Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>& state)
-{
-  const BodyVelocity& a = state[p.a];
-  const BodyVelocity& b = state[p.b];
-  const Vec2 turned_a = rotate(p.r_a, a.turned_cos, a.turned_sin);
-  const Vec2 turned_b = rotate(p.r_b, b.turned_cos, b.turned_sin);
-  return b.moved - a.moved + turned_b - turned_a;
-}
-
 double current_separation(const ContactPoint& p, const std::vector<BodyVelocity>& state)
 {
   return separation_at(p, anchor_offset(p, state));
 }
 
-double current_slip(const ContactPoint& p, const std::vector<BodyVelocity>& state)
-{
-  return slip_at(p, anchor_offset(p, state));
-}
-
 namespace
 {
-/// The soft terms of one point now: its push-out bias (m/s) and mass scale.
-/// A speculative point (gap > 0) may approach by its gap within the substep.
-void soft_terms(const ContactPoint& p, const std::vector<BodyVelocity>& state, double inv_h, double max_push,
-                bool use_bias, double& bias, double& mass_scale)
+/// The soft terms of one point at gap s: its push-out bias (m/s) and mass
+/// scale. A speculative point (gap > 0) may approach by its gap within the substep.
+void soft_terms(const ContactPoint& p, double s, double inv_h, double max_push, bool use_bias, double& bias,
+                double& mass_scale)
 {
-  const double s = current_separation(p, state);
   bias = 0.0;
   mass_scale = 1.0;
   if (s > 0.0)
@@ -73,42 +58,49 @@ void set_soft_impulse(ContactPoint& p, double total, std::vector<BodyVelocity>& 
   p.lambda_n = total;
   apply_impulse(p, applied * p.normal, state);
 }
+
+/// The speed the rigid update aims below zero: bias / mass_scale. The relax
+/// pass's scale is exactly 1, and x / 1 is x: no division there (as the rows).
+double aimed_speed(double bias, double mass_scale, bool use_bias) { return use_bias ? bias / mass_scale : bias; }
 }  // namespace
 
 // A soft update is mass_scale times the rigid update toward the speed
 // -bias / mass_scale: lambda' = ms max(0, lambda - (vn + bias / ms) / k).
-void solve_soft_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias)
+void solve_soft_normal(ContactPoint& p, double gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
+                       bool use_bias)
 {
   double bias = 0.0;
   double mass_scale = 1.0;
-  soft_terms(p, state, inv_h, max_push, use_bias, bias, mass_scale);
+  soft_terms(p, gap, inv_h, max_push, use_bias, bias, mass_scale);
   const double vn = dot(relative_velocity(p, state), p.normal);
-  const double rigid = p.lambda_n - (vn + bias / mass_scale) * p.normal_mass;
+  const double rigid = p.lambda_n - (vn + aimed_speed(bias, mass_scale, use_bias)) * p.normal_mass;
   set_soft_impulse(p, mass_scale * std::max(0.0, rigid), state);
 }
 
-void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state,
-                             double inv_h, double max_push, bool use_bias)
+void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, double first_gap, double second_gap,
+                             std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias)
 {
   const double k11 = first.k_n;
   const double k22 = second.k_n;
   const double k12 = first.pair_k12;  // prepared with the frame (world_soft_step.cpp)
   if (!first.pair_block)
   {
-    solve_soft_normal(first, state, inv_h, max_push, use_bias);
-    solve_soft_normal(second, state, inv_h, max_push, use_bias);
+    solve_soft_normal(first, first_gap, state, inv_h, max_push, use_bias);
+    solve_soft_normal(second, second_gap, state, inv_h, max_push, use_bias);
     return;
   }
   double bias1 = 0.0;
   double bias2 = 0.0;
   double scale1 = 1.0;
   double scale2 = 1.0;
-  soft_terms(first, state, inv_h, max_push, use_bias, bias1, scale1);
-  soft_terms(second, state, inv_h, max_push, use_bias, bias2, scale2);
+  soft_terms(first, first_gap, inv_h, max_push, use_bias, bias1, scale1);
+  soft_terms(second, second_gap, inv_h, max_push, use_bias, bias2, scale2);
   const double x1 = first.lambda_n;
   const double x2 = second.lambda_n;
-  const double q1 = dot(relative_velocity(first, state), first.normal) + bias1 / scale1 - (k11 * x1 + k12 * x2);
-  const double q2 = dot(relative_velocity(second, state), first.normal) + bias2 / scale2 - (k12 * x1 + k22 * x2);
+  const double q1 =
+      dot(relative_velocity(first, state), first.normal) + aimed_speed(bias1, scale1, use_bias) - (k11 * x1 + k12 * x2);
+  const double q2 =
+      dot(relative_velocity(second, state), first.normal) + aimed_speed(bias2, scale2, use_bias) - (k12 * x1 + k22 * x2);
   double y1 = 0.0;
   double y2 = 0.0;
   solve_lcp2(k11, k12, k22, q1, q2, y1, y2);

@@ -144,7 +144,7 @@ void apply(Lane<V>& l, V2<V> ra, V2<V> rb, V2<V> p)
 }
 
 /// The pose change between a point's anchors since prepare (m): the common
-/// part of current_separation and current_slip.
+/// part of a point's gap and slip (separation_at, slip_at).
 template <class V>
 V2<V> anchor_offset(const Lane<V>& l, V2<V> ra, V2<V> rb)
 {

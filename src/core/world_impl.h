@@ -133,8 +133,8 @@ struct WorldImpl : WorldState
   void soft_colours(const SoftPass& pass, std::size_t part, std::size_t parts);
   void warm_start_manifold(std::size_t first);
   void solve_soft_manifold(std::size_t first, const StepContext& ctx, bool use_bias);
-  /// A sticking point's slip from its anchor now (m); 0 for a sliding one.
-  double anchor_drift(const ContactPoint& p) const;
+  /// A sticking point's slip from its anchor now (m), at its anchor offset; 0 for a sliding one.
+  double anchor_drift(const ContactPoint& p, Vec2 offset) const;
   /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
   double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
   /// After the frame: an active sticking point's slip, carried to the next

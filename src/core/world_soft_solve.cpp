@@ -125,27 +125,33 @@ void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool 
   }
   const bool rough = ctx.effects.friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
   const double push = settings_.contact_push_speed;
+  // The anchors' offset gives both the gap and the slip; the passes move no
+  // body, so it is read once per point (as the rows read it).
+  const Vec2 offset = anchor_offset(p, velocity_);
   if (p.count == 2)
   {
     ContactPoint& q = points_[k + 1];
-    solve_soft_normal_block(p, q, velocity_, ctx.inv_h, push, use_bias);
+    const Vec2 second_offset = anchor_offset(q, velocity_);
+    solve_soft_normal_block(p, q, separation_at(p, offset), separation_at(q, second_offset), velocity_, ctx.inv_h,
+                            push, use_bias);
     if (rough)
     {
-      const double pull = use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p) + anchor_drift(q)), push) : 0.0;
+      const double pull =
+          use_bias ? anchor_pull(p, 0.5 * (anchor_drift(p, offset) + anchor_drift(q, second_offset)), push) : 0.0;
       solve_friction_pair(p, q, velocity_, pull);
     }
     return;
   }
-  solve_soft_normal(p, velocity_, ctx.inv_h, push, use_bias);
+  solve_soft_normal(p, separation_at(p, offset), velocity_, ctx.inv_h, push, use_bias);
   if (rough)
   {
-    solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p), push) : 0.0);
+    solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p, offset), push) : 0.0);
   }
 }
 
-double WorldImpl::anchor_drift(const ContactPoint& p) const
+double WorldImpl::anchor_drift(const ContactPoint& p, Vec2 offset) const
 {
-  return p.kinetic ? 0.0 : p.anchor_drift + current_slip(p, velocity_);
+  return p.kinetic ? 0.0 : p.anchor_drift + slip_at(p, offset);
 }
 
 double WorldImpl::anchor_pull(const ContactPoint& p, double drift, double max_push) const

@@ -106,10 +106,11 @@ void solve_by_points(Scene& s, bool warm, bool use_bias)
   }
   for (ContactPoint& p : s.points)
   {
-    detail::solve_soft_normal(p, s.bodies, kInvH, kMaxPush, use_bias);
+    const Vec2 offset = detail::anchor_offset(p, s.bodies);
+    detail::solve_soft_normal(p, detail::separation_at(p, offset), s.bodies, kInvH, kMaxPush, use_bias);
     if (p.mu_s > 0.0 || p.mu_k > 0.0)
     {
-      const double drift = p.kinetic ? 0.0 : p.anchor_drift + detail::current_slip(p, s.bodies);
+      const double drift = p.kinetic ? 0.0 : p.anchor_drift + detail::slip_at(p, offset);
       const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
       detail::solve_friction(p, s.bodies, use_bias ? std::max(-kMaxPush, std::min(kMaxPush, pull)) : 0.0);
     }

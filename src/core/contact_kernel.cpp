@@ -121,29 +121,6 @@ bool block_solvable(double k11, double k12, double k22)
   return k11 * k22 - k12 * k12 > kBlockConditionLimit * k11 * k22;
 }
 
-void solve_lcp2(double k11, double k12, double k22, double q1, double q2, double& y1, double& y2)
-{
-  const double det = k11 * k22 - k12 * k12;
-  y1 = (k12 * q2 - k22 * q1) / det;  // both active
-  y2 = (k12 * q1 - k11 * q2) / det;
-  if (y1 >= 0.0 && y2 >= 0.0)
-  {
-    return;
-  }
-  y1 = std::max(0.0, -q1 / k11);  // only the first active
-  y2 = 0.0;
-  if (k12 * y1 + q2 >= 0.0)
-  {
-    return;
-  }
-  y1 = 0.0;  // only the second active, or neither
-  y2 = std::max(0.0, -q2 / k22);
-  if (!(k12 * y2 + q1 >= 0.0))
-  {
-    y2 = 0.0;
-  }
-}
-
 bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<BodyVelocity>& state, bool& changed)
 {
   // Solved one after the other, the first point's impulse tilts the body and

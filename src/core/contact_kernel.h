@@ -5,6 +5,7 @@
 // or applies a contact impulse.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -261,7 +262,29 @@ inline double cone(const ContactPoint& p) { return p.kinetic ? p.mu_k : p.mu_s; 
 double pair_coupling(const ContactPoint& first, const ContactPoint& second);
 /// The two-point LCP w = K y + q >= 0, y >= 0, y . w = 0 (K symmetric positive
 /// definite) solved exactly by trying its four cases.
-void solve_lcp2(double k11, double k12, double k22, double q1, double q2, double& y1, double& y2);
+inline void solve_lcp2(double k11, double k12, double k22, double q1, double q2, double& y1, double& y2)
+{
+  const double det = k11 * k22 - k12 * k12;
+  y1 = (k12 * q2 - k22 * q1) / det;  // both active
+  y2 = (k12 * q1 - k11 * q2) / det;
+  if (y1 >= 0.0 && y2 >= 0.0)
+  {
+    return;
+  }
+  y1 = std::max(0.0, -q1 / k11);  // only the first active
+  y2 = 0.0;
+  if (k12 * y1 + q2 >= 0.0)
+  {
+    return;
+  }
+  y1 = 0.0;  // only the second active, or neither
+  y2 = std::max(0.0, -q2 / k22);
+  if (!(k12 * y2 + q1 >= 0.0))
+  {
+    y2 = 0.0;
+  }
+}
+
 /// Whether a 2x2 block with these entries is well enough conditioned to solve.
 bool block_solvable(double k11, double k12, double k22);
 

@@ -59,8 +59,9 @@ void set_soft_impulse(ContactPoint& p, double total, std::vector<BodyVelocity>& 
   apply_impulse(p, applied * p.normal, state);
 }
 
-/// The speed the rigid update aims below zero: bias / mass_scale. The relax
-/// pass's scale is exactly 1, and x / 1 is x: no division there (as the rows).
+/// bias / mass_scale (m/s): the rigid update drives the normal speed to
+/// minus this. The relax pass's scale is exactly 1, and x / 1 is x: no
+/// division there (as the rows).
 double aimed_speed(double bias, double mass_scale, bool use_bias) { return use_bias ? bias / mass_scale : bias; }
 }  // namespace
 

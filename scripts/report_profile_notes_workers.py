@@ -140,4 +140,31 @@ peak 41.0 -> 40.9 MiB). The same bits: the golden hashes pass in both the
 shared and the static build. No function outside the four-lane rows holds
 an AVX2 instruction in the optimised benchmarks (checked in their
 disassembly), so the rows' run-time choice still guards them.
+
+A twenty-third, on the same host: small worlds, whose manifolds all go to
+the point verbs (a frame of one or two manifolds has no colours, and a
+colour's few leftovers stay off the rows). Profiled at f892a92 on
+heavy_on_light_1e2 at the defaults (4 substeps), those verbs took about
+half of a 3.4 us frame, some 100 ns a manifold solve. Each pass computed
+a point's anchor offset twice (for its gap, then for its friction's pull),
+through a function the World's file could not inline, and the 2x2 LCP of
+a manifold's normals stayed a call after link-time optimisation. Commits
+6391de5 and 49c8c6e read the offset once a pass and inline both, and the
+relax pass no longer divides by a softness scale of exactly one, as the
+rows already did; the same bits (the golden hashes pass). Whole
+processes, link-time optimised as the report's benchmarks, alternating
+pairs: heavy_on_light_1e2 0.931 (10 pairs) and then 0.975 (10);
+bouncing_disks and incline at 1 substep (one-point manifolds, or a frame
+the solve is a small part of) 0.992 and 0.995 (8); the base-20 pyramid
+in-process 0.985 (8). Tried and not kept: every manifold of a small frame
+on a row of its own (colours from one manifold up, batches from one
+lane): heavy_on_light_1e2 ran 1.6 to 2.2 times as long on the four-lane,
+the two-lane and the scalar path alike (3 runs each, built without
+link-time optimisation), since a batch costs
+its packing and four lanes' work whatever it holds. Where the incline's
+sleeping run loses: this report times 30 frames of a fresh world, and in
+a scratch program a fresh world's first frame took 4.2 us against 1.1 us
+for the frames after it (medians of 3000 worlds): it sizes about fifty
+buffers for the first time. That adds about 0.1 us to each timed frame
+of the tiny scenes.
 """

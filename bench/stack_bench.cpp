@@ -31,12 +31,13 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
-#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "collision2d/contact_solver.h"
 #include "engine.h"
+#include "stack_bench_args.h"
 #include "stack_scenes.h"
 #include "sweep.h"
 #include "timing.h"
@@ -45,22 +46,6 @@ namespace
 {
 using namespace collision2d;
 using namespace collision2d::bench;
-
-constexpr double kDefaultSeconds = 10.0;
-constexpr double kDefaultTimingSeconds = 1.0;  // s of simulation per timed run
-constexpr int kDefaultRepetitions = 5;
-
-struct Arguments
-{
-  std::vector<double> seconds{kDefaultSeconds};  ///< checkpoints, ascending
-  int repetitions = kDefaultRepetitions;
-  double timing_seconds = kDefaultTimingSeconds;
-  std::vector<std::string> scenes;    ///< empty: all stacks
-  std::vector<EngineKind> engines;    ///< empty: every engine built in
-  std::string csv;                    ///< empty: no CSV
-  std::vector<Pipeline> pipelines{Pipeline::Soft, Pipeline::Fx2d};  ///< ours, once per pipeline
-  bool stiff = true;  ///< ours also in the stiff soft step
-};
 
 /// What one engine shows at one checkpoint of the accuracy run.
 struct Checkpoint
@@ -84,114 +69,6 @@ struct EngineResult
   double cpu_over_v3 = NAN;
   std::vector<Checkpoint> checkpoints;
 };
-
-[[noreturn]] void usage(const std::string& problem)
-{
-  std::fprintf(stderr,
-               "%s\nusage: collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T] "
-               "[--scene NAME]... [--engine collision2d|box2d|chipmunk|box2d_v3]... [--csv FILE] "
-               "[--soft-step on|off|both] [--stiff on|off]\n",
-               problem.c_str());
-  std::exit(2);
-}
-
-std::vector<double> parse_seconds(const std::string& text)
-{
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-  {
-    const double s = std::atof(item.c_str());
-    if (!(s > kStackSettleSeconds))
-    {
-      usage("--seconds: every value must exceed the " + std::to_string(kStackSettleSeconds) + " s settling time");
-    }
-    values.push_back(s);
-  }
-  std::sort(values.begin(), values.end());
-  return values;
-}
-
-EngineKind parse_engine(const std::string& name)
-{
-  EngineKind kind = EngineKind::Collision2d;
-  if (!engine_from_name(name, kind))
-  {
-    usage("unknown engine '" + name + "'");
-  }
-  return kind;
-}
-
-Arguments parse_arguments(int argc, char** argv)
-{
-  Arguments args;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string flag = argv[i];
-    if (i + 1 >= argc)
-    {
-      usage("unknown or incomplete argument: " + flag);
-    }
-    const std::string value = argv[++i];
-    if (flag == "--seconds")
-    {
-      args.seconds = parse_seconds(value);
-    }
-    else if (flag == "--reps")
-    {
-      args.repetitions = std::atoi(value.c_str());
-    }
-    else if (flag == "--timing-seconds")
-    {
-      args.timing_seconds = std::atof(value.c_str());
-    }
-    else if (flag == "--scene")
-    {
-      args.scenes.push_back(value);
-    }
-    else if (flag == "--engine")
-    {
-      args.engines.push_back(parse_engine(value));
-    }
-    else if (flag == "--csv")
-    {
-      args.csv = value;
-    }
-    else if (flag == "--soft-step")
-    {
-      if (value == "on")
-      {
-        args.pipelines = {Pipeline::Soft};
-      }
-      else if (value == "off")
-      {
-        args.pipelines = {Pipeline::Fx2d};
-      }
-      else if (value == "both")
-      {
-        args.pipelines = {Pipeline::Soft, Pipeline::Fx2d};
-      }
-      else
-      {
-        usage("--soft-step takes on, off or both");
-      }
-    }
-    else if (flag == "--stiff" && (value == "on" || value == "off"))
-    {
-      args.stiff = value == "on";
-    }
-    else
-    {
-      usage("unknown argument: " + flag);
-    }
-  }
-  if (args.repetitions < 1 || !(args.timing_seconds > 0.0) || args.seconds.empty())
-  {
-    usage("--reps, --timing-seconds and --seconds must be positive");
-  }
-  return args;
-}
 
 EngineConfig config_for(EngineKind kind, const BenchScene& scene, Pipeline pipeline, bool stiff = false)
 {
@@ -271,7 +148,7 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
 
 /// One fresh run of each engine per round, the engines in turn; then each
 /// one's medians and its ratios to Box2D v3's run of the same round.
-void time_in_rounds(const BenchScene& scene, std::vector<EngineResult>& results, const Arguments& args)
+void time_in_rounds(const BenchScene& scene, std::vector<EngineResult>& results, const StackBenchArguments& args)
 {
   for (int round = 0; round < args.repetitions; ++round)
   {
@@ -311,7 +188,7 @@ void time_in_rounds(const BenchScene& scene, std::vector<EngineResult>& results,
   }
 }
 
-std::vector<EngineResult> measure(const BenchScene& scene, const Arguments& args)
+std::vector<EngineResult> measure(const BenchScene& scene, const StackBenchArguments& args)
 {
   // Ours once per pipeline asked for; a peer once.
   std::vector<EngineResult> results;
@@ -385,11 +262,11 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
 
 int main(int argc, char** argv)
 {
-  Arguments args = parse_arguments(argc, argv);
+  StackBenchArguments args = parse_stack_bench_arguments(argc, argv);
   FILE* csv = nullptr;
   if (!args.csv.empty() && (csv = std::fopen(args.csv.c_str(), "w")) == nullptr)
   {
-    usage("cannot write " + args.csv);
+    stack_bench_usage("cannot write " + args.csv);
   }
   if (args.engines.empty())
   {

@@ -102,6 +102,15 @@ struct RowPass
   bool use_bias = false;    ///< false: the relax pass
 };
 
+/// What a point's solve leaves: its accumulated impulses (N s) and whether
+/// its friction ended at its bound.
+struct PointOutcome
+{
+  double normal = 0.0;
+  double tangent = 0.0;
+  bool sliding = false;
+};
+
 /// A colour's batches of one kind: [begin, end) of their vector.
 struct RowRange
 {
@@ -160,19 +169,18 @@ public:
   /// the point verbs (the point's own field is then current).
   double* normal_impulse_of(std::size_t k);
   /// After the passes: the spare body that pack added leaves `velocity`.
-  /// The rows stay packed until unpack_point has read each point back.
+  /// The rows stay packed until point_outcome has read each point's.
   void drop_spare_body(std::vector<BodyVelocity>& velocity) const;
-  /// Point k's impulses and friction state from its row, if it has one: the
-  /// caller visits each point once, so each is read and written in one pass.
-  void unpack_point(std::size_t k, ContactPoint& p) const
+  /// Point k's impulses and friction state: from its row if it has one,
+  /// else `p`'s own (its manifold was solved on the point verbs).
+  PointOutcome point_outcome(std::size_t k, const ContactPoint& p) const
   {
     const RowSlot slot = row_slot(k);
-    if (slot.point != nullptr)
+    if (slot.point == nullptr)
     {
-      p.lambda_n = slot.point->normal[slot.lane];
-      p.lambda_t = slot.point->tangent[slot.lane];
-      p.sliding = slot.sliding[slot.lane] != 0;
+      return {p.lambda_n, p.lambda_t, p.sliding};
     }
+    return {slot.point->normal[slot.lane], slot.point->tangent[slot.lane], slot.sliding[slot.lane] != 0};
   }
 
 private:

@@ -288,15 +288,16 @@ void WorldImpl::publish_contacts(bool soft_frame)
     double range_deepest = 0.0;
     for (std::size_t k = begin; k < end; ++k)
     {
-      ContactPoint& row = points_[k];
-      if (packed)
-      {
-        soft_rows_.unpack_point(k, row);
-      }
+      // The point itself is not written: nothing reads it after the
+      // publish, and a large frame's points have left the cache by now.
+      const ContactPoint& row = points_[k];
+      const PointOutcome outcome =
+          packed ? soft_rows_.point_outcome(k, row) : PointOutcome{row.lambda_n, row.lambda_t, row.sliding};
+      CarriedSlip slip{outcome.sliding, row.anchor_drift};
       if (soft_frame && row.active)
       {
         const Vec2 offset = anchor_offset(row, velocity_);  // read once for both
-        carry_slip(row, offset);
+        slip = carry_slip(row, outcome.sliding, offset);
         range_deepest = std::max(range_deepest, -separation_at(row, offset));
       }
       // Field by field: the buffer is cold, and whole-struct temporaries
@@ -310,10 +311,10 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.contact.point = row.point;
       c.contact.penetration = row.penetration;
       c.contact.feature = row.feature;
-      c.impulse.normal = row.lambda_n;
-      c.impulse.tangent = row.lambda_t;
-      c.sliding = row.sliding;
-      c.anchor_drift = row.anchor_drift;
+      c.impulse.normal = outcome.normal;
+      c.impulse.tangent = outcome.tangent;
+      c.sliding = slip.sliding;
+      c.anchor_drift = slip.anchor_drift;
       if (row.origin_known)  // a soft frame's point, contacts kept (add_manifold)
       {
         publish_origin(row, c.origin);

@@ -137,10 +137,11 @@ struct WorldImpl : WorldState
   double anchor_drift(const ContactPoint& p, Vec2 offset) const;
   /// The tangential speed (m/s) that pulls `drift` back at the contact's rate.
   double anchor_pull(const ContactPoint& p, double drift, double max_push) const;
-  /// After the frame: an active sticking point's slip, carried to the next
-  /// frame, and whether it now slides: only past `slop` from where it stuck
-  /// (publish_contacts does it on its way through the points).
-  void carry_slip(ContactPoint& p, Vec2 offset) const;
+  /// After the frame: an active point's slip carried to the next frame, and
+  /// whether it now slides (`sliding`: it ended at its friction bound): only
+  /// past `slop` from where it stuck. publish_contacts asks on its way
+  /// through the points; the outcome goes to the contact, not the point.
+  CarriedSlip carry_slip(const ContactPoint& p, bool sliding, Vec2 offset) const;
   /// `kick_free`: another substep follows, whose gravity kick a body no
   /// contact touches takes here (integrate_velocities then skips it).
   void integrate_positions(StepContext& ctx, StepReport& report, bool kick_free);

@@ -243,20 +243,19 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
   }
 }
 
-void WorldImpl::carry_slip(ContactPoint& p, Vec2 offset) const
+CarriedSlip WorldImpl::carry_slip(const ContactPoint& p, bool sliding, Vec2 offset) const
 {
   if (p.kinetic)
   {
-    p.anchor_drift = 0.0;
-    return;
+    return {sliding, 0.0};
   }
   // A sticking point that met the static bound slides only once it has
   // slipped `slop` from where it stuck: a box settling on a slope at one
   // or two substeps rocks on its corners for a frame or two, and a bound
   // met then would latch the kinetic cone, which cannot hold the box.
   const double drift = p.anchor_drift + slip_at(p, offset);
-  p.sliding = p.sliding && std::abs(drift) >= settings_.slop;
-  p.anchor_drift = p.sliding ? 0.0 : drift;
+  const bool slides = sliding && std::abs(drift) >= settings_.slop;
+  return {slides, slides ? 0.0 : drift};
 }
 
 void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool kick_free)

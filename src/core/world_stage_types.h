@@ -36,6 +36,14 @@ struct PointPreparation
   Softness fixed;   ///< one cannot
 };
 
+/// Soft step, after the frame: a point's friction state as its contact
+/// carries it to the next frame (WorldImpl::carry_slip).
+struct CarriedSlip
+{
+  bool sliding = false;       ///< friction slips
+  double anchor_drift = 0.0;  ///< m: slip since the point last stuck
+};
+
 /// One soft pass's parameters (world_soft_solve.cpp).
 struct SoftPass;
 

@@ -139,7 +139,10 @@ void solve_by_rows(Scene& s, bool warm, bool use_bias)
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
     ASSERT_NE(rows.normal_impulse_of(k), nullptr) << k;
-    rows.unpack_point(k, s.points[k]);
+    const detail::PointOutcome outcome = rows.point_outcome(k, s.points[k]);
+    s.points[k].lambda_n = outcome.normal;
+    s.points[k].lambda_t = outcome.tangent;
+    s.points[k].sliding = outcome.sliding;
   }
 }
 

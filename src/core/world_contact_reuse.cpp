@@ -59,12 +59,11 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
     return false;
   }
   // How far the pair has moved relative to each other since (in a's frame):
-  // the centres' offset, and any point turning about b's centre.
-  double cos_a0 = 1.0;
-  double sin_a0 = 0.0;
-  turn_of(o.theta_a, cos_a0, sin_a0);
-  const Vec2 offset_then = rotate_inv(o.r_a - o.r_b, cos_a0, sin_a0);
-  const Vec2 offset_now = rotate_inv(b.position() - a.position(), a.cos_theta(), a.sin_theta());
+  // the centres' offset, and any point turning about b's centre. The offset
+  // now, turned back by a's turn, is in the world frame of the origin, as
+  // the offset then is, without a library call for a's angle then.
+  const Vec2 offset_then = o.r_a - o.r_b;
+  const Vec2 offset_now = rotate_inv(b.position() - a.position(), cos_a, sin_a);
   const double extent = std::max(a.type() == BodyType::Static ? 0.0 : a.radius(),
                                  b.type() == BodyType::Static ? 0.0 : b.radius());
   const double moved = length(offset_now - offset_then) + extent * std::abs(sin_b * cos_a - cos_b * sin_a);

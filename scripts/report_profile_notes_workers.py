@@ -167,4 +167,33 @@ a scratch program a fresh world's first frame took 4.2 us against 1.1 us
 for the frames after it (medians of 3000 worlds): it sizes about fifty
 buffers for the first time. That adds about 0.1 us to each timed frame
 of the tiny scenes.
+
+A twenty-fourth, on the same host: three changes that keep the golden
+hashes, each
+measured as whole processes linked as the report's benchmarks, in
+alternating pairs. Commit 51e3563: the publish of a soft frame took each
+point's impulses from its row into the point, carried its slip there and
+copied it into the contact; nothing reads the point after the publish,
+so it is now only read (the base-100 pyramid, 60 frames then 120 timed,
+0.991 of the commit before, 10 pairs: within the host's spread). A
+profile of that publish put a third of its time on the load of each
+point's row, which lies in colour order while the publish goes in point
+order; prefetching the row twelve points ahead gained nothing (1.007, 10
+pairs), so it was not kept. Commit f862c22: a kept manifold's check of
+how far its pair had moved took the library's cosine and sine of body a's
+angle at the origin, every frame; the offset now, turned back by a's turn
+since then (whose cosine and sine the check already had), lies in the
+frame the offset then is in. The length is the same up to rounding, so
+only a decision within an ulp of `contact_reuse_distance` could change;
+the golden hashes are unchanged. Commit 04f760d: GCC zeroed the step's and
+the frame's reports (104 bytes each) with `rep stos`, whose start-up cost
+a profile of the incline put at 2% of its frame; the core now asks for
+vector stores up to 256 bytes (`-mmemset-strategy`, where the compiler
+takes it). Figures: incline at 1 substep, sleeping on, 40000 fresh worlds
+of 30 frames, 0.965 after f862c22 and 0.984 after 04f760d (10 pairs
+each); incline_slide after f862c22 0.947 (8); the base-20 pyramid, 1500
+frames, after 04f760d 0.978 (8). Measured in one process (the frames
+only, medians of five runs of 100000 worlds), the incline's frame went
+from 1214 to 1198 ns across the three: the whole-process ratios include
+building the worlds, and this host's spread between runs is about 3%.
 """

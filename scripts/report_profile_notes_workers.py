@@ -169,9 +169,8 @@ buffers for the first time. That adds about 0.1 us to each timed frame
 of the tiny scenes.
 
 A twenty-fourth, on the same host: three changes that keep the golden
-hashes, each
-measured as whole processes linked as the report's benchmarks, in
-alternating pairs. Commit 51e3563: the publish of a soft frame took each
+hashes, each measured as whole processes linked as the report's
+benchmarks, in alternating pairs. Commit 51e3563: the publish of a soft frame took each
 point's impulses from its row into the point, carried its slip there and
 copied it into the contact; nothing reads the point after the publish,
 so it is now only read (the base-100 pyramid, 60 frames then 120 timed,

@@ -60,8 +60,8 @@ bool WorldImpl::keep_manifold(std::size_t k, std::size_t i, std::size_t j, std::
   }
   // How far the pair has moved relative to each other since (in a's frame):
   // the centres' offset, and any point turning about b's centre. The offset
-  // now, turned back by a's turn, is in the world frame of the origin, as
-  // the offset then is, without a library call for a's angle then.
+  // now, turned back by a's turn since then, lines up with the offset then
+  // as it was in the world: a's angle then needs no library call.
   const Vec2 offset_then = o.r_a - o.r_b;
   const Vec2 offset_now = rotate_inv(b.position() - a.position(), cos_a, sin_a);
   const double extent = std::max(a.type() == BodyType::Static ? 0.0 : a.radius(),

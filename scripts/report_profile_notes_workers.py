@@ -193,6 +193,6 @@ of 30 frames, 0.965 after f862c22 and 0.984 after 04f760d (10 pairs
 each); incline_slide after f862c22 0.947 (8); the base-20 pyramid, 1500
 frames, after 04f760d 0.978 (8). Measured in one process (the frames
 only, medians of five runs of 100000 worlds), the incline's frame went
-from 1214 to 1198 ns across the three: the whole-process ratios include
+from 1214 to 1197 ns across the three: the whole-process ratios include
 building the worlds, and this host's spread between runs is about 3%.
 """

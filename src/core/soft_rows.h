@@ -111,6 +111,10 @@ struct PointOutcome
   bool sliding = false;
 };
 
+/// A point's outcome as the point itself holds it (its manifold was solved
+/// on the point verbs, or the rows are not in use).
+inline PointOutcome own_outcome(const ContactPoint& p) { return {p.lambda_n, p.lambda_t, p.sliding}; }
+
 /// A colour's batches of one kind: [begin, end) of their vector.
 struct RowRange
 {
@@ -178,7 +182,7 @@ public:
     const RowSlot slot = row_slot(k);
     if (slot.point == nullptr)
     {
-      return {p.lambda_n, p.lambda_t, p.sliding};
+      return own_outcome(p);
     }
     return {slot.point->normal[slot.lane], slot.point->tangent[slot.lane], slot.sliding[slot.lane] != 0};
   }

@@ -291,8 +291,7 @@ void WorldImpl::publish_contacts(bool soft_frame)
       // The point itself is not written: nothing reads it after the
       // publish, and a large frame's points have left the cache by now.
       const ContactPoint& row = points_[k];
-      const PointOutcome outcome =
-          packed ? soft_rows_.point_outcome(k, row) : PointOutcome{row.lambda_n, row.lambda_t, row.sliding};
+      const PointOutcome outcome = packed ? soft_rows_.point_outcome(k, row) : own_outcome(row);
       CarriedSlip slip{outcome.sliding, row.anchor_drift};
       if (soft_frame && row.active)
       {

@@ -277,9 +277,9 @@ struct WorldImpl : WorldState
   const WorldContact* find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const;
   /// The frame's points become contacts_ (the next frame's warm-start cache),
   /// in place of the last ones, which nothing reads after detection.
-  /// After a soft frame each point first takes its impulses back from its
-  /// row, an active point's slip is carried (carry_slip) and the deepest
-  /// followed gap kept for the report.
+  /// After a soft frame each contact takes its point's impulses from the
+  /// point's row (the point is only read), an active point's slip is
+  /// carried (carry_slip) and the deepest followed gap kept for the report.
   void publish_contacts(bool soft_frame = false);
   /// contacts_ resized to n contacts, to be overwritten.
   void size_contacts(std::size_t n);

@@ -229,9 +229,8 @@ void measure_accuracy(const BenchScene& bs, const EngineConfig& config, double s
 
 }  // namespace
 
-RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, const RunOptions& options)
+FrameTime time_run(const BenchScene& scene, const EngineConfig& config, const RunOptions& options)
 {
-  RunMetrics m;
   const int frames = frames_for(options.timing_seconds, scene.scene.settings.dt);
   std::vector<double> wall;
   std::vector<double> cpu;
@@ -244,8 +243,15 @@ RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, cons
     cpu.push_back(t.cpu_ms);
     timed_ms += t.wall_ms * frames;
   }
-  m.ms_per_step = median(wall);
-  m.cpu_ms_per_step = median(cpu);
+  return FrameTime{median(wall), median(cpu)};
+}
+
+RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, const RunOptions& options)
+{
+  RunMetrics m;
+  const FrameTime t = time_run(scene, config, options);
+  m.ms_per_step = t.wall_ms;
+  m.cpu_ms_per_step = t.cpu_ms;
   const double seconds = options.seconds > 0.0 ? options.seconds : scene.seconds;
   measure_accuracy(scene, config, seconds, options.settle_seconds, m);
   return m;

@@ -3,6 +3,7 @@
 
 #include "bench_scenes.h"
 #include "engine.h"
+#include "timing.h"
 
 namespace collision2d
 {
@@ -34,9 +35,11 @@ struct RunMetrics
   double error = NAN;            ///< the scene's main error (one of the above)
 };
 
-/// Times fresh runs (`repetitions` of them, or more until they add up to
-/// `min_timed_ms`), then runs once more for the accuracy metrics; every
-/// engine is measured by the same code from its body states.
+/// Median frame time over fresh runs: `repetitions` of them, or more until
+/// they add up to `min_timed_ms`.
+FrameTime time_run(const BenchScene& scene, const EngineConfig& config, const RunOptions& options);
+/// time_run, then one more run for the accuracy metrics; every engine is
+/// measured by the same code from its body states.
 RunMetrics measure_run(const BenchScene& scene, const EngineConfig& config, const RunOptions& options);
 
 }  // namespace bench

@@ -3,6 +3,7 @@
 //   collision2d_sweep_bench PART... [--quick] [--scene NAME]... [--reps N] [--out FILE]
 //     with PART among world, peers, stand (one CSV, one header)
 //   collision2d_sweep_bench solver [--quick] [--scenes N] [--out FILE]
+//   collision2d_sweep_bench paired --scene NAME --key KEY... [--rounds N] [--quick] [--out FILE]
 //
 // CSV goes to FILE (default stdout): the packaged Chipmunk prints a banner
 // on stdout when its first space is made, which must not land in the CSV.
@@ -19,7 +20,10 @@
 //         points in both pipelines, all in this one process;
 // stand:  the stacks for 60 s at a few settings of each pipeline (the drift target);
 // solver: the instantaneous ContactSolver on random islands per mode,
-//         iteration cap and tolerance: Newton-target and complementarity residuals.
+//         iteration cap and tolerance: Newton-target and complementarity residuals;
+// paired: runs of world and peers named by key (run_key) timed again in
+//         rounds, each round timing every run once, so that a ratio of two
+//         runs can be taken within a round (scripts/report_pairs.py).
 // Progress goes to stderr; docs/performance.md explains every column.
 #include <cmath>
 #include <cstdio>
@@ -40,6 +44,7 @@ constexpr std::size_t kSolverScenes = 400;  // random islands per solver point
 constexpr std::size_t kQuickSolverScenes = 100;
 constexpr std::uint64_t kSolverSeed = 20240601;  // the same draws for every point
 constexpr int kQuickRepetitions = 3;
+constexpr int kPairedRounds = 7;
 
 struct Arguments
 {
@@ -49,6 +54,8 @@ struct Arguments
   RunOptions options;
   std::size_t solver_scenes = kSolverScenes;
   std::string out;  ///< empty: stdout
+  std::vector<std::string> keys;  ///< paired: the runs to time
+  int rounds = kPairedRounds;     ///< paired
 };
 
 FILE* g_csv = stdout;
@@ -57,7 +64,8 @@ FILE* g_csv = stdout;
 {
   std::fprintf(stderr,
                "%s\nusage: collision2d_sweep_bench world|peers|stand...|solver [--quick] [--scene NAME]... "
-               "[--reps N] [--scenes N] [--out FILE]\n",
+               "[--reps N] [--scenes N] [--out FILE]\n"
+               "       collision2d_sweep_bench paired --scene NAME --key KEY... [--rounds N] [--quick] [--out FILE]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -91,6 +99,14 @@ Arguments parse_arguments(int argc, char** argv)
     {
       args.out = argv[++i];
     }
+    else if (flag == "--key" && has_value)
+    {
+      args.keys.push_back(argv[++i]);
+    }
+    else if (flag == "--rounds" && has_value)
+    {
+      args.rounds = std::atoi(argv[++i]);
+    }
     else if (flag == "--scenes" && has_value)
     {
       scenes_given = (args.solver_scenes = std::strtoul(argv[++i], nullptr, 10)) > 0;
@@ -112,9 +128,9 @@ Arguments parse_arguments(int argc, char** argv)
   {
     usage("missing part");
   }
-  if (args.options.repetitions < 1 || args.solver_scenes < 1)
+  if (args.options.repetitions < 1 || args.solver_scenes < 1 || args.rounds < 1)
   {
-    usage("--reps and --scenes must be positive");
+    usage("--reps, --scenes and --rounds must be positive");
   }
   return args;
 }
@@ -128,23 +144,49 @@ void print_run_header()
       "incline_accel_error,tunnelled,error,error_name\n");
 }
 
-void print_run(const std::string& part, const BenchScene& scene, const RunSpec& run, double seconds,
-               const RunMetrics& m)
+/// The columns that tell one run of a scene from another, as the CSV has them.
+struct RunLabel
+{
+  std::string engine, variant, pipeline, knob, value, substeps, iterations;
+};
+
+RunLabel run_label(const RunSpec& run)
 {
   const WorldSettings& s = run.config.settings;
   const bool peer_defaults = run.config.kind != EngineKind::Collision2d && run.config.variant == PeerVariant::Defaults;
   const bool ours = run.config.kind == EngineKind::Collision2d;
   // A peer's defaults use its own steps and iterations: leave ours out.
-  const std::string substeps = peer_defaults ? "" : std::to_string(s.substeps);
   // Box2D v3 has no velocity-iteration count to match.
   const bool no_iterations = peer_defaults || run.config.kind == EngineKind::Box2dV3;
-  const std::string iterations = no_iterations ? "" : std::to_string(s.velocity_iterations);
+  return RunLabel{engine_name(run.config.kind),
+                  variant_name(run.config.variant),
+                  ours ? pipeline_name(s) : "",
+                  run.knob,
+                  run.value,
+                  peer_defaults ? "" : std::to_string(s.substeps),
+                  no_iterations ? "" : std::to_string(s.velocity_iterations)};
+}
+
+/// How `paired` names a run: its part and label joined by '|'
+/// (scripts/report_pairs.py builds the same key from a CSV row).
+std::string run_key(const std::string& part, const RunSpec& run)
+{
+  const RunLabel l = run_label(run);
+  return part + "|" + l.engine + "|" + l.variant + "|" + l.pipeline + "|" + l.knob + "|" + l.value + "|" +
+         l.substeps + "|" + l.iterations;
+}
+
+void print_run(const std::string& part, const BenchScene& scene, const RunSpec& run, double seconds,
+               const RunMetrics& m)
+{
+  const WorldSettings& s = run.config.settings;
+  const bool ours = run.config.kind == EngineKind::Collision2d;
+  const RunLabel l = run_label(run);
   std::fprintf(g_csv,
                "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%g,%s,%s,%s,%g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%s\n",
-               part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), engine_name(run.config.kind).c_str(),
-               variant_name(run.config.variant).c_str(), ours ? pipeline_name(s).c_str() : "",
-               default_pipeline_name().c_str(), run.knob.c_str(), run.value.c_str(), substeps.c_str(),
-               iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
+               part.c_str(), scene.name.c_str(), kind_name(scene.kind).c_str(), l.engine.c_str(), l.variant.c_str(),
+               l.pipeline.c_str(), default_pipeline_name().c_str(), l.knob.c_str(), l.value.c_str(),
+               l.substeps.c_str(), l.iterations.c_str(), s.slop, ours ? toggle_name(s.warm_starting).c_str() : "",
                ours ? toggle_name(s.time_of_impact).c_str() : "", ours ? world_mode_name(s).c_str() : "", seconds,
                m.ms_per_step, m.cpu_ms_per_step, m.max_penetration, m.drift, m.sink, m.energy_error, m.bounce_error,
                m.incline_error, m.tunnelled, m.error, error_name(scene.kind).c_str());
@@ -192,6 +234,49 @@ void run_scenes(const Arguments& args)
   }
 }
 
+void run_paired(const Arguments& args)
+{
+  if (args.scenes.size() != 1 || args.keys.size() < 2)
+  {
+    usage("paired takes one --scene and at least two --key");
+  }
+  const BenchScene scene = make_bench_scene(args.scenes.front());
+  std::vector<RunSpec> picked;
+  for (const std::string& key : args.keys)
+  {
+    bool found = false;
+    for (const std::string part : {"world", "peers"})
+    {
+      for (const RunSpec& run : runs_for(part, scene, args.quick))
+      {
+        if (!found && run_key(part, run) == key)
+        {
+          picked.push_back(run);
+          found = true;
+        }
+      }
+    }
+    if (!found)
+    {
+      usage("no run of " + scene.name + " has the key " + key);
+    }
+  }
+  std::fprintf(g_csv, "scene,round,key,ms_per_step,cpu_ms_per_step\n");
+  // Each round starts one run further on, so no run always follows the same one.
+  for (int round = 0; round < args.rounds; ++round)
+  {
+    for (std::size_t k = 0; k < picked.size(); ++k)
+    {
+      const std::size_t i = (static_cast<std::size_t>(round) + k) % picked.size();
+      std::fprintf(stderr, "paired %s round %d %s\n", scene.name.c_str(), round, args.keys[i].c_str());
+      const FrameTime t = time_run(scene, picked[i].config, args.options);
+      std::fprintf(g_csv, "%s,%d,%s,%.6g,%.6g\n", scene.name.c_str(), round, args.keys[i].c_str(), t.wall_ms,
+                   t.cpu_ms);
+      std::fflush(g_csv);
+    }
+  }
+}
+
 void run_solver(const Arguments& args)
 {
   std::fprintf(g_csv,
@@ -223,15 +308,20 @@ int main(int argc, char** argv)
   {
     for (const std::string& part : args.parts)
     {
-      const bool known = part == "solver" || part == "world" || part == "peers" || part == "stand";
-      if (!known || (part == "solver" && args.parts.size() > 1))
+      const bool alone = part == "solver" || part == "paired";
+      const bool known = alone || part == "world" || part == "peers" || part == "stand";
+      if (!known || (alone && args.parts.size() > 1))
       {
-        usage("unknown part '" + part + "' (solver runs alone)");
+        usage("unknown part '" + part + "' (solver and paired run alone)");
       }
     }
     if (args.parts.front() == "solver")
     {
       run_solver(args);
+    }
+    else if (args.parts.front() == "paired")
+    {
+      run_paired(args);
     }
     else
     {

@@ -2,8 +2,8 @@
 """Writes docs/performance.md and the PNG plots from the benchmark CSVs.
 
 Called by scripts/performance_report.sh after the measurements; reads
-runs.csv, solver.csv, scaling.csv and stacks.csv from --perf-dir. Only the standard
-library and gnuplot are used. Every number in the report comes from those
+runs.csv, paired.csv, solver.csv, scaling.csv and stacks.csv from
+--perf-dir. Only the standard library and gnuplot are used. Every number in the report comes from those
 CSVs: nothing here is typed in by hand.
 
 Ours runs in two pipelines (the `pipeline` column: soft = the soft step,
@@ -17,7 +17,7 @@ import tempfile
 
 # The report's parts are the report_*.py modules beside this script: run as a
 # script, its own folder is first on sys.path, so they import from any cwd.
-from report_data import PARETO_SCENES, median_runs, prepare, prepare_stacks, read_csv
+from report_data import PARETO_SCENES, attach_paired, median_runs, prepare, prepare_stacks, read_csv
 from report_analysis import default_pipeline
 from report_plots import plot_pareto, plot_scaling, plot_throughput, plot_workers
 from report_document import render
@@ -36,6 +36,7 @@ def main():
     args = parser.parse_args()
 
     runs = prepare(read_csv(os.path.join(args.perf_dir, "runs.csv")))
+    attach_paired(runs, read_csv(os.path.join(args.perf_dir, "paired.csv")))
     solver = read_csv(os.path.join(args.perf_dir, "solver.csv"))
     scaling = median_runs(read_csv(os.path.join(args.perf_dir, "scaling.csv")))
     stacks = prepare_stacks(read_csv(os.path.join(args.perf_dir, "stacks.csv")))

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the performance report in one command: builds the benchmarks
-# (ROS-free, Release), runs the speed/accuracy sweep with the peers, the
+# (ROS-free, Release), runs the speed/accuracy sweep with the peers (and
+# times the runs its time target compares again, in paired rounds), the
 # solver residual sweep, the stack scenes against every peer and the
 # scaling runs and the throughput runs (pyramid and rain, 1 and 2 workers;
 # one process per size, for the peak memory), then writes
@@ -125,6 +126,22 @@ part_done "throughput rounds"
 log "sweep: our knobs in both pipelines, the peers and the 60 s stacks (progress in $BUILD/sweep.log)"
 on_one_core "$SWEEP" world peers stand "${QUICK[@]}" --out "$OUT/runs.csv" 2> "$BUILD/sweep.log" || { tail "$BUILD/sweep.log" >&2; exit 1; }
 part_done sweep
+
+log "paired rounds: our cheapest runs at each peer run's error and that run, timed again in turns"
+# The sweep times each run once, minutes apart; the time target takes each
+# round's own ratio (scripts/report_pairs.py says which runs and why).
+PAIRED_ROUNDS=7
+if (( ${#QUICK[@]} > 0 )); then PAIRED_ROUNDS=3; fi
+"$SYSTEM_PYTHON" "$ROOT/scripts/report_pairs.py" "$OUT/runs.csv" > "$BUILD/paired_keys.tsv"
+echo "scene,round,key,ms_per_step,cpu_ms_per_step" > "$OUT/paired.csv"
+while IFS=$'\t' read -r -a line; do
+  keys=()
+  for key in "${line[@]:1}"; do keys+=(--key "$key"); done
+  on_one_core "$SWEEP" paired --scene "${line[0]}" "${keys[@]}" --rounds "$PAIRED_ROUNDS" ${QUICK[@]+"${QUICK[@]}"} \
+    --out "$BUILD/paired_scene.csv" 2>> "$BUILD/paired.log" || { tail "$BUILD/paired.log" >&2; exit 1; }
+  tail -n +2 "$BUILD/paired_scene.csv" >> "$OUT/paired.csv"
+done < "$BUILD/paired_keys.tsv"
+part_done "paired rounds"
 throughput_rounds 2
 part_done "throughput rounds"
 

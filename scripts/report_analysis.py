@@ -56,8 +56,30 @@ def cheapest_at(our_runs, error, key="ms"):
     return min(ok, key=lambda r: r[key]) if ok else None
 
 
+# Our runs at a peer run's error that are timed again beside it in paired
+# rounds: the cheapest few by the sweep's own timing.
+PAIRED_CANDIDATES = 3
+
+
+def candidates_at(our_runs, error):
+    ok = [r for r in our_runs if finite(r["err"]) and r["err"] <= error]
+    return sorted(ok, key=lambda r: r["ms"])[:PAIRED_CANDIDATES]
+
+
+def round_ratio(mine, peer, column):
+    """Median over the paired rounds of each round's own time ratio mine /
+    peer (column 0 wall, 1 CPU), with the rounds' count; None unpaired."""
+    both = sorted(set(mine.get("paired_rounds", {})) & set(peer.get("paired_rounds", {})))
+    if not both:
+        return None
+    a, b = mine["paired_rounds"], peer["paired_rounds"]
+    return statistics.median(a[k][column] / b[k][column] for k in both), len(both)
+
+
 def time_target_rows(runs, scene):
-    """Per peer run: our cheapest run (either pipeline) at equal or better error, and the ratio."""
+    """Per peer run: our cheapest run (either pipeline) at equal or better
+    error, and the ratio: from paired rounds when the run has them (the
+    candidate with the lowest median ratio), else from the sweep's times."""
     rows = []
     mine = ours(runs, scene)
     for p in [r for r in peers(runs, scene) if r["engine"] in PEERS]:
@@ -65,10 +87,17 @@ def time_target_rows(runs, scene):
         best_cpu = cheapest_at(mine, p["err"], "cpu")
         ratio = best["ms"] / p["ms"] if best else float("inf")
         ratio_cpu = best_cpu["cpu"] / p["cpu"] if best_cpu else float("inf")
+        rounds = 0
+        paired = [(c, round_ratio(c, p, 0), round_ratio(c, p, 1)) for c in candidates_at(mine, p["err"])]
+        paired = [t for t in paired if t[1] and t[2]]
+        if paired:
+            best, (ratio, rounds), _ = min(paired, key=lambda t: t[1][0])
+            ratio_cpu = min(t[2][0] for t in paired)
         rows.append({"peer": label(p), "peer_ms": p["ms"], "peer_err": p["err"],
                      "ours": setting(best) if best else "not reached",
                      "ours_ms": best["ms"] if best else float("nan"),
-                     "ours_err": best["err"] if best else float("nan"), "ratio": ratio, "ratio_cpu": ratio_cpu})
+                     "ours_err": best["err"] if best else float("nan"), "ratio": ratio, "ratio_cpu": ratio_cpu,
+                     "rounds": rounds})
     return rows
 
 

@@ -110,6 +110,27 @@ def is_stiff(run):
     return run.get("variant") == "stiff"
 
 
+# The columns that tell one run of a scene from another (run_key in bench/sweep_bench.cpp).
+KEY_COLUMNS = ("part", "engine", "variant", "pipeline", "knob", "value", "substeps", "iterations")
+
+
+def run_key(run):
+    """How the sweep bench's `paired` part names a run."""
+    return "|".join(run.get(c) or "" for c in KEY_COLUMNS)
+
+
+def attach_paired(runs, paired):
+    """Each run timed again in paired rounds (paired.csv) gets r["paired_rounds"]:
+    {round: (wall ms, CPU ms)}."""
+    by_key = {}
+    for row in paired:
+        by_key.setdefault((row["scene"], row["key"]), {})[int(row["round"])] = (number(row["ms_per_step"]),
+                                                                                 number(row["cpu_ms_per_step"]))
+    for r in runs:
+        r["paired_rounds"] = by_key.get((r["scene"], run_key(r)), {})
+    return runs
+
+
 def prepare(runs):
     for r in runs:
         r["ms"] = number(r["ms_per_step"])

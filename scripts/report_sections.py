@@ -138,9 +138,9 @@ def time_target_section(runs):
             continue
         out += f"\n**{scene}**\n\n"
         out += table(["peer run", "peer ms", "peer error", "our cheapest run at <= that error", "our ms",
-                      "our error", "ours / peer (wall)", "ours / peer (CPU)"],
+                      "our error", "ours / peer (wall)", "ours / peer (CPU)", "paired rounds"],
                      [[t["peer"], t["peer_ms"], t["peer_err"], t["ours"], t["ours_ms"], t["ours_err"], t["ratio"],
-                       t["ratio_cpu"]] for t in trs])
+                       t["ratio_cpu"], t["rounds"] or "none"] for t in trs])
     return out
 
 

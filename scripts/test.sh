@@ -16,7 +16,8 @@ RESULTS_DIR="$COLLISION2D_WS/build/test_results"
 # Results of an earlier run must not be counted again.
 rm -rf "$RESULTS_DIR"
 
-# Checks of the ROS-free core outside catkin's test runner: every unit test
+# Checks outside catkin's test runner: the performance report's paired-round
+# arithmetic (scripts/test_*.py), every unit test of the ROS-free core
 # under AddressSanitizer and UndefinedBehaviorSanitizer, the multi-worker
 # tests under ThreadSanitizer, and a bounded run of
 # each libFuzzer target (core parsers and solve, and the ROS message
@@ -30,6 +31,8 @@ run_check() {
   "$@" || extra_failures+=("$name")
   took "$name" "$started"
 }
+run_check "the performance report's scripts (unit tests)" \
+  "$SYSTEM_PYTHON" -m unittest discover -s "$COLLISION2D_ROOT/scripts" -p 'test_*.py'
 run_check "sanitizers (ASan + UBSan unit tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh"
 run_check "thread sanitizer (the multi-worker tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh" thread
 run_check "fuzzing the core (${FUZZ_SECONDS} s per target)" "$COLLISION2D_ROOT/scripts/fuzz.sh" "$FUZZ_SECONDS"

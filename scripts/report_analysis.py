@@ -68,12 +68,14 @@ def candidates_at(our_runs, error):
 
 def round_ratio(mine, peer, column):
     """Median over the paired rounds of each round's own time ratio mine /
-    peer (column 0 wall, 1 CPU), with the rounds' count; None unpaired."""
+    peer (column 0 wall, 1 CPU), the rounds' count and the lowest and highest
+    of those ratios; None unpaired."""
     both = sorted(set(mine.get("paired_rounds", {})) & set(peer.get("paired_rounds", {})))
     if not both:
         return None
     a, b = mine["paired_rounds"], peer["paired_rounds"]
-    return statistics.median(a[k][column] / b[k][column] for k in both), len(both)
+    ratios = [a[k][column] / b[k][column] for k in both]
+    return statistics.median(ratios), len(both), min(ratios), max(ratios)
 
 
 def time_target_rows(runs, scene):
@@ -87,17 +89,18 @@ def time_target_rows(runs, scene):
         best_cpu = cheapest_at(mine, p["err"], "cpu")
         ratio = best["ms"] / p["ms"] if best else float("inf")
         ratio_cpu = best_cpu["cpu"] / p["cpu"] if best_cpu else float("inf")
-        rounds = 0
+        rounds, spread = 0, None
         paired = [(c, round_ratio(c, p, 0), round_ratio(c, p, 1)) for c in candidates_at(mine, p["err"])]
         paired = [t for t in paired if t[1] and t[2]]
         if paired:
-            best, (ratio, rounds), _ = min(paired, key=lambda t: t[1][0])
+            best, (ratio, rounds, low, high), _ = min(paired, key=lambda t: t[1][0])
             ratio_cpu = min(t[2][0] for t in paired)
+            spread = (low, high)
         rows.append({"peer": label(p), "peer_ms": p["ms"], "peer_err": p["err"],
                      "ours": setting(best) if best else "not reached",
                      "ours_ms": best["ms"] if best else float("nan"),
                      "ours_err": best["err"] if best else float("nan"), "ratio": ratio, "ratio_cpu": ratio_cpu,
-                     "rounds": rounds})
+                     "rounds": rounds, "spread": spread})
     return rows
 
 

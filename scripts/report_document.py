@@ -161,8 +161,9 @@ paired`, runs chosen by `scripts/report_pairs.py`): each peer run, and for
 each our {PAIRED_CANDIDATES} cheapest runs at its error by the sweep's times;
 every round times each of them once, each round starting one run further on.
 A ratio is the median over the rounds of each round's own ratio, and the row
-names the candidate whose median is lowest; the times and errors beside it
-are the sweep's. The wall and CPU medians are taken separately. A peer run without
+names the candidate whose median is lowest, with the lowest and highest of
+its rounds' wall ratios; the times and errors beside it are the sweep's. The
+wall and CPU medians are taken separately. A peer run without
 paired rounds (a report made before them) takes the ratio of the sweep's times.
 {time_target_section(runs)}
 ### Fx2D: where the column's drift comes from

@@ -130,6 +130,13 @@ def peers_section(runs, default):
     return out
 
 
+def paired_rounds(row):
+    """A time-target row's rounds and the range of their wall ratios."""
+    if not row["rounds"]:
+        return "none"
+    return f"{row['rounds']} ({fmt(row['spread'][0])} - {fmt(row['spread'][1])})"
+
+
 def time_target_section(runs):
     out = ""
     for scene in time_target_scenes(runs):
@@ -138,9 +145,9 @@ def time_target_section(runs):
             continue
         out += f"\n**{scene}**\n\n"
         out += table(["peer run", "peer ms", "peer error", "our cheapest run at <= that error", "our ms",
-                      "our error", "ours / peer (wall)", "ours / peer (CPU)", "paired rounds"],
+                      "our error", "ours / peer (wall)", "ours / peer (CPU)", "paired rounds (wall ratio range)"],
                      [[t["peer"], t["peer_ms"], t["peer_err"], t["ours"], t["ours_ms"], t["ours_err"], t["ratio"],
-                       t["ratio_cpu"], t["rounds"] or "none"] for t in trs])
+                       t["ratio_cpu"], paired_rounds(t)] for t in trs])
     return out
 
 

@@ -82,7 +82,8 @@ def time_target_row(runs, scene):
     if reached:
         worst = max(reached, key=lambda t: t["ratio"])
         worst_cpu = max(t["ratio_cpu"] for t in reached)
-        rounds = f", median of {worst['rounds']} paired rounds" if worst["rounds"] else ""
+        rounds = (f", median of {worst['rounds']} paired rounds, {fmt(worst['spread'][0])} - "
+                  f"{fmt(worst['spread'][1])}" if worst["rounds"] else "")
         parts.append(f"worst {fmt(worst['ratio'])}x (CPU {fmt(worst_cpu)}x{rounds}): ours {worst['ours']} against "
                      f"{worst['peer']}")
     if unreached:

@@ -60,6 +60,9 @@ class PairedRoundsTest(unittest.TestCase):
         self.assertEqual(row["rounds"], len(peer))
         self.assertAlmostEqual(row["ratio"], per_round["slow"])
         self.assertAlmostEqual(row["ratio_cpu"], per_round["slow"])
+        low, high = row["spread"]
+        self.assertAlmostEqual(low, min(t / p for t, p in zip(slow, peer)))
+        self.assertAlmostEqual(high, max(t / p for t, p in zip(slow, peer)))
         self.assertIn("2x2", row["ours"])
         # A ratio of the medians would have picked `fast`, at a third.
         self.assertLess(statistics.median(fast) / statistics.median(peer), per_round["slow"])

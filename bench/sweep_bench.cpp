@@ -25,11 +25,13 @@
 //         rounds, each round timing every run once, so that a ratio of two
 //         runs can be taken within a round (scripts/report_pairs.py).
 // Progress goes to stderr; docs/performance.md explains every column.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "metrics.h"
@@ -241,25 +243,23 @@ void run_paired(const Arguments& args)
     usage("paired takes one --scene and at least two --key");
   }
   const BenchScene scene = make_bench_scene(args.scenes.front());
+  std::vector<std::pair<std::string, RunSpec>> runs;  // every run of the scene, by key
+  for (const std::string part : {"world", "peers"})
+  {
+    for (const RunSpec& run : runs_for(part, scene, args.quick))
+    {
+      runs.emplace_back(run_key(part, run), run);
+    }
+  }
   std::vector<RunSpec> picked;
   for (const std::string& key : args.keys)
   {
-    bool found = false;
-    for (const std::string part : {"world", "peers"})
-    {
-      for (const RunSpec& run : runs_for(part, scene, args.quick))
-      {
-        if (!found && run_key(part, run) == key)
-        {
-          picked.push_back(run);
-          found = true;
-        }
-      }
-    }
-    if (!found)
+    const auto named = std::find_if(runs.begin(), runs.end(), [&](const auto& r) { return r.first == key; });
+    if (named == runs.end())
     {
       usage("no run of " + scene.name + " has the key " + key);
     }
+    picked.push_back(named->second);
   }
   std::fprintf(g_csv, "scene,round,key,ms_per_step,cpu_ms_per_step\n");
   // Each round starts one run further on, so no run always follows the same one.

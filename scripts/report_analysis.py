@@ -51,8 +51,13 @@ def pareto(points):
     return front
 
 
+def at_error(our_runs, error):
+    """Our runs whose main error is equal or better than `error`."""
+    return [r for r in our_runs if finite(r["err"]) and r["err"] <= error]
+
+
 def cheapest_at(our_runs, error, key="ms"):
-    ok = [r for r in our_runs if finite(r["err"]) and r["err"] <= error]
+    ok = at_error(our_runs, error)
     return min(ok, key=lambda r: r[key]) if ok else None
 
 
@@ -62,8 +67,7 @@ PAIRED_CANDIDATES = 3
 
 
 def candidates_at(our_runs, error):
-    ok = [r for r in our_runs if finite(r["err"]) and r["err"] <= error]
-    return sorted(ok, key=lambda r: r["ms"])[:PAIRED_CANDIDATES]
+    return sorted(at_error(our_runs, error), key=lambda r: r["ms"])[:PAIRED_CANDIDATES]
 
 
 def round_ratio(mine, peer, column):

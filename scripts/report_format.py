@@ -29,6 +29,11 @@ def over(ratio):
     return fmt(ratio, digits)
 
 
+def span(low_high):
+    """A range of values, lowest first."""
+    return f"{fmt(low_high[0])} - {fmt(low_high[1])}"
+
+
 def mm(x):
     """A length in metres, written in millimetres."""
     return fmt(x * 1e3) + " mm" if finite(x) else fmt(x)

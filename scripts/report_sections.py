@@ -8,7 +8,7 @@ import subprocess
 
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
                          STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number)
-from report_format import fmt, label, setting, table
+from report_format import fmt, label, setting, span, table
 from report_analysis import (baseline, gas_rows, other, ours, ratio, scaling_slope, scene_names, time_target_rows,
                              time_target_scenes)
 from report_targets import throughput_target_rows
@@ -134,7 +134,7 @@ def paired_rounds(row):
     """A time-target row's rounds and the range of their wall ratios."""
     if not row["rounds"]:
         return "none"
-    return f"{row['rounds']} ({fmt(row['spread'][0])} - {fmt(row['spread'][1])})"
+    return f"{row['rounds']} ({span(row['spread'])})"
 
 
 def time_target_section(runs):

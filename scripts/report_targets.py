@@ -9,7 +9,7 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          STACK_DRIFT_TARGET_M, STACK_PENETRATION_TARGET_M, STACK_SCENES, STACK_TARGET_SECONDS,
                          STACK_TIME_TARGET, STIFF_SETTING, THROUGHPUT_SCENES, TIME_TARGET, WORKER_SPEEDUP_MIN_BODIES,
                          WORKER_SPEEDUP_TARGET, number)
-from report_format import finite, fmt, mm, over, setting, table
+from report_format import finite, fmt, mm, over, setting, span, table
 from report_analysis import (baseline, cheapest_at, other, ours, scaling_slope, stack_rows, throughput_rows,
                              time_target_rows, time_target_scenes, worker_speedup_rounds)
 
@@ -82,8 +82,7 @@ def time_target_row(runs, scene):
     if reached:
         worst = max(reached, key=lambda t: t["ratio"])
         worst_cpu = max(t["ratio_cpu"] for t in reached)
-        rounds = (f", median of {worst['rounds']} paired rounds, {fmt(worst['spread'][0])} - "
-                  f"{fmt(worst['spread'][1])}" if worst["rounds"] else "")
+        rounds = f", median of {worst['rounds']} paired rounds, {span(worst['spread'])}" if worst["rounds"] else ""
         parts.append(f"worst {fmt(worst['ratio'])}x (CPU {fmt(worst_cpu)}x{rounds}): ours {worst['ours']} against "
                      f"{worst['peer']}")
     if unreached:

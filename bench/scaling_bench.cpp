@@ -12,7 +12,8 @@
 //
 // Prints one CSV row: engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,
 // vmhwm_start_kib (the peak before the scene was built). --workers sets ours
-// (WorldSettings::workers); the peers run as their adapters do, on one thread.
+// (WorldSettings::workers) and Box2D v3's workerCount; the other peers run on
+// one thread.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -116,9 +117,9 @@ Arguments parse_arguments(int argc, char** argv)
   {
     usage("--bodies, --reps and --workers must be positive");
   }
-  if (args.workers > 1 && args.engine != EngineKind::Collision2d)
+  if (args.workers > 1 && args.engine != EngineKind::Collision2d && args.engine != EngineKind::Box2dV3)
   {
-    usage("--workers applies to collision2d only");
+    usage("--workers applies to collision2d and box2d_v3 only");
   }
   if (args.scene != "gas" && args.scene != "pyramid" && args.scene != "rain" && args.scene != "resting" &&
       args.scene != "stirred")

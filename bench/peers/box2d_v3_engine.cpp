@@ -5,6 +5,7 @@
 
 #include <box2d/box2d.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -17,7 +18,6 @@ namespace bench
 namespace
 {
 constexpr int kDefaultSubsteps = 4;  // Box2D v3's recommended subStepCount
-constexpr int kSingleThread = 1;     // workerCount: the step runs on the caller's thread
 constexpr float kShapeDensity = 1.0f;  // kg/m^2; replaced by our exact mass below
 
 b2Vec2 to_b2(Vec2 v)
@@ -60,7 +60,9 @@ public:
     b2WorldDef def = b2DefaultWorldDef();
     def.gravity = to_b2(config.settings.gravity);
     def.enableSleep = defaults;
-    def.workerCount = kSingleThread;
+    // One worker steps on the caller's thread; more start Box2D v3's own
+    // scheduler and threads (no task callbacks given).
+    def.workerCount = std::max(1, config.settings.workers);
     if (config.variant == PeerVariant::Matched)
     {
       def.restitutionThreshold = static_cast<float>(config.settings.restitution_threshold);

@@ -146,13 +146,13 @@ def throughput_rows(scaling, scene, engine, workers="1"):
     return sorted(rows, key=lambda r: number(r["bodies"]))
 
 
-def worker_speedup_rounds(scaling, scene):
+def worker_speedup_rounds(scaling, scene, engine="collision2d"):
     """(bodies, [time with 1 worker / time with 2, one per round]) for each size run both ways,
     ascending: each round's own ratio (its 1-worker run and the 2-worker run right after it), so
     a machine that slows down between rounds does not skew it. A size whose rounds do not pair
     up (one failed) gets the ratio of its two medians alone."""
-    one = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "1")}
-    two = {r["bodies"]: r for r in throughput_rows(scaling, scene, "collision2d", "2")}
+    one = {r["bodies"]: r for r in throughput_rows(scaling, scene, engine, "1")}
+    two = {r["bodies"]: r for r in throughput_rows(scaling, scene, engine, "2")}
     rounds = []
     for b in one.keys() & two.keys():
         # median_runs keeps each size's times in round order; a round that failed leaves them unpaired.
@@ -165,9 +165,9 @@ def worker_speedup_rounds(scaling, scene):
     return sorted(rounds, key=lambda x: x[0])
 
 
-def worker_speedups(scaling, scene):
+def worker_speedups(scaling, scene, engine="collision2d"):
     """(bodies, median over the rounds of the speed-up of 2 workers over 1), ascending."""
-    return [(b, statistics.median(ratios)) for b, ratios in worker_speedup_rounds(scaling, scene)]
+    return [(b, statistics.median(ratios)) for b, ratios in worker_speedup_rounds(scaling, scene, engine)]
 
 
 def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None, stiff=False):

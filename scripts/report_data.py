@@ -95,6 +95,15 @@ def median_runs(rows):
     return picked
 
 
+def v3_threads(scaling):
+    """How the report ran Box2D v3 in the throughput part, in words."""
+    if any(r["engine"] == "box2d_v3" and r.get("workers", "1") == "2" for r in scaling):
+        return ("when it is in the run, on one\n"
+                "thread and then once on two (`workerCount` 2, its own scheduler): what a\n"
+                "second core gives the peer built for threads on this machine")
+    return "on one\nthread when it is in the run"
+
+
 def throughput_rounds(scaling):
     """How many rounds ours ran at each throughput size (the script alternates 1 and 2 workers)."""
     return max((r["rounds"] for r in scaling if r["engine"] == "collision2d" and r.get("workers", "1") == "2"),

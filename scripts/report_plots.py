@@ -122,16 +122,20 @@ def plot_throughput(scaling, png, workdir):
 
 def plot_workers(scaling, png, workdir):
     lines = []
-    for scene in THROUGHPUT_SCENES:
-        pts = worker_speedups(scaling, scene)
-        if not pts:
-            continue
-        lines.append(points_line(workdir, f"speedup_{scene}", pts, scene))
+    # A scene keeps its colour (gnuplot's line types 1 and 3, as before the
+    # peer's lines); Box2D v3's line is dotted.
+    for colour, scene in zip((1, 3), THROUGHPUT_SCENES):
+        for engine, name, label, style in [("collision2d", f"speedup_{scene}", scene, f"lc {colour}"),
+                                           ("box2d_v3", f"speedup_{scene}_box2d_v3", f"{scene}: Box2D v3",
+                                            f"lc {colour} dt 3")]:
+            pts = worker_speedups(scaling, scene, engine)
+            if pts:
+                lines.append(points_line(workdir, name, pts, label, style))
     if not lines:
         return False
     gnuplot(f"""set terminal pngcairo size 800,480 noenhanced
 set output '{png}'
-set title 'Ours: speed-up of 2 workers over 1 (wall time per frame)'
+set title 'Speed-up of 2 workers over 1 (wall time per frame)'
 set logscale x
 set xlabel 'dynamic bodies'
 set ylabel 'time with 1 worker / time with 2'

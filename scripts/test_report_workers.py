@@ -1,0 +1,43 @@
+"""Unit tests of the throughput part's speed-up of 2 workers over 1
+(report_analysis.worker_speedup_rounds, report_targets.throughput_target_rows):
+run by scripts/test.sh with the other test_*.py files."""
+import unittest
+
+from report_analysis import worker_speedup_rounds
+from report_data import median_runs
+from report_targets import throughput_target_rows
+
+
+def row(engine, workers, bodies, ms):
+    return {"engine": engine, "scene": "pyramid", "bodies": str(bodies), "workers": str(workers), "frames": "10",
+            "ms_per_step": str(ms), "cpu_ms_per_step": str(ms), "vmhwm_kib": "1000", "vmhwm_start_kib": "100"}
+
+
+class WorkerSpeedupTest(unittest.TestCase):
+    def setUp(self):
+        # Ours in three rounds, each 1 worker then 2; Box2D v3 in one.
+        ours = [(40.0, 20.0), (60.0, 40.0), (44.0, 22.0)]
+        rows = []
+        for one, two in ours:
+            rows += [row("collision2d", 1, 9870, one), row("collision2d", 2, 9870, two)]
+        rows += [row("box2d_v3", 1, 9870, 26.0), row("box2d_v3", 2, 9870, 13.0)]
+        self.scaling = median_runs(rows)
+
+    def test_each_engine_pairs_its_own_rounds(self):
+        self.assertEqual(worker_speedup_rounds(self.scaling, "pyramid"), [(9870, [2.0, 1.5, 2.0])])
+        self.assertEqual(worker_speedup_rounds(self.scaling, "pyramid", "box2d_v3"), [(9870, [2.0])])
+
+    def test_the_target_row_judges_ours_and_shows_the_peer(self):
+        (target,) = [r for r in throughput_target_rows(self.scaling, [], "soft") if r[0].startswith("2 workers")]
+        self.assertIn("pyramid 9870: 2x (1.5 - 2, 3 rounds)", target[1])
+        self.assertIn("(Box2D v3, one round: pyramid 9870: 2x)", target[1])
+        self.assertEqual(target[2], "met")
+
+    def test_without_the_peer_at_two_workers_the_row_names_ours_only(self):
+        scaling = [r for r in self.scaling if not (r["engine"] == "box2d_v3" and r["workers"] == "2")]
+        (target,) = [r for r in throughput_target_rows(scaling, [], "soft") if r[0].startswith("2 workers")]
+        self.assertNotIn("Box2D v3", target[1])
+
+
+if __name__ == "__main__":
+    unittest.main()

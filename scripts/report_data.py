@@ -95,9 +95,14 @@ def median_runs(rows):
     return picked
 
 
+def v3_on_two_workers(scaling):
+    """Whether the run timed Box2D v3 on 2 workers (reports before it did not)."""
+    return any(r["engine"] == "box2d_v3" and r.get("workers", "1") == "2" for r in scaling)
+
+
 def v3_threads(scaling):
     """How the report ran Box2D v3 in the throughput part, in words."""
-    if any(r["engine"] == "box2d_v3" and r.get("workers", "1") == "2" for r in scaling):
+    if v3_on_two_workers(scaling):
         return ("when it is in the run, on one\n"
                 "thread and then once on two (`workerCount` 2, its own scheduler): what a\n"
                 "second core gives the peer built for threads on this machine")

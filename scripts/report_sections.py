@@ -7,7 +7,7 @@ import platform
 import subprocess
 
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
-                         STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number)
+                         STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number, v3_on_two_workers)
 from report_format import fmt, label, setting, span, table
 from report_analysis import (baseline, gas_rows, other, ours, ratio, scaling_slope, scene_names, time_target_rows,
                              time_target_scenes)
@@ -18,12 +18,12 @@ def has_v3(runs, stacks, scaling):
     return any(r["engine"] == "box2d_v3" for r in list(runs) + list(stacks) + list(scaling))
 
 
-def pinned_line(args):
+def pinned_line(args, scaling):
     """Where the single-threaded runs ran, when the script pinned them."""
     if not args.pinned_cpu:
         return ""
     return (f"- Every single-threaded run (ours with 1 worker, every peer) ran on core {args.pinned_cpu} "
-            f"(`taskset`); ours with 2 workers on both cores.\n")
+            f"(`taskset`); ours{' and Box2D v3' if v3_on_two_workers(scaling) else ''} with 2 workers on both cores.\n")
 
 
 def cpu_fields():
@@ -90,7 +90,7 @@ def machine_section(args, runs, stacks, scaling, default):
           "there are no ratios to it")
     return (f"- Machine: {model}, {os.cpu_count()} logical cores, {platform.system()} {platform.release()}; "
             f"load average at report time {load} (the cores were shared with other work, see *Timing*).\n"
-            f"{pinned_line(args)}"
+            f"{pinned_line(args, scaling)}"
             f"- Measured {today} at commit `{commit}` (plus any uncommitted changes in the tree), {grid} grids, "
             f"all measurements in one run of `scripts/performance_report.sh` taking {args.elapsed} s.\n"
             f"- Peers: Box2D 2.4.1 and Chipmunk 7 in every part; {v3}.\n"

@@ -13,8 +13,9 @@ namespace bench
 {
 /// Every variant runs on WorldSettings::workers threads (workerCount; above
 /// 1, Box2D v3's own scheduler, as no task system is given; every bench
-/// leaves it at 1 except the scaling bench's --workers) with Box2D v3's defaults (contact hertz, damping ratio, push-out speed, slop,
-/// continuous collision). Defaults: b2World_Step(dt, 4), sleeping on (its
+/// leaves it at 1 except the scaling bench's --workers) with Box2D v3's
+/// defaults (contact hertz, damping ratio, push-out speed, slop, continuous
+/// collision). Defaults: b2World_Step(dt, 4), sleeping on (its
 /// recommendation). Matched and Substepped: b2World_Step(dt, substeps),
 /// sleeping off; Matched also takes our restitution threshold. Box2D v3 has
 /// no velocity-iteration count (one solve and one relax pass per substep)

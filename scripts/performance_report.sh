@@ -84,6 +84,12 @@ if command -v taskset > /dev/null && (( $(nproc) > 1 )); then
 fi
 # Runs a command on that core (where it lands when none was chosen).
 on_one_core() { ${ONE_CORE[@]+"${ONE_CORE[@]}"} "$@"; }
+# A run on $1 workers: one worker on the pinned core, more on every core.
+on_workers() {
+  local workers=$1
+  shift
+  if (( workers == 1 )); then on_one_core "$@"; else "$@"; fi
+}
 SWEEP="$BUILD/bench/collision2d_sweep_bench"
 SCALING="$BUILD/bench/collision2d_scaling_bench"
 STACK="$BUILD/bench/collision2d_stack_bench"
@@ -108,9 +114,7 @@ throughput_rounds() {  # $1: how many rounds to run now
     for scene in pyramid rain; do
       for n in "${THROUGHPUT_SIZES[@]}"; do
         for workers in 1 2; do
-          local runner=command  # 2 workers take both cores
-          (( workers == 1 )) && runner=on_one_core
-          "$runner" "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
+          on_workers "$workers" "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
             grep "^collision2d," >> "$THROUGHPUT_ROWS" || log "throughput: ours at $scene $n not measured"
         done
       done
@@ -176,9 +180,8 @@ if [[ -n $BOX2D_V3_DIR ]]; then
   for scene in pyramid rain; do
     for n in "${THROUGHPUT_SIZES[@]}"; do
       for workers in 1 2; do
-        runner="command"
-        (( workers == 1 )) && runner=on_one_core
-        "$runner" "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 --workers "$workers" 2>> "$BUILD/scaling.log" |
+        on_workers "$workers" "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 --workers "$workers" \
+          2>> "$BUILD/scaling.log" |
           grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n, $workers workers, not measured"
       done
     done

@@ -209,7 +209,7 @@ def throughput_target_rows(scaling, stacks, default):
         worst = min(speedups, key=lambda x: x[2])
         rows.append([f"2 workers >= {WORKER_SPEEDUP_TARGET}x faster than 1 at >= {WORKER_SPEEDUP_MIN_BODIES} bodies "
                      "(median of the rounds, their range in parentheses)",
-                     ", ".join(f"{sc} {b}: {fmt(x)}x ({fmt(lo)} - {fmt(hi)}, {n} rounds)"
+                     ", ".join(f"{sc} {b}: {fmt(x)}x ({span((lo, hi))}, {n} rounds)"
                                for sc, b, x, lo, hi, n in speedups)
                      + (f" (Box2D v3, one round: {', '.join(peer)})" if peer else ""),
                      "met" if worst[2] >= WORKER_SPEEDUP_TARGET else

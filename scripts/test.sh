@@ -16,7 +16,7 @@ RESULTS_DIR="$COLLISION2D_WS/build/test_results"
 # Results of an earlier run must not be counted again.
 rm -rf "$RESULTS_DIR"
 
-# Checks outside catkin's test runner: the performance report's paired-round
+# Checks outside catkin's test runner: the performance report's ratio
 # arithmetic (scripts/test_*.py), every unit test of the ROS-free core
 # under AddressSanitizer and UndefinedBehaviorSanitizer, the multi-worker
 # tests under ThreadSanitizer, and a bounded run of

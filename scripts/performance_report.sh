@@ -93,15 +93,18 @@ on_workers() {
 SWEEP="$BUILD/bench/collision2d_sweep_bench"
 SCALING="$BUILD/bench/collision2d_scaling_bench"
 STACK="$BUILD/bench/collision2d_stack_bench"
+THROUGHPUT_ENGINES=(collision2d)
 if [[ -n $BOX2D_V3_DIR ]]; then
   SCALING_ENGINES+=(box2d_v3)
+  THROUGHPUT_ENGINES+=(box2d_v3)
 fi
 mkdir -p "$OUT"
 START=$(date +%s)
 PART_START=$START
 # Logs how long the part just finished took (for the time budget).
 part_done() { local now; now=$(date +%s); log "$1 took $(( now - PART_START )) s"; PART_START=$now; }
-# Throughput rounds: ours at every throughput size with 1 worker, then 2.
+# Throughput rounds: at every throughput size ours with 1 worker, then 2,
+# then Box2D v3 the same way when it is built in (its own scheduler on 2).
 # They are spread over the run (before the sweep, between the long parts
 # and at the end), so a spell in which the machine's second core is slow
 # reaches only some of them; the rows go into scaling.csv at the end.
@@ -113,9 +116,12 @@ throughput_rounds() {  # $1: how many rounds to run now
   for (( round = 0; round < $1 && ROUNDS_RUN < THROUGHPUT_ROUNDS; round++ )); do
     for scene in pyramid rain; do
       for n in "${THROUGHPUT_SIZES[@]}"; do
-        for workers in 1 2; do
-          on_workers "$workers" "$SCALING" --scene "$scene" --bodies "$n" --workers "$workers" 2>> "$BUILD/scaling.log" |
-            grep "^collision2d," >> "$THROUGHPUT_ROWS" || log "throughput: ours at $scene $n not measured"
+        for engine in "${THROUGHPUT_ENGINES[@]}"; do
+          for workers in 1 2; do
+            on_workers "$workers" "$SCALING" --scene "$scene" --bodies "$n" --engine "$engine" --workers "$workers" \
+              2>> "$BUILD/scaling.log" | grep "^$engine," >> "$THROUGHPUT_ROWS" ||
+              log "throughput: $engine at $scene $n, $workers workers, not measured"
+          done
         done
       done
     done
@@ -123,7 +129,7 @@ throughput_rounds() {  # $1: how many rounds to run now
   done
 }
 
-log "throughput: ours with 1 and 2 workers, the first rounds (the others follow the long parts)"
+log "throughput: ours${BOX2D_V3_DIR:+ and Box2D v3} with 1 and 2 workers, the first rounds (the others follow the long parts)"
 throughput_rounds 2
 part_done "throughput rounds"
 
@@ -171,22 +177,9 @@ for n in "${SCALING_SIZES[@]}"; do
 done
 part_done scaling
 
-log "throughput: pyramid and rain, ours with 1 and 2 workers (the last rounds)${BOX2D_V3_DIR:+, Box2D v3 with 1 and 2}"
+log "throughput: pyramid and rain, ours${BOX2D_V3_DIR:+ and Box2D v3} with 1 and 2 workers (the last rounds)"
 throughput_rounds "$THROUGHPUT_ROUNDS"  # the rounds left
 cat "$THROUGHPUT_ROWS" >> "$OUT/scaling.csv"
-if [[ -n $BOX2D_V3_DIR ]]; then
-  # One round: 1 worker, then 2 (its own scheduler, on both cores), so the
-  # report shows what a second core gives the peer built for threads here.
-  for scene in pyramid rain; do
-    for n in "${THROUGHPUT_SIZES[@]}"; do
-      for workers in 1 2; do
-        on_workers "$workers" "$SCALING" --scene "$scene" --bodies "$n" --engine box2d_v3 --workers "$workers" \
-          2>> "$BUILD/scaling.log" |
-          grep "^box2d_v3," >> "$OUT/scaling.csv" || log "throughput: Box2D v3 at $scene $n, $workers workers, not measured"
-      done
-    done
-  done
-fi
 
 log "resting: settled pyramids, alone and with one moving body, sleeping on${BOX2D_V3_DIR:+, and Box2D v3}"
 for n in "${RESTING_SIZES[@]}"; do

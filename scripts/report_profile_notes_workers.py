@@ -199,23 +199,24 @@ building the worlds, and this host's spread between runs is about 3%.
 A twenty-fifth, on a third host (Intel Xeon, family 6 model 207, 2 MiB of
 L2 a core and 260 MiB of L3; measured at commit 5970544 with scratch
 instrumentation, not committed). On it every stack is within 2x Box2D v3's
-time, and two workers give the pyramids 1.8 to 2 times one worker's
-speed, but the rain of 1e4 only about 1.4. Summed over its 110 frames
-(60 of warm-up, 50 timed), each stage's time on 1 worker over its time on
-2, medians of 5 alternating rounds: the narrow phase 1.63, placing each
-pair's points 1.63, the relax 1.66, the biased solve 1.56, publishing 1.47, adding
-the manifolds' points 1.49, but the broad phase 1.19 (within it, filling
-the grid 1.01 and sorting the pairs 1.02), packing the rows 1.20, moving
-the bodies 1.27 and the other per-body passes 1.16 to 1.43; the frame 1.44.
-The per-body passes of 1e4 bodies last 10 to 30 us, and an empty job
-handed to the second worker costs 0.5 to 0.7 us (a scratch program timing
-20000 of them), so the split itself is not what they lose: both threads'
-shares of the pool's jobs summed to 170 and 166 ms, and the calling thread
-waited for the other 10 to 17 ms in all. In `perf record` (2 workers,
-calling thread only, 1114 samples) 28% of the samples fell outside the
-pool's jobs: packing the rows, whose greedy colouring is serial (about a
-tenth of them), the broad phase's serial passes (its pairs' counting sort,
-the grid's prefix, clearing its counts; about a sixth), mapping grown buffers' pages with `madvise` on the calling thread
+time, and two workers give the pyramids 1.8 to 2 times one worker's speed,
+but the rain of 1e4 only about 1.4. Summed over its 110 frames (60 of
+warm-up, 50 timed), each stage's time on 1 worker over its time on 2,
+medians of 5 alternating rounds: the narrow phase 1.63, placing each
+pair's points 1.63, the relax 1.66, the biased solve 1.56, publishing
+1.47, adding the manifolds' points 1.49, but the broad phase 1.19 (within
+it, filling the grid 1.01 and sorting the pairs 1.02), packing the rows
+1.20, moving the bodies 1.27 and the other per-body passes 1.16 to 1.43;
+the frame 1.44. The per-body passes of 1e4 bodies last 10 to 30 us, and an
+empty job handed to the second worker costs 0.5 to 0.7 us (a scratch
+program timing 20000 of them), so the split itself is not what they lose:
+both threads' shares of the pool's jobs summed to 170 and 166 ms, and the
+calling thread waited for the other 10 to 17 ms in all. In `perf record`
+(2 workers, calling thread only, 1114 samples) 28% of the samples fell
+outside the pool's jobs: packing the rows, whose greedy colouring is
+serial (about a tenth of them), the broad phase's serial passes (its
+pairs' counting sort, the grid's prefix, clearing its counts; about a
+sixth), mapping grown buffers' pages with `madvise` on the calling thread
 (about an eighth), and yields while the other worker finished (a fifth).
 Each is a few percent of the frame; making the colours persist from frame
 to frame, as Box2D v3 does, would change the solve order and so every

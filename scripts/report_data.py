@@ -100,9 +100,14 @@ def v3_on_two_workers(scaling):
     return any(r["engine"] == "box2d_v3" and r.get("workers", "1") == "2" for r in scaling)
 
 
+def v3_in_rounds(scaling):
+    """Whether Box2D v3 ran in the throughput rounds beside ours (reports before ran it once)."""
+    return v3_on_two_workers(scaling) and throughput_rounds(scaling, "box2d_v3") > 1
+
+
 def v3_threads(scaling):
     """How the report ran Box2D v3 in the throughput part, in words."""
-    if v3_on_two_workers(scaling) and throughput_rounds(scaling, "box2d_v3") > 1:
+    if v3_in_rounds(scaling):
         return ("when it is in the run, in the same\n"
                 "rounds as ours, on one thread and then on two (`workerCount` 2, its own\n"
                 "scheduler): what a second core gives the peer built for threads on this machine")

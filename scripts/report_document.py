@@ -1,7 +1,7 @@
 """The text of docs/performance.md: the fixed prose of the report with the
 measured sections filled in."""
 
-from report_data import PIPELINE_NAMES, TIME_TARGET, number, throughput_rounds, v3_threads
+from report_data import PIPELINE_NAMES, TIME_TARGET, number, throughput_rounds, v3_in_rounds, v3_threads
 from report_format import fmt
 from report_analysis import PAIRED_CANDIDATES, baseline
 from report_targets import earlier_targets_section, targets_section
@@ -194,7 +194,7 @@ rules (unit boxes, mu 0.6, g -10, 4 substeps, sleeping off): the largest
 pyramid of at most n boxes, and a rain of n disks and boxes falling onto the
 ground (timed after its first second, when the lowest rows have landed).
 Ours with 1 and 2 workers (`WorldSettings::workers`), Box2D v3 {v3_threads(scaling)}; one process per size, so the peak memory is
-that size's alone. {"Ours and Box2D v3 run" if throughput_rounds(scaling, "box2d_v3") > 1 else "Ours runs"} {throughput_rounds(scaling)} rounds alternating 1 and 2
+that size's alone. {"Ours and Box2D v3 run" if v3_in_rounds(scaling) else "Ours runs"} {throughput_rounds(scaling)} rounds alternating 1 and 2
 workers, spread over the report's run (two before the sweep, two after it,
 two after the stacks, the last at the end), and each row is the round of
 median time: a second core busy for a moment, or for minutes, slows only

@@ -15,7 +15,8 @@ def row(engine, workers, bodies, ms):
 
 class WorkerSpeedupTest(unittest.TestCase):
     def setUp(self):
-        # Ours in three rounds, each 1 worker then 2; Box2D v3 in one, as the reports ran it before it joined the rounds.
+        # Ours in three rounds, each 1 worker then 2; Box2D v3 in one, as
+        # the reports ran it before it joined the rounds.
         ours = [(40.0, 20.0), (60.0, 40.0), (44.0, 22.0)]
         rows = []
         for one, two in ours:

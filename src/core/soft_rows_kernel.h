@@ -85,58 +85,56 @@ struct Side
   V s;
 };
 
-/// A lane's two bodies and its fixed data, loaded once per pass.
-template <class V>
+/// A lane's two bodies, loaded once per pass, and its fixed data, read from
+/// the batch where used: the passes never write it, and a copy would not fit
+/// in the registers beside the bodies (it went through the stack).
+template <class V, class Ops, class Batch>
 struct Lane
 {
+  const Ops& ops;
+  const Batch& r;
   Side<V> a;
   Side<V> b;
-  V2<V> n, t, ra1, rb1, ra2, rb2;
-  V inv_ma, inv_mb, inv_ia, inv_ib;
+  V2<V> n() const { return {ops.load(r.nx), ops.load(r.ny)}; }
+  V2<V> t() const { return {neg(ops.load(r.ny)), ops.load(r.nx)}; }  // perp(n), exactly the prepared tangent
+  V2<V> ra1() const { return {ops.load(r.point[0].ra_x), ops.load(r.point[0].ra_y)}; }
+  V2<V> rb1() const { return {ops.load(r.point[0].rb_x), ops.load(r.point[0].rb_y)}; }
+  V2<V> ra2() const { return {ops.load(r.point[1].ra_x), ops.load(r.point[1].ra_y)}; }  // two-point batches only
+  V2<V> rb2() const { return {ops.load(r.point[1].rb_x), ops.load(r.point[1].rb_y)}; }
+  V inv_ma() const { return ops.load(r.inv_mass_a); }
+  V inv_mb() const { return ops.load(r.inv_mass_b); }
+  V inv_ia() const { return ops.load(r.inv_inertia_a); }
+  V inv_ib() const { return ops.load(r.inv_inertia_b); }
 };
 
-/// The lanes' bodies and fixed data, loaded once per pass from a batch of
-/// either kind (a one-point batch leaves ra2 and rb2 unset).
+/// The lanes' bodies, gathered once per pass from a batch of either kind.
 template <class V, class Ops, class Batch>
-Lane<V> load_lane(const Ops& ops, const Batch& r, const std::vector<BodyVelocity>& state)
+Lane<V, Ops, Batch> load_lane(const Ops& ops, const Batch& r, const std::vector<BodyVelocity>& state)
 {
-  Lane<V> l;
+  Lane<V, Ops, Batch> l{ops, r, {}, {}};
   ops.gather(state, r.a, l.a);
   ops.gather(state, r.b, l.b);
-  l.n = {ops.load(r.nx), ops.load(r.ny)};
-  l.t = {neg(l.n.y), l.n.x};  // perp(n), exactly the prepared tangent
-  l.ra1 = {ops.load(r.point[0].ra_x), ops.load(r.point[0].ra_y)};
-  l.rb1 = {ops.load(r.point[0].rb_x), ops.load(r.point[0].rb_y)};
-  if constexpr (sizeof(r.point) / sizeof(r.point[0]) == 2)
-  {
-    l.ra2 = {ops.load(r.point[1].ra_x), ops.load(r.point[1].ra_y)};
-    l.rb2 = {ops.load(r.point[1].rb_x), ops.load(r.point[1].rb_y)};
-  }
-  l.inv_ma = ops.load(r.inv_mass_a);
-  l.inv_mb = ops.load(r.inv_mass_b);
-  l.inv_ia = ops.load(r.inv_inertia_a);
-  l.inv_ib = ops.load(r.inv_inertia_b);
   return l;
 }
 
 /// relative_velocity_at: b's velocity at r_b less a's at r_a.
-template <class V>
-V2<V> relative_velocity(const Lane<V>& l, V2<V> ra, V2<V> rb)
+template <class V, class L>
+V2<V> relative_velocity(const L& l, V2<V> ra, V2<V> rb)
 {
   return ((l.b.v + cross(l.b.w, rb)) - l.a.v) - cross(l.a.w, ra);
 }
 
 /// apply_impulse_at: p on b, -p on a; a body with no inverse mass is untouched.
-template <class V>
-void apply(Lane<V>& l, V2<V> ra, V2<V> rb, V2<V> p)
+template <class V, class L>
+void apply(L& l, V2<V> ra, V2<V> rb, V2<V> p)
 {
   const V zero = V(0.0);
-  const auto moves_a = l.inv_ma != zero;
-  const auto moves_b = l.inv_mb != zero;
-  const V2<V> va = l.a.v - scale(p, l.inv_ma);
-  const V wa = l.a.w - l.inv_ia * cross(ra, p);
-  const V2<V> vb = l.b.v + scale(p, l.inv_mb);
-  const V wb = l.b.w + l.inv_ib * cross(rb, p);
+  const auto moves_a = l.inv_ma() != zero;
+  const auto moves_b = l.inv_mb() != zero;
+  const V2<V> va = l.a.v - scale(p, l.inv_ma());
+  const V wa = l.a.w - l.inv_ia() * cross(ra, p);
+  const V2<V> vb = l.b.v + scale(p, l.inv_mb());
+  const V wb = l.b.w + l.inv_ib() * cross(rb, p);
   l.a.v = {sel(moves_a, va.x, l.a.v.x), sel(moves_a, va.y, l.a.v.y)};
   l.a.w = sel(moves_a, wa, l.a.w);
   l.b.v = {sel(moves_b, vb.x, l.b.v.x), sel(moves_b, vb.y, l.b.v.y)};
@@ -145,21 +143,21 @@ void apply(Lane<V>& l, V2<V> ra, V2<V> rb, V2<V> p)
 
 /// The pose change between a point's anchors since prepare (m): the common
 /// part of a point's gap and slip (separation_at, slip_at).
-template <class V>
-V2<V> anchor_offset(const Lane<V>& l, V2<V> ra, V2<V> rb)
+template <class V, class L>
+V2<V> anchor_offset(const L& l, V2<V> ra, V2<V> rb)
 {
   return ((l.b.moved - l.a.moved) + rotate(rb, l.b.c, l.b.s)) - rotate(ra, l.a.c, l.a.s);
 }
 
-template <class V, class Ops>
-__attribute__((always_inline)) inline void warm_start_point(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb,
+template <class V, class Ops, class L>
+__attribute__((always_inline)) inline void warm_start_point(const Ops& ops, L& l, V2<V> ra, V2<V> rb,
                                                            RowPoint& point)
 {
   const V ln = ops.load(point.normal);
   const V lt = ops.load(point.tangent);
   const V zero = V(0.0);
-  Lane<V> pushed = l;
-  apply(pushed, ra, rb, scale(l.n, ln) + scale(l.t, lt));
+  auto pushed = l;
+  apply(pushed, ra, rb, scale(l.n(), ln) + scale(l.t(), lt));
   const auto any = (ln != zero) | (lt != zero);
   l.a.v = {sel(any, pushed.a.v.x, l.a.v.x), sel(any, pushed.a.v.y, l.a.v.y)};
   l.a.w = sel(any, pushed.a.w, l.a.w);
@@ -170,11 +168,11 @@ __attribute__((always_inline)) inline void warm_start_point(const Ops& ops, Lane
 template <class V, class Ops, class Batch>
 void warm_start_rows(const Ops& ops, Batch& r, std::vector<BodyVelocity>& state)
 {
-  Lane<V> l = load_lane<V>(ops, r, state);
-  warm_start_point(ops, l, l.ra1, l.rb1, r.point[0]);
+  auto l = load_lane<V>(ops, r, state);
+  warm_start_point(ops, l, l.ra1(), l.rb1(), r.point[0]);
   if constexpr (sizeof(r.point) / sizeof(r.point[0]) == 2)
   {
-    warm_start_point(ops, l, l.ra2, l.rb2, r.point[1]);
+    warm_start_point(ops, l, l.ra2(), l.rb2(), r.point[1]);
   }
   ops.scatter(state, r.a, l.a);
   ops.scatter(state, r.b, l.b);
@@ -212,17 +210,17 @@ void lcp2(V k11, V k12, V k22, V q1, V q2, V& y1, V& y2)
 }
 
 /// set_soft_impulse: the new accumulated normal impulse and its change applied.
-template <class V, class Ops>
-void set_normal(const Ops& ops, Lane<V>& l, V2<V> ra, V2<V> rb, RowPoint& point, V total)
+template <class V, class Ops, class L>
+void set_normal(const Ops& ops, L& l, V2<V> ra, V2<V> rb, RowPoint& point, V total)
 {
   const V applied = total - ops.load(point.normal);
   ops.store(point.normal, total);
-  apply(l, ra, rb, scale(l.n, applied));
+  apply(l, ra, rb, scale(l.n(), applied));
 }
 
 /// The manifold's two normals as one block (solve_soft_normal_block).
-template <class V, class Ops>
-void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass, V s1, V s2)
+template <class V, class Ops, class L>
+void solve_normals(const Ops& ops, L& l, RowBatch& r, const RowPass& pass, V s1, V s2)
 {
   const V rate = ops.load(r.bias_rate);
   const V mass_scale = ops.load(r.mass_scale);
@@ -237,12 +235,12 @@ void solve_normals(const Ops& ops, Lane<V>& l, RowBatch& r, const RowPass& pass,
   // The relax pass's scales are exactly 1, and x / 1 is x: no division there.
   const V speed1 = pass.use_bias ? bias1 / scale1 : bias1;
   const V speed2 = pass.use_bias ? bias2 / scale2 : bias2;
-  const V q1 = (dot(relative_velocity(l, l.ra1, l.rb1), l.n) + speed1) - (k11 * x1 + k12 * x2);
-  const V q2 = (dot(relative_velocity(l, l.ra2, l.rb2), l.n) + speed2) - (k12 * x1 + k22 * x2);
+  const V q1 = (dot(relative_velocity(l, l.ra1(), l.rb1()), l.n()) + speed1) - (k11 * x1 + k12 * x2);
+  const V q2 = (dot(relative_velocity(l, l.ra2(), l.rb2()), l.n()) + speed2) - (k12 * x1 + k22 * x2);
   V y1, y2;
   lcp2(k11, k12, k22, q1, q2, y1, y2);
-  set_normal(ops, l, l.ra1, l.rb1, r.point[0], scale1 * y1);
-  set_normal(ops, l, l.ra2, l.rb2, r.point[1], scale2 * y2);
+  set_normal(ops, l, l.ra1(), l.rb1(), r.point[0], scale1 * y1);
+  set_normal(ops, l, l.ra2(), l.rb2(), r.point[1], scale2 * y2);
 }
 
 /// Whether friction acts in any lane of the batch: a frictionless batch
@@ -263,16 +261,16 @@ bool any_rough(const Batch& r)
 /// Coulomb's cone on the `needed` tangential impulse (coulomb): its first
 /// point's sliding flag set, the change from `old_total` applied where the
 /// lane's friction acts. Returns the clamped total.
-template <class V, class Ops, class Batch>
-V clamp_friction(const Ops& ops, Lane<V>& l, Batch& r, V2<V> ra, V2<V> rb, V needed, V normal, V old_total)
+template <class V, class Ops, class Batch, class L>
+V clamp_friction(const Ops& ops, L& l, Batch& r, V2<V> ra, V2<V> rb, V needed, V normal, V old_total)
 {
   const V cone = sel(ops.flag(r.flags.kinetic[0]), ops.load(r.mu_k), ops.load(r.mu_s));
   const V limit = cone * normal;
   const auto rough = ops.flag(r.flags.rough);
   ops.set_flag(r.flags.sliding[0], rough, limit < abs(needed));
   const V total = vmax(neg(limit), vmin(limit, needed));
-  Lane<V> pushed = l;
-  apply(pushed, ra, rb, scale(l.t, total - old_total));
+  auto pushed = l;
+  apply(pushed, ra, rb, scale(l.t(), total - old_total));
   l.a.v = {sel(rough, pushed.a.v.x, l.a.v.x), sel(rough, pushed.a.v.y, l.a.v.y)};
   l.a.w = sel(rough, pushed.a.w, l.a.w);
   l.b.v = {sel(rough, pushed.b.v.x, l.b.v.x), sel(rough, pushed.b.v.y, l.b.v.y)};
@@ -282,14 +280,14 @@ V clamp_friction(const Ops& ops, Lane<V>& l, Batch& r, V2<V> ra, V2<V> rb, V nee
 
 /// The manifold's friction as one row at its midpoint (solve_friction_pair),
 /// pulled back toward the sticking anchors by `pull` (m/s).
-template <class V, class Ops>
-void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
+template <class V, class Ops, class L>
+void solve_friction(const Ops& ops, L& l, RowBatch& r, V pull)
 {
   const V zero = V(0.0);
   const V half = V(0.5);
-  const V2<V> ra = scale(l.ra1 + l.ra2, half);
-  const V2<V> rb = scale(l.rb1 + l.rb2, half);
-  const V slip = dot(relative_velocity(l, ra, rb), l.t);
+  const V2<V> ra = scale(l.ra1() + l.ra2(), half);
+  const V2<V> rb = scale(l.rb1() + l.rb2(), half);
+  const V slip = dot(relative_velocity(l, ra, rb), l.t());
   const V vt = sel(pull == zero, slip, slip + pull);
   const V n1 = ops.load(r.point[0].normal);
   const V normal_sum = n1 + ops.load(r.point[1].normal);
@@ -305,11 +303,11 @@ void solve_friction(const Ops& ops, Lane<V>& l, RowBatch& r, V pull)
 }
 
 /// A point's slip since it stuck (anchor_drift): 0 once it has slid (`kinetic`, its batch's flags).
-template <class V, class Ops>
-V point_drift(const Ops& ops, const Lane<V>& l, const RowPoint& point, const std::uint8_t* kinetic, V2<V> d,
+template <class V, class Ops, class L>
+V point_drift(const Ops& ops, const L& l, const RowPoint& point, const std::uint8_t* kinetic, V2<V> d,
               V2<V> ra, V2<V> rb)
 {
-  const V slip = dot(d - (rb - ra), l.t);
+  const V slip = dot(d - (rb - ra), l.t());
   return sel(ops.flag(kinetic), V(0.0), ops.load(point.anchor) + slip);
 }
 
@@ -324,21 +322,21 @@ V capped_pull(const Ops& ops, const Batch& r, V drift, const RowPass& pass)
 }
 
 /// The anchor pull of a two-point manifold: the mean slip of its points.
-template <class V, class Ops>
-V anchor_pull(const Ops& ops, const Lane<V>& l, const RowBatch& r, V2<V> d1, V2<V> d2, const RowPass& pass)
+template <class V, class Ops, class L>
+V anchor_pull(const Ops& ops, const L& l, const RowBatch& r, V2<V> d1, V2<V> d2, const RowPass& pass)
 {
-  const V drift1 = point_drift(ops, l, r.point[0], r.flags.kinetic[0], d1, l.ra1, l.rb1);
-  const V drift2 = point_drift(ops, l, r.point[1], r.flags.kinetic[1], d2, l.ra2, l.rb2);
+  const V drift1 = point_drift(ops, l, r.point[0], r.flags.kinetic[0], d1, l.ra1(), l.rb1());
+  const V drift2 = point_drift(ops, l, r.point[1], r.flags.kinetic[1], d2, l.ra2(), l.rb2());
   return capped_pull(ops, r, V(0.5) * (drift1 + drift2), pass);
 }
 
 template <class V, class Ops>
 void solve_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state, const RowPass& pass)
 {
-  Lane<V> l = load_lane<V>(ops, r, state);
-  const V2<V> d1 = anchor_offset(l, l.ra1, l.rb1);
-  const V2<V> d2 = anchor_offset(l, l.ra2, l.rb2);
-  solve_normals(ops, l, r, pass, ops.load(r.point[0].base) + dot(d1, l.n), ops.load(r.point[1].base) + dot(d2, l.n));
+  auto l = load_lane<V>(ops, r, state);
+  const V2<V> d1 = anchor_offset(l, l.ra1(), l.rb1());
+  const V2<V> d2 = anchor_offset(l, l.ra2(), l.rb2());
+  solve_normals(ops, l, r, pass, ops.load(r.point[0].base) + dot(d1, l.n()), ops.load(r.point[1].base) + dot(d2, l.n()));
   if (any_rough(r))
   {
     const V pull = pass.use_bias ? anchor_pull(ops, l, r, d1, d2, pass) : V(0.0);
@@ -349,27 +347,27 @@ void solve_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state, c
 }
 
 /// A one-point manifold's normal (solve_soft_normal) at gap s.
-template <class V, class Ops>
-void solve_single_normal(const Ops& ops, Lane<V>& l, RowSingle& r, const RowPass& pass, V s)
+template <class V, class Ops, class L>
+void solve_single_normal(const Ops& ops, L& l, RowSingle& r, const RowPass& pass, V s)
 {
   V bias, mass_scale;
   soft_terms(s, ops.load(r.bias_rate), ops.load(r.mass_scale), pass, bias, mass_scale);
-  const V vn = dot(relative_velocity(l, l.ra1, l.rb1), l.n);
+  const V vn = dot(relative_velocity(l, l.ra1(), l.rb1()), l.n());
   // The relax pass's scale is exactly 1, and x / 1 is x: no division there.
   const V speed = pass.use_bias ? bias / mass_scale : bias;
   const V rigid = ops.load(r.point[0].normal) - (vn + speed) * ops.load(r.normal_mass);
-  set_normal(ops, l, l.ra1, l.rb1, r.point[0], mass_scale * vmax(V(0.0), rigid));
+  set_normal(ops, l, l.ra1(), l.rb1(), r.point[0], mass_scale * vmax(V(0.0), rigid));
 }
 
 /// A one-point manifold's friction (solve_friction), pulled back toward its
 /// anchor by `pull` (m/s).
-template <class V, class Ops>
-void solve_single_friction(const Ops& ops, Lane<V>& l, RowSingle& r, V pull)
+template <class V, class Ops, class L>
+void solve_single_friction(const Ops& ops, L& l, RowSingle& r, V pull)
 {
-  const V slip = dot(relative_velocity(l, l.ra1, l.rb1), l.t);
+  const V slip = dot(relative_velocity(l, l.ra1(), l.rb1()), l.t());
   const V vt = sel(pull == V(0.0), slip, slip + pull);
   const V old = ops.load(r.point[0].tangent);
-  const V total = clamp_friction(ops, l, r, l.ra1, l.rb1, old - vt * ops.load(r.tangent_mass),
+  const V total = clamp_friction(ops, l, r, l.ra1(), l.rb1(), old - vt * ops.load(r.tangent_mass),
                                  ops.load(r.point[0].normal), old);
   ops.store(r.point[0].tangent, sel(ops.flag(r.flags.rough), total, old));
 }
@@ -377,14 +375,14 @@ void solve_single_friction(const Ops& ops, Lane<V>& l, RowSingle& r, V pull)
 template <class V, class Ops>
 void solve_rows(const Ops& ops, RowSingle& r, std::vector<BodyVelocity>& state, const RowPass& pass)
 {
-  Lane<V> l = load_lane<V>(ops, r, state);
-  const V2<V> d = anchor_offset(l, l.ra1, l.rb1);
-  solve_single_normal(ops, l, r, pass, ops.load(r.point[0].base) + dot(d, l.n));
+  auto l = load_lane<V>(ops, r, state);
+  const V2<V> d = anchor_offset(l, l.ra1(), l.rb1());
+  solve_single_normal(ops, l, r, pass, ops.load(r.point[0].base) + dot(d, l.n()));
   if (any_rough(r))
   {
     // The relax pass has no pull, and no drift to compute.
     const V pull =
-        pass.use_bias ? capped_pull(ops, r, point_drift(ops, l, r.point[0], r.flags.kinetic[0], d, l.ra1, l.rb1), pass)
+        pass.use_bias ? capped_pull(ops, r, point_drift(ops, l, r.point[0], r.flags.kinetic[0], d, l.ra1(), l.rb1()), pass)
                       : V(0.0);
     solve_single_friction(ops, l, r, pull);
   }

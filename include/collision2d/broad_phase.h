@@ -42,6 +42,9 @@ public:
   /// As above, the grid's cells searched in parts by `runner` when there are
   /// enough of them; the pairs are the same for any runner.
   void find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
+  /// Up to this many boxes every pair is tested: fewer tests than the grid's
+  /// fixed work of placing, classifying, filling and sorting.
+  static constexpr std::size_t kAllPairsBoxes = 8;
 
 private:
   /// Inclusive range of grid cells a box covers.

@@ -13,6 +13,7 @@
 #include "scratch_buffer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 
@@ -37,9 +38,6 @@ constexpr std::int32_t kMaxCellsPerSide = 4;
 constexpr double kCellIndexLimit = 536870912.0;  // 2^29 cells
 /// Cell size when the boxes are points spread over nothing (all identical).
 constexpr double kFallbackCell = 1.0;  // m
-/// Up to this many boxes every pair is tested: fewer tests than the grid's
-/// fixed work of placing, classifying, filling and sorting.
-constexpr std::size_t kAllPairsBoxes = 8;
 /// Calls between two choices of the cell size. The cell only sets the cost
 /// of a call, never its pairs, and box sizes barely change between substeps,
 /// so the percentile (a selection over every box) is not redone each call;
@@ -93,16 +91,19 @@ void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<Bod
 
 void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
 {
+  // Each box checked once, then one branch per pair, not one per comparison:
+  // in a frame's few boxes the outcomes change as bodies meet and part.
+  std::array<bool, kAllPairsBoxes> usable{};
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+  {
+    usable[i] = detail::is_usable(boxes[i]);
+  }
   // In (i, j) order: sorted as the grid's pairs end.
   for (std::size_t i = 0; i < boxes.size(); ++i)
   {
-    if (!detail::is_usable(boxes[i]))
-    {
-      continue;
-    }
     for (std::size_t j = i + 1; j < boxes.size(); ++j)
     {
-      if (detail::is_usable(boxes[j]) && boxes[i].overlaps(boxes[j]))
+      if (usable[i] & usable[j] & boxes[i].overlaps(boxes[j]))
       {
         pairs.emplace_back(i, j);
       }

@@ -38,6 +38,12 @@ bool inside(const Aabb& box, const Aabb& fat)
 void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, std::vector<BodyPair>& pairs,
                              RangeRunner& runner)
 {
+  if (boxes.size() <= BroadPhase::kAllPairsBoxes)
+  {
+    // Every pair is tested at once: checking enlarged boxes first costs more.
+    broad_phase.find_pairs(boxes, pairs, runner);
+    return;
+  }
   if (still_inside(boxes, runner))
   {
     ++reused_;

@@ -4,7 +4,8 @@
 // the kept pairs whose boxes overlap now, so no grid is built. A stack at
 // rest keeps its pairs for as long as it rests. Where boxes keep leaving
 // their enlarged ones, the exact boxes are paired and enlarging is tried
-// again after a wait that doubles.
+// again after a wait that doubles. A few boxes (BroadPhase::kAllPairsBoxes)
+// are always paired directly.
 #pragma once
 
 #include <cstddef>

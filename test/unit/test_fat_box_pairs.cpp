@@ -2,7 +2,8 @@
 // every frame's pairs must be exactly BroadPhase's for the boxes of that
 // frame, whether the kept pairs were reused or found again, for boxes that
 // jitter in place, jump, turn unusable (non-finite, inverted) or huge, and
-// when the list of bodies changes; and on a runner's parts as on one.
+// when the list of bodies changes; and on a runner's parts as on one. A few
+// boxes are paired directly.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -161,6 +162,30 @@ TEST(FatBoxPairs, AnotherNumberOfBoxesFindsThePairsAgain)
   EXPECT_EQ(kept.reused(), 1u);
   expect_same_pairs(kept, boxes);
   EXPECT_EQ(kept.reused(), 2u);
+}
+
+TEST(FatBoxPairs, AFewBoxesArePairedDirectly)
+{
+  // Up to BroadPhase::kAllPairsBoxes boxes every pair is tested each frame
+  // and nothing is kept; past it the enlarged boxes are kept again.
+  std::vector<Aabb> boxes = grid_boxes(4, 2);
+  ASSERT_LE(boxes.size(), BroadPhase::kAllPairsBoxes);
+  detail::FatBoxPairs kept;
+  for (int frame = 0; frame < 6; ++frame)
+  {
+    if (frame == 3)
+    {
+      boxes[5].hi.x = kNan;
+    }
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_EQ(kept.reused(), 0u) << "a few boxes need no enlarged ones";
+  boxes = grid_boxes(5, 4);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_EQ(kept.reused(), 2u) << "more boxes keep their enlarged ones again";
 }
 
 }  // namespace

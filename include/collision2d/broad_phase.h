@@ -112,7 +112,7 @@ private:
   /// Box i's class, its cells stored in ranges_ when usable.
   BoxClass classify_box(const std::vector<Aabb>& boxes, std::size_t i);
   void find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
-  /// A few boxes: every pair tested, no grid.
+  /// At most kAllPairsBoxes boxes: every pair tested, no grid.
   static void all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
   /// The grid's entries by counting sort; with a runner, in parts of the
   /// boxes, each part's entries placed where one pass would put them.

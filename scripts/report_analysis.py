@@ -62,12 +62,30 @@ def cheapest_at(our_runs, error, key="ms"):
 
 
 # Our runs at a peer run's error that are timed again beside it in paired
-# rounds: the cheapest few by the sweep's own timing.
+# rounds: the cheapest few by the sweep's own timing, and the cheapest of
+# each of the cheapest few settings (pipeline, substeps and iterations).
 PAIRED_CANDIDATES = 3
 
 
+def setting_of(run):
+    return run["pipeline"], run["substeps"], run["iterations"]
+
+
 def candidates_at(our_runs, error):
-    return sorted(at_error(our_runs, error), key=lambda r: r["ms"])[:PAIRED_CANDIDATES]
+    """The sweep times each run once: a spell of slowness can put a cheap
+    setting behind several knobs' runs of a dearer one that cost alike, so
+    the cheapest run of each of the cheapest settings is timed again too."""
+    ranked = sorted(at_error(our_runs, error), key=lambda r: r["ms"])
+    picked = ranked[:PAIRED_CANDIDATES]
+    settings = []
+    for r in ranked:
+        if len(settings) == PAIRED_CANDIDATES:
+            break
+        if setting_of(r) not in settings:
+            settings.append(setting_of(r))
+            if r not in picked:
+                picked.append(r)
+    return picked
 
 
 def round_ratio(mine, peer, column):

@@ -38,6 +38,16 @@ class PairedRoundsTest(unittest.TestCase):
         self.assertEqual(paired_keys(self.runs, "s"),
                          [run_key(r) for r in [self.peer, self.fast, self.slow, self.third]])
 
+    def test_the_cheapest_settings_are_timed_again_too(self):
+        # Three knobs' runs of the 2-substep setting were timed cheaper than
+        # the 1-substep one: the latter is timed again all the same.
+        knobs = [run("world", "collision2d", "matched", knob, "x", 0.4, 0.001, substeps="2")
+                 for knob in ["contact_hertz", "warm_starting", "speculative_margin"]]
+        runs = prepare([self.peer, self.fast, self.slow, self.third, self.fourth] + knobs)
+        keys = paired_keys(runs, "s")
+        self.assertEqual(keys[:4], [run_key(r) for r in [self.peer] + knobs])
+        self.assertEqual(keys[4:], [run_key(r) for r in [self.fast, self.third]])
+
     def test_without_rounds_the_sweep_times_decide(self):
         attach_paired(self.runs, [])
         (row,) = time_target_rows(self.runs, "s")

@@ -231,4 +231,43 @@ soft step's rows 76 MB (128 bytes a point), the narrow phase's manifolds
 10 MB. About 660 bytes go to each point every frame, some 3.9 kB of the
 5.3 kB a box: what one compact record per point, built at detection and
 read back by the rows, would shrink.
+
+A twenty-sixth, on the third host (commits f797a6b and 090a66c, and trials
+not kept; scratch drivers, not committed). The four-lane solve of a
+two-point batch copied the batch's normal, lever arms and inverse masses
+into the lane beside the two gathered bodies, more values than the 16
+vector registers hold, so the compiler kept the copies on the stack. Read
+from the batch where they are used instead (f797a6b), the solve is 716
+instructions, down from 745, with 134 stack accesses, down from 154; the
+base-100 pyramid on 1 worker took 0.964 of the time (9 alternating runs,
+0.81 to 1.00). Not kept, on the same pyramid: the same file compiled for
+AVX-512VL (32 vector registers, no fused multiply-adds) took 1.23 of the
+time (9 runs, 1.13 to 1.49) with nearly as many stack accesses; GCC's
+register-pressure scheduling on that file 1.03 (7 runs, 0.75 to 1.09);
+applying an impulse to a copy of the velocities only, instead of a copy of
+the lane, 1.15 (7 runs, 1.12 to 1.17); writing the bodies back by masked
+stores of transposed rows 1.01 (9 runs, 0.88 to 1.13). The tiny scenes
+spend their frame in some twenty stages; the largest, about a quarter of
+bouncing_disks' frame, was the broad phase of five disks and a ground,
+which checked their boxes against enlarged ones every frame before testing
+the 15 pairs. A few boxes are now paired directly, each box's usability
+checked once (090a66c): bouncing_disks at 1 substep took 0.941 of the time
+(9 alternating runs of 180-frame worlds pinned to one core, 0.93 to 0.96),
+bullet_wall on the Fx2D order 1.005 (1.00 to 1.01). In the sweep bench's
+paired runs, whose worlds last 30 frames, bullet_wall's Fx2D 1x2 took 1.03
+to 1.05 of its time at 1eabba5, the added time spread over stages neither
+commit touched. Either commit alone gave 1.05 to 1.06, while an unused
+function added to 1eabba5's core left its time as it was; the cause was
+not found. Two workers: the host's two virtual CPUs are separate cores
+(two pinned loops of independent multiplies took 1.317 and 1.325 s
+together against 1.316 and 1.350 s alone). Profiled with call stacks on
+the rain of 1e4, 28% of both threads' samples were in yields and the
+scheduler: two threads busy 72% of the time give 2 x 0.72 = 1.44, the
+speed-up the rounds measure; the calling thread spent 11.6% of its samples
+waiting at the solve's colour barriers. That frame had 8 colours of mostly
+one-point (disk) batches, 1259 and 1233 in the first two and 268 to 471 in
+the other six, and no overflow. Sleeping after 65536 yields instead of
+1024 changed nothing (0.991, 12 alternating runs, 0.87 to 1.12), and
+cutting plain jobs into four chunks a worker, taken in turn, was slower
+(1.06, 12 alternating runs, 0.73 to 1.13).
 """

@@ -161,7 +161,8 @@ paired`, runs chosen by `scripts/report_pairs.py`): each peer run, and for
 each our {PAIRED_CANDIDATES} cheapest runs at its error by the sweep's times,
 and the cheapest run of each of our {PAIRED_CANDIDATES} cheapest settings there
 (pipeline, substeps and iterations: a slow spell can put a cheap setting
-behind several runs of a dearer one whose knobs cost alike); every round times each of them once, each round starting one run further on.
+behind several runs of a dearer one whose knobs cost alike); every round
+times each of them once, each round starting one run further on.
 A ratio is the median over the rounds of each round's own ratio, and the row
 names the candidate whose median is lowest, with the lowest and highest of
 its rounds' wall ratios; the times and errors beside it are the sweep's. The

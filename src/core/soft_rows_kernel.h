@@ -141,6 +141,18 @@ void apply(L& l, V2<V> ra, V2<V> rb, V2<V> p)
   l.b.w = sel(moves_b, wb, l.b.w);
 }
 
+/// apply on the lanes where `where` is set; the others keep their velocities.
+template <class V, class M, class L>
+__attribute__((always_inline)) inline void apply_where(L& l, M where, V2<V> ra, V2<V> rb, V2<V> p)
+{
+  auto pushed = l;
+  apply(pushed, ra, rb, p);
+  l.a.v = {sel(where, pushed.a.v.x, l.a.v.x), sel(where, pushed.a.v.y, l.a.v.y)};
+  l.a.w = sel(where, pushed.a.w, l.a.w);
+  l.b.v = {sel(where, pushed.b.v.x, l.b.v.x), sel(where, pushed.b.v.y, l.b.v.y)};
+  l.b.w = sel(where, pushed.b.w, l.b.w);
+}
+
 /// The pose change between a point's anchors since prepare (m): the common
 /// part of a point's gap and slip (separation_at, slip_at).
 template <class V, class L>
@@ -156,13 +168,7 @@ __attribute__((always_inline)) inline void warm_start_point(const Ops& ops, L& l
   const V ln = ops.load(point.normal);
   const V lt = ops.load(point.tangent);
   const V zero = V(0.0);
-  auto pushed = l;
-  apply(pushed, ra, rb, scale(l.n(), ln) + scale(l.t(), lt));
-  const auto any = (ln != zero) | (lt != zero);
-  l.a.v = {sel(any, pushed.a.v.x, l.a.v.x), sel(any, pushed.a.v.y, l.a.v.y)};
-  l.a.w = sel(any, pushed.a.w, l.a.w);
-  l.b.v = {sel(any, pushed.b.v.x, l.b.v.x), sel(any, pushed.b.v.y, l.b.v.y)};
-  l.b.w = sel(any, pushed.b.w, l.b.w);
+  apply_where(l, (ln != zero) | (lt != zero), ra, rb, scale(l.n(), ln) + scale(l.t(), lt));
 }
 
 template <class V, class Ops, class Batch>
@@ -269,12 +275,7 @@ V clamp_friction(const Ops& ops, L& l, Batch& r, V2<V> ra, V2<V> rb, V needed, V
   const auto rough = ops.flag(r.flags.rough);
   ops.set_flag(r.flags.sliding[0], rough, limit < abs(needed));
   const V total = vmax(neg(limit), vmin(limit, needed));
-  auto pushed = l;
-  apply(pushed, ra, rb, scale(l.t(), total - old_total));
-  l.a.v = {sel(rough, pushed.a.v.x, l.a.v.x), sel(rough, pushed.a.v.y, l.a.v.y)};
-  l.a.w = sel(rough, pushed.a.w, l.a.w);
-  l.b.v = {sel(rough, pushed.b.v.x, l.b.v.x), sel(rough, pushed.b.v.y, l.b.v.y)};
-  l.b.w = sel(rough, pushed.b.w, l.b.w);
+  apply_where(l, rough, ra, rb, scale(l.t(), total - old_total));
   return total;
 }
 

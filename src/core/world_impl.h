@@ -218,7 +218,8 @@ struct WorldImpl : WorldState
   // world_pose.cpp: the outlines.
   /// Every polygon's outline at its pose now, into posed_vertices_ (workers share it).
   void pose_bodies();
-  void pose_range(std::size_t begin, std::size_t end);
+  /// Poses bodies [begin, end), all but the static ones with `skip_static`.
+  void pose_range(std::size_t begin, std::size_t end, bool skip_static);
   /// Body i's tight box, read from its outline (pose_bodies) when it has one.
   Aabb posed_box(std::size_t i) const;
   PosedPolygon posed(std::size_t i) const;

@@ -15,7 +15,7 @@ void WorldImpl::pose_bodies()
   if (!body_pass_full_ && posed_offset_.size() == n)
   {
     // A resting body's outline is where the frame that made it rest put it.
-    for_each_body([this](std::size_t i) { pose_range(i, i + 1); });
+    for_each_body([this](std::size_t i) { pose_range(i, i + 1, false); });
     return;
   }
   // Only an edit changes a body's vertex count, and the bodies' records are
@@ -32,15 +32,24 @@ void WorldImpl::pose_bodies()
     posed_vertices_.resize(total);
     posed_version_ = version_;
   }
-  workers_.parallel_for(n, kMinSharedBodies,
-                        [this](std::size_t begin, std::size_t end) { pose_range(begin, end); });
+  // Only an edit moves a static body: its outline stands from the last full
+  // pass at this version (a ground posed once, not every frame).
+  const bool statics_posed = statics_posed_version_ == version_;
+  workers_.parallel_for(n, kMinSharedBodies, [this, statics_posed](std::size_t begin, std::size_t end) {
+    pose_range(begin, end, statics_posed);
+  });
+  statics_posed_version_ = version_;
 }
 
-void WorldImpl::pose_range(std::size_t begin, std::size_t end)
+void WorldImpl::pose_range(std::size_t begin, std::size_t end, bool skip_static)
 {
   for (std::size_t i = begin; i < end; ++i)
   {
     const Body& b = bodies_[i];
+    if (skip_static && b.type() == BodyType::Static)
+    {
+      continue;
+    }
     Vec2* vertices = posed_vertices_.data() + posed_offset_[i];
     pose_polygon(b, vertices, vertices + b.vertex_count());
   }

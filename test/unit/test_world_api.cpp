@@ -164,6 +164,33 @@ TEST(WorldApi, StaticBodiesNeverMove)
   EXPECT_GT(world.contacts().size(), 0u);  // the disks did land on it
 }
 
+TEST(WorldApi, AMovedStaticBodyIsMetWhereItWasMoved)
+{
+  // The step poses a static body's outline once per edit, not every frame:
+  // an edit must move it. A box rests on a floor; the floor is moved 1 m
+  // down and the box must fall onto it there, not onto where it was.
+  constexpr double kDrop = 1.0;  // m
+  for (const bool soft : {true, false})
+  {
+    World world;
+    WorldSettings s = world.settings();
+    s.soft_step = soft;
+    world.set_settings(s);
+    const BodyId floor = world.add_body(scenes::make_static_box(10.0, 1.0, {0.0, -0.5}, 0.0));
+    const BodyId box = world.add_body(scenes::make_box(1.0, 1.0, 1.0, {0.0, 0.5}), Material{0.0, 0.5, 0.5});
+    world.step(30);
+    ASSERT_GT(world.contacts().size(), 0u) << "the box rests on the floor";
+    world.set_body_state(floor, Vec2{0.0, -0.5 - kDrop}, 0.0, Vec2{}, 0.0);
+    world.step();
+    EXPECT_EQ(world.contacts().size(), 0u) << (soft ? "soft" : "fx2d") << ": the floor moved away";
+    world.step(90);  // 1.5 s: it falls 1 m in 0.45 s, then settles
+    const Body& b = world.body(box);
+    EXPECT_NEAR(b.position().y, 0.5 - kDrop, 0.01) << (soft ? "soft" : "fx2d") << ": resting on the moved floor";
+    EXPECT_LT(std::abs(b.velocity().y), 0.05) << (soft ? "soft" : "fx2d");
+    EXPECT_GT(world.contacts().size(), 0u) << (soft ? "soft" : "fx2d");
+  }
+}
+
 TEST(WorldApi, KinematicBodiesKeepTheirVelocity)
 {
   World world;

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace collision2d
 {
@@ -91,19 +92,26 @@ void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<Bod
 
 void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
 {
-  // Each box checked once, then one branch per pair, not one per comparison:
-  // in a frame's few boxes the outcomes change as bodies meet and part.
-  std::array<bool, kAllPairsBoxes> usable{};
-  for (std::size_t i = 0; i < boxes.size(); ++i)
+  // Each box checked once, an unusable one kept as an empty box (lo above
+  // hi) that overlaps nothing; then one branch per pair, not one per
+  // comparison: in a frame's few boxes the outcomes change as bodies meet and part.
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::array<double, kAllPairsBoxes> lo_x, lo_y, hi_x, hi_y;
+  const std::size_t n = boxes.size();
+  for (std::size_t i = 0; i < n; ++i)
   {
-    usable[i] = detail::is_usable(boxes[i]);
+    const bool usable = detail::is_usable(boxes[i]);
+    lo_x[i] = usable ? boxes[i].lo.x : kInf;
+    lo_y[i] = usable ? boxes[i].lo.y : kInf;
+    hi_x[i] = usable ? boxes[i].hi.x : -kInf;
+    hi_y[i] = usable ? boxes[i].hi.y : -kInf;
   }
   // In (i, j) order: sorted as the grid's pairs end.
-  for (std::size_t i = 0; i < boxes.size(); ++i)
+  for (std::size_t i = 0; i < n; ++i)
   {
-    for (std::size_t j = i + 1; j < boxes.size(); ++j)
+    for (std::size_t j = i + 1; j < n; ++j)
     {
-      if (usable[i] & usable[j] & boxes[i].overlaps(boxes[j]))
+      if ((lo_x[i] <= hi_x[j]) & (lo_x[j] <= hi_x[i]) & (lo_y[i] <= hi_y[j]) & (lo_y[j] <= hi_y[i]))
       {
         pairs.emplace_back(i, j);
       }

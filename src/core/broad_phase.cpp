@@ -96,22 +96,19 @@ void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>
   // hi) that overlaps nothing; then one branch per pair, not one per
   // comparison: in a frame's few boxes the outcomes change as bodies meet and part.
   constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::array<double, kAllPairsBoxes> lo_x, lo_y, hi_x, hi_y;
+  constexpr Aabb kEmpty{{kInf, kInf}, {-kInf, -kInf}};
+  std::array<Aabb, kAllPairsBoxes> box;
   const std::size_t n = boxes.size();
   for (std::size_t i = 0; i < n; ++i)
   {
-    const bool usable = detail::is_usable(boxes[i]);
-    lo_x[i] = usable ? boxes[i].lo.x : kInf;
-    lo_y[i] = usable ? boxes[i].lo.y : kInf;
-    hi_x[i] = usable ? boxes[i].hi.x : -kInf;
-    hi_y[i] = usable ? boxes[i].hi.y : -kInf;
+    box[i] = detail::is_usable(boxes[i]) ? boxes[i] : kEmpty;
   }
   // In (i, j) order: sorted as the grid's pairs end.
   for (std::size_t i = 0; i < n; ++i)
   {
     for (std::size_t j = i + 1; j < n; ++j)
     {
-      if ((lo_x[i] <= hi_x[j]) & (lo_x[j] <= hi_x[i]) & (lo_y[i] <= hi_y[j]) & (lo_y[j] <= hi_y[i]))
+      if (box[i].overlaps(box[j]))
       {
         pairs.emplace_back(i, j);
       }

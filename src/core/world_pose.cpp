@@ -19,8 +19,11 @@ void WorldImpl::pose_bodies()
     return;
   }
   // Only an edit changes a body's vertex count, and the bodies' records are
-  // cold here: the offsets are laid out again after one.
-  if (posed_offset_.size() != n || posed_version_ != version_)
+  // cold here: the offsets are laid out again after one. Only an edit moves
+  // a static body too: without one since the last layout, whose pass posed
+  // every body, a static outline stands (a ground posed once, not every frame).
+  const bool edited = posed_offset_.size() != n || posed_version_ != version_;
+  if (edited)
   {
     posed_offset_.resize(n);
     std::size_t total = 0;
@@ -32,13 +35,9 @@ void WorldImpl::pose_bodies()
     posed_vertices_.resize(total);
     posed_version_ = version_;
   }
-  // Only an edit moves a static body: its outline stands from the last full
-  // pass at this version (a ground posed once, not every frame).
-  const bool statics_posed = statics_posed_version_ == version_;
-  workers_.parallel_for(n, kMinSharedBodies, [this, statics_posed](std::size_t begin, std::size_t end) {
-    pose_range(begin, end, statics_posed);
+  workers_.parallel_for(n, kMinSharedBodies, [this, edited](std::size_t begin, std::size_t end) {
+    pose_range(begin, end, !edited);
   });
-  statics_posed_version_ = version_;
 }
 
 void WorldImpl::pose_range(std::size_t begin, std::size_t end, bool skip_static)

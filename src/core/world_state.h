@@ -91,8 +91,6 @@ struct WorldState
   std::vector<std::size_t> posed_offset_;
   std::vector<Vec2> posed_vertices_;
   std::uint64_t posed_version_ = 0;       ///< version_ when posed_offset_ was laid out
-  /// version_ when every body was last posed (pose_bodies); none yet: a value no version takes.
-  std::uint64_t statics_posed_version_ = ~std::uint64_t{0};
   std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
   std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in contacts_
   std::vector<double> partial_max_;      ///< max_over's result of each part

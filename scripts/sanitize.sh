@@ -6,7 +6,8 @@
 #    unit test through ctest (-fno-sanitize-recover=all, halt_on_error). The
 #    standard library checks every index too (_GLIBCXX_ASSERTIONS): a read one
 #    past a vector's end within its capacity is no heap overflow to ASan.
-#  thread: ThreadSanitizer, the tests that step a world on 2 and 4 workers. A
+#  thread: ThreadSanitizer, the tests that step a world on 2 and 4 workers
+#    and those of the worker pool itself. A
 #    race between workers (two writing one body, a read against a write)
 #    changes no bit of a trajectory, so no golden hash can show it.
 #
@@ -27,6 +28,7 @@ THREAD_TESTS=(
   "collision2d_test_world_sleeping:WorldSleeping.PilesWokenOneByOneMatchFullPasses"
   "collision2d_test_world_resume:WorldResume.ContactsInAnyOrderResumeBitForBitOnSeveralWorkers"
   "collision2d_test_world_out_of_memory:WorldOutOfMemory.FirstStepOnTwoWorkersPutsTheWorldBack"
+  "collision2d_test_worker_pool:WorkerPool.*"
 )
 
 log() { printf '[sanitize %s] %s\n' "$MODE" "$*" >&2; }

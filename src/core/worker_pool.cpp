@@ -61,6 +61,9 @@ constexpr int kSpinsBeforeYield = 64;
 /// a millisecond), since a worker woken from sleep starts its share late and
 /// the others wait for it at the next sync. Between frames it sleeps.
 constexpr int kYieldsBeforeSleep = 1024;
+/// claims_' low bits: shares left to take (fewer than there are workers).
+constexpr unsigned kShareBits = 16;
+constexpr std::uint64_t kShareMask = (std::uint64_t{1} << kShareBits) - 1;
 
 /// Thrown at a sync() whose team lost a member to an exception: it ends the
 /// other members' shares; run() passes on the member's exception instead.
@@ -135,13 +138,17 @@ void WorkerPool::range(std::size_t index, std::size_t& begin, std::size_t& end) 
   end = count_ * (index + 1) / parts;
 }
 
-void WorkerPool::run(std::size_t count, Job job, void* context)
+void WorkerPool::run(std::size_t count, Job job, void* context) { start(count, job, context, false); }
+
+void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
 {
   if (threads_.empty() || count < 2)
   {
     job(context, 0, count);
     return;
   }
+  const std::size_t others = threads_.size();
+  const std::size_t number = generation_.load(std::memory_order_relaxed) / 2 + 1;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = job;
@@ -150,12 +157,21 @@ void WorkerPool::run(std::size_t count, Job job, void* context)
     failed_.store(false, std::memory_order_relaxed);
     failure_ = nullptr;
     arrived_.store(0, std::memory_order_relaxed);  // a stopped team may have left some counted
-    pending_.store(threads_.size(), std::memory_order_relaxed);
-    generation_.fetch_add(1, std::memory_order_release);
+    pending_.store(team ? others : 0, std::memory_order_relaxed);
+    shares_done_.store(0, std::memory_order_relaxed);
+    claims_.store(team ? 0 : static_cast<std::uint64_t>(number) << kShareBits | others, std::memory_order_release);
+    generation_.store(2 * number + (team ? 1 : 0), std::memory_order_release);
   }
   start_.notify_all();
   run_share(0);
-  const auto finished = [this] { return pending_.load(std::memory_order_acquire) == 0; };
+  if (!team)
+  {
+    take_shares(number);
+  }
+  const auto finished = [&] {
+    return team ? pending_.load(std::memory_order_acquire) == 0
+                : shares_done_.load(std::memory_order_acquire) == others;
+  };
   if (!spin_until(finished))
   {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -169,6 +185,30 @@ void WorkerPool::run(std::size_t count, Job job, void* context)
       failure.swap(failure_);
     }
     std::rethrow_exception(failure);
+  }
+}
+
+void WorkerPool::take_shares(std::size_t number)
+{
+  // A share taken while the number is this job's cannot outlive the job:
+  // run() waits for every share taken, so the job's fields stay put.
+  const std::uint64_t tag = static_cast<std::uint64_t>(number) << kShareBits;
+  const std::size_t shares = threads_.size() + 1;
+  std::uint64_t claims = claims_.load(std::memory_order_acquire);
+  while ((claims & ~kShareMask) == tag && (claims & kShareMask) != 0)
+  {
+    if (!claims_.compare_exchange_weak(claims, claims - 1, std::memory_order_acq_rel, std::memory_order_acquire))
+    {
+      continue;
+    }
+    run_share(shares - static_cast<std::size_t>(claims & kShareMask));
+    if (shares_done_.fetch_add(1, std::memory_order_acq_rel) + 1 == shares - 1)
+    {
+      // Under the lock, so a caller about to sleep cannot miss it.
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_.notify_one();
+    }
+    claims = claims_.load(std::memory_order_acquire);
   }
 }
 
@@ -211,6 +251,11 @@ void WorkerPool::serve(std::size_t index, std::size_t seen)
     }
     seen = generation_.load(std::memory_order_relaxed);
     lock.unlock();
+    if (seen % 2 == 0)
+    {
+      take_shares(seen / 2);
+      continue;
+    }
     run_share(index);
     if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1)
     {

@@ -1,14 +1,18 @@
 // Internal to the core: the World's worker threads. A job over [0, count) is
-// cut into one contiguous range per worker; the calling thread takes the
-// first range, so one worker means no thread at all. A job writes only to
-// its own range's slots, so the result does not depend on the worker count.
-// An exception a job throws on any worker (running out of memory) comes out
-// of run() on the calling thread once every worker has stopped.
+// cut into one contiguous share per worker; the calling thread takes the
+// first, so one worker means no thread at all. The other shares go to
+// whoever asks first: a worker that sleeps, or wakes late, leaves its share
+// to the calling thread instead of holding it up. A job writes only to its
+// own items' slots, so the result depends neither on the worker count nor
+// on which thread ran which share.
+// An exception a job throws on any thread (running out of memory) comes out
+// of run() on the calling thread once every share taken has finished.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <mutex>
 #include <thread>
@@ -38,8 +42,9 @@ public:
   /// are done, rethrowing the first exception any of them threw.
   void run(std::size_t count, Job job, void* context) override;
   /// Runs `job` once on every worker at the same time, as job(context, w, w + 1)
-  /// for worker w; inside it the workers may meet at sync().
-  void run_team(Job job, void* context) { run(static_cast<std::size_t>(workers()), job, context); }
+  /// for worker w; inside it the workers may meet at sync(). Each worker runs
+  /// its own share, so this waits for every one.
+  void run_team(Job job, void* context) { start(static_cast<std::size_t>(workers()), job, context, true); }
   /// run_team for any callable: f(w) on every worker w at the same time.
   template <class F>
   void run_team(F&& f)
@@ -76,25 +81,36 @@ public:
   void sync();
 
 private:
+  /// run() and run_team(): a `team` job's shares are not taken over.
+  void start(std::size_t count, Job job, void* context, bool team);
   void stop();
-  /// A thread's loop: waits for a job newer than `seen`, takes its range.
+  /// A thread's loop: waits for a job newer than `seen`, takes its share.
   void serve(std::size_t index, std::size_t seen);
   /// Spins briefly until done() holds; returns whether it did (else the caller sleeps).
   template <class Done>
   static bool spin_until(Done done);
-  /// The range of [0, count_) that worker `index` takes.
+  /// Share `index` of [0, count_): worker `index`'s, unless another takes it.
   void range(std::size_t index, std::size_t& begin, std::size_t& end) const;
-  /// Runs one worker's share of the current job, keeping what it throws.
+  /// Runs share `index` of the current job, keeping what it throws.
   void run_share(std::size_t index);
+  /// Runs the shares after the first of job `number` that nobody has taken
+  /// yet, one at a time, until none is left or that job is over.
+  void take_shares(std::size_t number);
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;
   std::condition_variable start_;
   std::condition_variable done_;
-  /// Bumped for each job (under the mutex); threads wait for a new one,
-  /// spinning a little before they sleep, as the caller does for pending_.
+  /// Set for each job (under the mutex) to twice its number, plus one for a
+  /// team job; threads wait for a new one, spinning a little before they
+  /// sleep, as the caller does for the job's end.
   std::atomic<std::size_t> generation_{0};
-  std::atomic<std::size_t> pending_{0};  ///< threads still working on the current job
+  std::atomic<std::size_t> pending_{0};  ///< team job: threads still working on it
+  /// Other jobs: the job's number (above kShareBits) and how many of its
+  /// shares after the first are left to take (below). A thread takes one by
+  /// counting it down while the number is still that of its job.
+  std::atomic<std::uint64_t> claims_{0};
+  std::atomic<std::size_t> shares_done_{0};  ///< shares after the first finished
   bool quitting_ = false;
   Job job_ = nullptr;
   void* context_ = nullptr;

@@ -313,4 +313,35 @@ frame, so the grid pairs all of them each frame, where Box2D queries again
 only the boxes that moved out. Memory bandwidth is not the limit: two
 persistent threads streaming 1 to 256 MB of arrays took 0.47 to 0.52 of
 one thread's time.
+
+A twenty-eighth, on the same host (commit ac3d9f0, and trials not kept;
+scratch drivers and timers, not committed). In the report at b139ffe two
+workers stepped the rain of 1000 bodies in 0.50 to 0.70 ms a frame against
+0.41 to 0.61 on one. A timer around the contact publish, that frame's only
+shared stage (1024 to 1489 points), read 80 to 93 us a frame on 2 workers
+against 17 to 18 on one thread: the worker had gone to sleep since the
+last frame, and the caller waited for it to be scheduled again. Since
+ac3d9f0 the shares after the caller's are taken by whichever thread asks
+first, so the caller takes a sleeping worker's share itself: 35 to 36 us.
+`collision2d_scaling_bench` on 2 workers, whole processes alternating with
+the build before, median ratios: rain of 1000 0.870 (41 pairs), 2000 0.984,
+3000 0.946, 1e4 0.993, pyramids of 990 and 9870 boxes 1.003 and 0.996.
+Tried first and not kept: no sharing below 2048 or 4096 points instead
+(the rain of 1000 0.812 and 0.847, but the rain of 2000 1.041 and of 3000
+1.085 at 4096: a size rule trades one scene for another); waking the
+workers at the start of each step (0.984, 41 pairs); handing a job over
+through atomics alone, without the mutex, which cut an empty job's round
+trip from 0.7 to 1.0 us to 0.4 us but measured 0.999 on the rains of 1000
+and 3000 (41 pairs each; a cache line crosses between the two virtual CPUs
+in 140 to 170 ns, half a measured ping-pong); and, on the rain of 1e4,
+cutting each share into eight chunks that an idle thread may take: the
+caller's shares took 474 ms and the worker's 372 ms over 160 frames, but
+two worlds stepped in alternate frames in one process, chunks on and off,
+gave 1.011 and 1.001 (300 pairs each), the pyramid of 9870 boxes 1.001.
+There the two threads are simply slower together: the shared stages ran
+1.37 times as fast on 2 workers as on 1 in that run, and the serial rest
+took 0.46 ms of a 4.5 ms frame. A caution for every two-worker figure here: one
+worker stepping the rain of 1000 took 0.40 to 0.42 ms a frame while
+another process spun or yielded on the other virtual CPU, and 0.48 ms
+while that CPU idled.
 """

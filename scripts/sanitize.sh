@@ -7,9 +7,9 @@
 #    standard library checks every index too (_GLIBCXX_ASSERTIONS): a read one
 #    past a vector's end within its capacity is no heap overflow to ASan.
 #  thread: ThreadSanitizer, the tests that step a world on 2 and 4 workers
-#    and those of the worker pool itself. A
-#    race between workers (two writing one body, a read against a write)
-#    changes no bit of a trajectory, so no golden hash can show it.
+#    and those of the worker pool itself. A race between workers (two
+#    writing one body, a read against a write) changes no bit of a
+#    trajectory, so no golden hash can show it.
 #
 # Usage: scripts/sanitize.sh [address|thread]   (from anywhere; needs cmake,
 #        g++, gtest, eigen, yaml-cpp; no ROS). Re-running reuses the build in

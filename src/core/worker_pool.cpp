@@ -157,7 +157,6 @@ void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
     failed_.store(false, std::memory_order_relaxed);
     failure_ = nullptr;
     arrived_.store(0, std::memory_order_relaxed);  // a stopped team may have left some counted
-    pending_.store(team ? others : 0, std::memory_order_relaxed);
     shares_done_.store(0, std::memory_order_relaxed);
     claims_.store(team ? 0 : static_cast<std::uint64_t>(number) << kShareBits | others, std::memory_order_release);
     generation_.store(2 * number + (team ? 1 : 0), std::memory_order_release);
@@ -168,10 +167,7 @@ void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
   {
     take_shares(number);
   }
-  const auto finished = [&] {
-    return team ? pending_.load(std::memory_order_acquire) == 0
-                : shares_done_.load(std::memory_order_acquire) == others;
-  };
+  const auto finished = [&] { return shares_done_.load(std::memory_order_acquire) == others; };
   if (!spin_until(finished))
   {
     std::unique_lock<std::mutex> lock(mutex_);
@@ -202,13 +198,18 @@ void WorkerPool::take_shares(std::size_t number)
       continue;
     }
     run_share(shares - static_cast<std::size_t>(claims & kShareMask));
-    if (shares_done_.fetch_add(1, std::memory_order_acq_rel) + 1 == shares - 1)
-    {
-      // Under the lock, so a caller about to sleep cannot miss it.
-      std::lock_guard<std::mutex> lock(mutex_);
-      done_.notify_one();
-    }
+    finish_share();
     claims = claims_.load(std::memory_order_acquire);
+  }
+}
+
+void WorkerPool::finish_share()
+{
+  if (shares_done_.fetch_add(1, std::memory_order_acq_rel) + 1 == threads_.size())
+  {
+    // Under the lock, so a caller about to sleep cannot miss it.
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_.notify_one();
   }
 }
 
@@ -257,12 +258,7 @@ void WorkerPool::serve(std::size_t index, std::size_t seen)
       continue;
     }
     run_share(index);
-    if (pending_.fetch_sub(1, std::memory_order_acq_rel) == 1)
-    {
-      // Under the lock, so a caller about to sleep cannot miss it.
-      std::lock_guard<std::mutex> done_lock(mutex_);
-      done_.notify_one();
-    }
+    finish_share();
   }
 }
 

@@ -96,6 +96,8 @@ private:
   /// Runs the shares after the first of job `number` that nobody has taken
   /// yet, one at a time, until none is left or that job is over.
   void take_shares(std::size_t number);
+  /// Counts a share after the first as finished; the last one wakes run().
+  void finish_share();
 
   std::vector<std::thread> threads_;
   std::mutex mutex_;
@@ -105,12 +107,11 @@ private:
   /// team job; threads wait for a new one, spinning a little before they
   /// sleep, as the caller does for the job's end.
   std::atomic<std::size_t> generation_{0};
-  std::atomic<std::size_t> pending_{0};  ///< team job: threads still working on it
   /// Other jobs: the job's number (above kShareBits) and how many of its
   /// shares after the first are left to take (below). A thread takes one by
   /// counting it down while the number is still that of its job.
   std::atomic<std::uint64_t> claims_{0};
-  std::atomic<std::size_t> shares_done_{0};  ///< shares after the first finished
+  std::atomic<std::size_t> shares_done_{0};  ///< shares after the first finished (any job)
   bool quitting_ = false;
   Job job_ = nullptr;
   void* context_ = nullptr;

@@ -6,6 +6,10 @@
 #include <cmath>
 #include <ctime>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace collision2d
 {
 namespace bench
@@ -13,6 +17,11 @@ namespace bench
 namespace
 {
 constexpr double kMillisecondsPerSecond = 1e3;
+/// Blocks below this come from the heap, never from a mapping of their own
+/// (bytes; the largest value glibc accepts on 64-bit systems).
+constexpr int kMmapThresholdBytes = 32 * 1024 * 1024;
+/// Free memory at the heap's top is kept up to this much (bytes).
+constexpr int kTrimThresholdBytes = 64 * 1024 * 1024;
 
 double thread_cpu_seconds()
 {
@@ -47,6 +56,14 @@ FrameTime time_frames(Engine& engine, int frames)
   const double cpu_stop = thread_cpu_seconds();
   const double wall = std::chrono::duration<double>(stop - start).count();
   return FrameTime{wall * kMillisecondsPerSecond / frames, (cpu_stop - cpu_start) * kMillisecondsPerSecond / frames};
+}
+
+void fix_allocator_thresholds()
+{
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, kMmapThresholdBytes);
+  mallopt(M_TRIM_THRESHOLD, kTrimThresholdBytes);
+#endif
 }
 
 }  // namespace bench

@@ -24,5 +24,13 @@ struct FrameTime
 
 FrameTime time_frames(Engine& engine, int frames);
 
+/// Fixes the C library's thresholds for returning memory to the system, for
+/// the whole process. By default they move with what the process has freed
+/// so far, so a run that builds and frees a world per repetition either
+/// reuses its pages or maps and faults them in again, by the history of the
+/// process rather than by the engine's work (docs/performance.md). Call it
+/// before the first engine is built. Does nothing on other C libraries.
+void fix_allocator_thresholds();
+
 }  // namespace bench
 }  // namespace collision2d

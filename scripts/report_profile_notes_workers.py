@@ -377,5 +377,14 @@ published contacts 20.9%, rows 15.9% and manifolds 6.5%; each is reserved
 at twice its size so that a count creeping up seldom reallocates, and only
 the part in use is resident (the report's 5.4 kB per body). The base-100
 pyramid on one core ran 7.4 to 11.2 ms a frame in consecutive runs of one
-build today, so only the memory figures here are exact.
+build today, so only the memory figures here are exact. The tiny scenes
+have slow spells too. In the paired rounds of the report at f0abd37 our
+incline run (soft step 1x2, sleeping on) took 1.09 to 1.18 us a frame in 6
+of 7 rounds and 0.59 us in the seventh, and the incline and elastic_gas
+time targets read missed (0.60x and 0.69x in the report before). Rounds of
+the two builds alternated afterwards, 28 each (8fb374e and e69e437): ours
+took 0.59 us in 25 and 22 rounds and 0.97 to 1.16 us in the rest, Chipmunk
+7 0.98 us in 22 and 25 and 1.19 to 1.51 us in the rest. A spell slows one
+run and not the next (a tenth of a second later), ours by about 1.9 times
+and Chipmunk's by 1.2 to 1.5, and it is no build's doing.
 """

@@ -45,9 +45,9 @@ constexpr int kDefaultRepetitions = 5;
 constexpr double kStirrerRadius = 0.5;    // m
 constexpr double kStirrerHeight = 2.0;    // m above the ground's top
 constexpr double kStirrerInset = 2.0;     // m from the ground's left end
+constexpr double kStirrerSpeed = 1.0;     // m/s to the right: 20 s of frames stay clear of the pyramid
 /// What /proc/self/clear_refs takes to set VmHWM to the current resident set.
 constexpr char kResetPeakResident[] = "5";
-constexpr double kStirrerSpeed = 1.0;     // m/s to the right: 20 s of frames stay clear of the pyramid
 
 struct Arguments
 {

@@ -381,7 +381,8 @@ build today, so only the memory figures here are exact. The tiny scenes
 have slow spells too. In the paired rounds of the report at f0abd37 our
 incline run (soft step 1x2, sleeping on) took 1.09 to 1.18 us a frame in 6
 of 7 rounds and 0.59 us in the seventh, and the incline and elastic_gas
-time targets read missed (0.60x and 0.69x in the report before). Rounds of
+time targets read missed (0.60x and 0.69x in the report before, 0.627x
+and 0.713x in the one after, at 5d4b221). Rounds of
 the two builds alternated afterwards, 28 each (8fb374e and e69e437): ours
 took 0.59 us in 25 and 22 rounds and 0.97 to 1.16 us in the rest, Chipmunk
 7 0.98 us in 22 and 25 and 1.19 to 1.51 us in the rest. A spell slows one

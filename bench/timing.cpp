@@ -1,4 +1,4 @@
-// Wall-clock helpers (see timing.h).
+// Timing helpers (see timing.h).
 #include "timing.h"
 
 #include <algorithm>

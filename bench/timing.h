@@ -1,4 +1,5 @@
-// Wall-clock helpers shared by the benchmarks.
+// Timing helpers shared by the benchmarks: clocks and medians, and the
+// allocator setting that keeps repeated builds of a world comparable.
 #pragma once
 
 #include <vector>

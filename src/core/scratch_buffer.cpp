@@ -2,6 +2,8 @@
 #include "scratch_buffer.h"
 
 #include <cstdint>
+#include <new>
+#include <utility>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -27,6 +29,60 @@ void prefault_pages(const void* begin, const void* end)
   static_cast<void>(begin);
   static_cast<void>(end);
 #endif
+}
+
+namespace
+{
+/// The block's alignment: a cache line, more than any frame buffer's type asks.
+constexpr std::align_val_t kBlockAlignment{64};
+}  // namespace
+
+FrameBlock::FrameBlock(FrameBlock&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)),
+      capacity_(std::exchange(other.capacity_, 0)),
+      mapped_(std::exchange(other.mapped_, 0))
+{
+}
+
+FrameBlock& FrameBlock::operator=(FrameBlock&& other) noexcept
+{
+  if (this != &other)
+  {
+    release();
+    data_ = std::exchange(other.data_, nullptr);
+    capacity_ = std::exchange(other.capacity_, 0);
+    mapped_ = std::exchange(other.mapped_, 0);
+  }
+  return *this;
+}
+
+FrameBlock::~FrameBlock() { release(); }
+
+void FrameBlock::release() noexcept
+{
+  if (data_ != nullptr)
+  {
+    ::operator delete[](data_, kBlockAlignment);
+  }
+  data_ = nullptr;
+  capacity_ = 0;
+  mapped_ = 0;
+}
+
+unsigned char* FrameBlock::take(std::size_t bytes)
+{
+  if (bytes > capacity_)
+  {
+    release();  // the old block goes first: the two are never resident together
+    data_ = static_cast<unsigned char*>(::operator new[](2 * bytes, kBlockAlignment));
+    capacity_ = 2 * bytes;
+  }
+  if (bytes > mapped_)
+  {
+    prefault_pages(data_ + mapped_, data_ + bytes);
+    mapped_ = bytes;
+  }
+  return data_;
 }
 
 }  // namespace detail

@@ -75,6 +75,83 @@ void resize_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
   v.resize(n);
 }
 
+/// One block of memory that per-frame buffers whose lives never overlap
+/// take in turn (the narrow phase's manifolds, dead once detection has read
+/// them, then the soft step's rows): resident once, at the larger one's
+/// size, not at their sum. Each user places its FrameSpan in the block
+/// again before each use; a block that must grow frees the old one first,
+/// which leaves the other users' spans pointing at freed memory, so they
+/// must be dead by then. A copy starts empty (its users place their spans
+/// again before they read them), so a copied World does not copy scratch.
+class FrameBlock
+{
+public:
+  FrameBlock() = default;
+  FrameBlock(const FrameBlock& /*other*/) {}
+  FrameBlock& operator=(const FrameBlock& /*other*/) { return *this; }
+  FrameBlock(FrameBlock&& other) noexcept;
+  FrameBlock& operator=(FrameBlock&& other) noexcept;
+  ~FrameBlock();
+  /// At least `bytes` bytes, aligned for any frame buffer; the bytes held
+  /// before stay where the block does not grow. As resize_to_overwrite:
+  /// room for twice `bytes` when it grows, and the pages not yet written
+  /// mapped in one request (prefault_pages).
+  unsigned char* take(std::size_t bytes);
+  std::size_t capacity() const { return capacity_; }
+
+private:
+  void release() noexcept;
+  unsigned char* data_ = nullptr;
+  std::size_t capacity_ = 0;
+  std::size_t mapped_ = 0;  ///< bytes from the start already mapped
+};
+
+/// n plain T in a FrameBlock, from `at` (see FrameBlock: placed again
+/// before each use; a copy is empty).
+template <typename T>
+class FrameSpan
+{
+  static_assert(std::is_trivially_copyable<T>::value && std::is_trivially_destructible<T>::value,
+                "a frame span holds plain data");
+
+public:
+  FrameSpan() = default;
+  FrameSpan(const FrameSpan& /*other*/) {}
+  FrameSpan& operator=(const FrameSpan& /*other*/)
+  {
+    clear();
+    return *this;
+  }
+  FrameSpan(FrameSpan&& other) noexcept = default;
+  FrameSpan& operator=(FrameSpan&& other) noexcept = default;
+  ~FrameSpan() = default;
+
+  /// Holds n elements from `at` (aligned for T), to be overwritten.
+  void place(unsigned char* at, std::size_t n)
+  {
+    data_ = reinterpret_cast<T*>(at);
+    size_ = n;
+  }
+  /// Holds n elements from the start of `block`, to be overwritten.
+  void place_in(FrameBlock& block, std::size_t n) { place(block.take(n * sizeof(T)), n); }
+  void clear()
+  {
+    data_ = nullptr;
+    size_ = 0;
+  }
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  T* data() { return data_; }
+  T& operator[](std::size_t k) { return data_[k]; }
+  const T& operator[](std::size_t k) const { return data_[k]; }
+  T* begin() { return data_; }
+  T* end() { return data_ + size_; }
+
+private:
+  T* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 /// Room for n elements in `list` without changing what it holds; one that
 /// must grow takes room for twice n, so a count that creeps up reallocates
 /// rarely. For a change that must not run out of memory halfway: room

@@ -175,7 +175,7 @@ void fill_manifold(Batch& r, int j, const ContactPoints& points, std::size_t fir
 
 /// The padding lanes of a colour's last batch of one kind.
 template <class Batch>
-void pad_batches(const RowRange& range, FrameBuffer<Batch>& batches, std::uint32_t spare)
+void pad_batches(const RowRange& range, FrameSpan<Batch>& batches, std::uint32_t spare)
 {
   for (std::size_t slot = range.lanes; slot < (range.end - range.begin) * kRowLanes; ++slot)
   {
@@ -199,7 +199,7 @@ std::size_t SoftRows::place_batches(Kind kind)
 }
 
 void SoftRows::pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, bool friction,
-                    WorkerPool& workers)
+                    WorkerPool& workers, FrameBlock& block)
 {
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
@@ -212,8 +212,13 @@ void SoftRows::pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, 
   colour_manifolds(velocity.size());                      // soft_rows_colour.cpp
   // Each colour's rows of each kind in whole batches, the last one padded.
   // Every lane has its own slot, so the workers can fill them in any split.
-  resize_to_overwrite(rows_, place_batches(Kind::Pair));  // the lanes below write every slot
-  resize_to_overwrite(singles_, place_batches(Kind::Single));
+  // Both kinds in one stretch of the block (the lanes below write every slot).
+  const std::size_t pair_batches = place_batches(Kind::Pair);
+  const std::size_t single_batches = place_batches(Kind::Single);
+  const std::size_t pair_bytes = pair_batches * sizeof(RowBatch);
+  unsigned char* const at = block.take(pair_bytes + single_batches * sizeof(RowSingle));
+  rows_.place(at, pair_batches);
+  singles_.place(at + pair_bytes, single_batches);
   lane_of_.assign(points.size(), kNoLane);
   place_rows(points, friction, workers);
   for (std::size_t colour = 0; colour < used_colours_; ++colour)
@@ -327,7 +332,7 @@ namespace
 {
 /// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches of one kind.
 template <class Batch, class F>
-void each_batch(const RowRange& c, FrameBuffer<Batch>& rows, std::size_t part, std::size_t parts, F f)
+void each_batch(const RowRange& c, FrameSpan<Batch>& rows, std::size_t part, std::size_t parts, F f)
 {
   const std::size_t n = c.end - c.begin;
   for (std::size_t r = c.begin + n * part / parts; r < c.begin + n * (part + 1) / parts; ++r)

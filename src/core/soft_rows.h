@@ -153,8 +153,10 @@ public:
   /// set), the highest first; the lanes are filled by the workers. Below
   /// kMinColouredManifolds they are only ordered, the highest first.
   /// `velocity` gains one spare body at its end for the padding lanes.
+  /// The rows take `block` (FrameBlock: nothing else in it is alive from
+  /// here until the contacts are published).
   void pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, bool friction,
-            WorkerPool& workers);
+            WorkerPool& workers, FrameBlock& block);
   /// Colours in use: the greedy colouring takes the lowest free one, so
   /// they are 0 .. colour_count() - 1.
   std::size_t colour_count() const { return used_colours_; }
@@ -283,8 +285,8 @@ private:
     return {&batch.point[at % 2], batch.flags.sliding[at % 2], static_cast<int>(at / 2 % kRowLanes)};
   }
 
-  FrameBuffer<RowBatch> rows_;
-  FrameBuffer<RowSingle> singles_;
+  FrameSpan<RowBatch> rows_;  ///< in the World's frame block, then singles_ after them
+  FrameSpan<RowSingle> singles_;
   std::vector<RowColour> colours_;
   std::size_t used_colours_ = 0;
   std::vector<std::size_t> overflow_;    ///< manifolds no colour could take, solved last in order

@@ -168,7 +168,7 @@ void WorldImpl::find_mover_pairs()
   // workers (each writes its own pairs' slots); then, in pair order, what
   // each pair adds and where; then the points, split across the workers
   // again. The result is the same for any number of workers.
-  resize_to_overwrite(manifolds_, pairs_.size());  // collide_range writes every slot
+  manifolds_.place_in(frame_block_, pairs_.size());  // collide_range writes every slot
   resize_to_overwrite(collided_, pairs_.size());
   kept_from_.assign(pairs_.size(), kNotKept);
   workers_.parallel_for(pairs_.size(), kMinSharedPairs,

@@ -56,7 +56,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   prepare_soft_bodies();
   if (rows_on())
   {
-    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_);  // soft_rows.cpp
+    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_, frame_block_);  // soft_rows.cpp
   }
   find_bounce_points();                                   // world_soft_restitution.cpp
   // 3. Substeps.

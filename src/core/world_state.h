@@ -81,7 +81,11 @@ struct WorldState
   std::vector<Aabb> boxes_;
   std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)
   double margin_ = 0.0;               ///< this detection's speculative margin (m)
-  FrameBuffer<Manifold> manifolds_;
+  /// Scratch that buffers with lives apart take in turn (FrameBlock): the
+  /// narrow phase's manifolds until detection has read them, then the soft
+  /// step's rows until the contacts are published.
+  FrameBlock frame_block_;
+  FrameSpan<Manifold> manifolds_;
   FrameBuffer<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
   /// Soft step: each pair's first cached contact when its manifold is kept, else kNotKept.
   std::vector<std::size_t> kept_from_;

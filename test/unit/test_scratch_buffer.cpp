@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "scratch_buffer.h"
@@ -66,6 +67,63 @@ TEST(ScratchBuffer, GrowingPastCapacityTakesRoomForTwiceTheCount)
     buffer[k] = pattern(k);  // every new page writable
   }
   EXPECT_EQ(buffer[kElements - 1], pattern(kElements - 1));
+}
+
+TEST(ScratchBuffer, BuffersTakingABlockInTurnShareItsMemory)
+{
+  FrameBlock block;
+  FrameSpan<std::uint64_t> first;
+  first.place_in(block, kElements / 2);
+  for (std::size_t k = 0; k < first.size(); ++k)
+  {
+    first[k] = pattern(k);
+  }
+  const std::size_t capacity = block.capacity();
+  ASSERT_GE(capacity, kElements * sizeof(std::uint64_t));  // room for twice the bytes
+  // A second buffer within the capacity takes the same bytes, as they are:
+  // the block holds the larger of the two, not their sum.
+  FrameSpan<std::uint32_t> second;
+  second.place_in(block, kElements);
+  EXPECT_EQ(static_cast<void*>(second.data()), static_cast<void*>(first.data()));
+  EXPECT_EQ(block.capacity(), capacity);
+  for (std::size_t k = 0; k < kElements / 2; ++k)
+  {
+    ASSERT_EQ(first[k], pattern(k)) << "element " << k;
+  }
+}
+
+TEST(ScratchBuffer, AGrowingBlockTakesRoomForTwiceAndMapsWhatItHands)
+{
+  FrameBlock block;
+  block.take(64);
+  unsigned char* bytes = block.take(kElements);
+  EXPECT_GE(block.capacity(), 2 * kElements);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(bytes) % 64, 0U) << "aligned for any frame buffer";
+  for (std::size_t k = 0; k < kElements; ++k)
+  {
+    bytes[k] = static_cast<unsigned char>(k);  // every byte handed out is writable
+  }
+  EXPECT_EQ(bytes[kElements - 1], static_cast<unsigned char>(kElements - 1));
+}
+
+TEST(ScratchBuffer, ACopiedBlockAndItsSpansStartEmpty)
+{
+  FrameBlock block;
+  FrameSpan<double> span;
+  span.place_in(block, 100);
+  span[99] = 1.5;
+  const FrameBlock block_copy = block;  // NOLINT(performance-unnecessary-copy-initialization): the copy is the test
+  FrameSpan<double> span_copy = span;
+  EXPECT_EQ(block_copy.capacity(), 0U);
+  EXPECT_TRUE(span_copy.empty());
+  EXPECT_EQ(span_copy.data(), nullptr);
+  span_copy = span;
+  EXPECT_TRUE(span_copy.empty()) << "assigning leaves it empty too";
+  EXPECT_EQ(span[99], 1.5) << "the original keeps its block";
+  FrameBlock moved = std::move(block);
+  EXPECT_GE(moved.capacity(), 100 * sizeof(double));
+  EXPECT_EQ(block.capacity(), 0U);  // NOLINT(bugprone-use-after-move): a moved-from block is empty
+  EXPECT_EQ(span[99], 1.5) << "the bytes moved with the block";
 }
 
 }  // namespace

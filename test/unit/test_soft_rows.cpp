@@ -120,6 +120,7 @@ void solve_by_points(Scene& s, bool warm, bool use_bias)
 /// The same passes on the batches.
 void solve_by_rows(Scene& s, bool warm, bool use_bias)
 {
+  detail::FrameBlock block;
   detail::SoftRows rows;
   detail::WorkerPool workers;
   rows.expect_points(s.points.size());
@@ -127,7 +128,7 @@ void solve_by_rows(Scene& s, bool warm, bool use_bias)
   {
     rows.note_manifold(k, s.points[k], nullptr, Vec2{0.0, 1.0});
   }
-  rows.pack(s.points, s.bodies, true, workers);
+  rows.pack(s.points, s.bodies, true, workers, block);
   ASSERT_EQ(rows.colour_count(), 1u) << "disjoint pairs share one colour";
   ASSERT_TRUE(rows.others(0).empty()) << "every manifold is in a batch";
   if (warm)
@@ -191,7 +192,8 @@ TEST(SoftRows, OnePointBatchesGiveThePointVerbsBits)
 
 /// Notes every point of `s` as a one-point manifold, the first `count`
 /// only, and packs them.
-void pack_first(detail::SoftRows& rows, Scene& s, std::size_t count, detail::WorkerPool& workers)
+void pack_first(detail::SoftRows& rows, Scene& s, std::size_t count, detail::WorkerPool& workers,
+                detail::FrameBlock& block)
 {
   rows.expect_points(s.points.size());
   for (std::size_t k = 0; k < s.points.size(); ++k)
@@ -205,7 +207,7 @@ void pack_first(detail::SoftRows& rows, Scene& s, std::size_t count, detail::Wor
       rows.note_no_manifold(k);
     }
   }
-  rows.pack(s.points, s.bodies, true, workers);
+  rows.pack(s.points, s.bodies, true, workers, block);
   rows.drop_spare_body(s.bodies);
 }
 
@@ -216,15 +218,16 @@ TEST(SoftRows, TwoManifoldsGoTopDownWithoutColoursAndLeaveNoneBehind)
   {
     s.points[k].point = Vec2{0.0, static_cast<double>(k)};  // the last is the highest
   }
+  detail::FrameBlock block;
   detail::SoftRows rows;
   detail::WorkerPool workers;
   // 14 disjoint manifolds: one colour, three full batches and two manifolds
   // left to the point verbs.
-  pack_first(rows, s, kManifolds - 1, workers);
+  pack_first(rows, s, kManifolds - 1, workers, block);
   ASSERT_EQ(rows.colour_count(), 1u);
   EXPECT_EQ(rows.others(0).size(), 2u);
   // Two: no colours, no rows, the higher first.
-  pack_first(rows, s, 2, workers);
+  pack_first(rows, s, 2, workers, block);
   EXPECT_EQ(rows.colour_count(), 0u);
   EXPECT_EQ(rows.coloured(), 0u);
   EXPECT_EQ(rows.overflow(), (std::vector<std::size_t>{1, 0}));
@@ -233,7 +236,7 @@ TEST(SoftRows, TwoManifoldsGoTopDownWithoutColoursAndLeaveNoneBehind)
     EXPECT_EQ(rows.normal_impulse_of(k), nullptr) << "point " << k << " has no row";
   }
   // All 15 again: the colour holds its batches only, nothing left from before.
-  pack_first(rows, s, kManifolds, workers);
+  pack_first(rows, s, kManifolds, workers, block);
   ASSERT_EQ(rows.colour_count(), 1u);
   EXPECT_TRUE(rows.others(0).empty());
   EXPECT_TRUE(rows.overflow().empty());
@@ -281,6 +284,7 @@ Scene crowded_scene(std::uint32_t seed, std::size_t points, int heights)
 struct Packed
 {
   Scene scene;
+  detail::FrameBlock block;  ///< holds the rows
   detail::SoftRows rows;
   std::vector<std::ptrdiff_t> lanes;  ///< each point's impulse slot from the lowest, -1 without a row
 };
@@ -302,7 +306,7 @@ void pack_crowded(Packed& out, const Scene& s, std::size_t active_every, int wor
       out.rows.note_no_manifold(k);
     }
   }
-  out.rows.pack(out.scene.points, out.scene.bodies, true, pool);
+  out.rows.pack(out.scene.points, out.scene.bodies, true, pool, out.block);
   const double* lowest = nullptr;
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {

@@ -115,6 +115,7 @@ class FrameSpan
                 "a frame span holds plain data");
 
 public:
+  using value_type = T;
   FrameSpan() = default;
   FrameSpan(const FrameSpan& /*other*/) {}
   FrameSpan& operator=(const FrameSpan& /*other*/)

@@ -23,8 +23,6 @@ bool pair_less(const WorldContact& c, BodyId a, BodyId b)
 
 std::size_t WorldImpl::place_pair_rows(bool cached)
 {
-  pair_rows_.resize(pairs_.size() + 1);
-  pair_cache_.resize(pairs_.size());
   if (workers_.workers() > 1 && pairs_.size() >= kMinSharedPairs)
   {
     place_pairs_in_parts(cached);

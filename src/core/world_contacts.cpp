@@ -2,6 +2,7 @@
 // published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
 #include <atomic>
+#include <type_traits>
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
@@ -168,11 +169,28 @@ void WorldImpl::find_mover_pairs()
   // workers (each writes its own pairs' slots); then, in pair order, what
   // each pair adds and where; then the points, split across the workers
   // again. The result is the same for any number of workers.
-  manifolds_.place_in(frame_block_, pairs_.size());  // collide_range writes every slot
-  resize_to_overwrite(collided_, pairs_.size());
-  kept_from_.assign(pairs_.size(), kNotKept);
+  place_pair_buffers(pairs_.size());
   workers_.parallel_for(pairs_.size(), kMinSharedPairs,
                         [this](std::size_t begin, std::size_t end) { collide_range(begin, end); });
+}
+
+void WorldImpl::place_pair_buffers(std::size_t n)
+{
+  // One taking for all, the widest elements first so each part is aligned:
+  // a second taking could move the block under the parts placed before it.
+  constexpr std::size_t kIndex = sizeof(std::size_t);
+  static_assert(sizeof(Manifold) % kIndex == 0, "the indices after the manifolds stay aligned");
+  unsigned char* at = frame_block_.take(n * sizeof(Manifold) + (3 * n + 1) * kIndex + n * sizeof(Collided));
+  const auto place = [&at](auto& span, std::size_t count) {
+    span.place(at, count);
+    at += count * sizeof(typename std::decay_t<decltype(span)>::value_type);
+  };
+  place(manifolds_, n);  // collide_range writes every slot it reads
+  place(kept_from_, n);
+  place(pair_rows_, n + 1);  // place_pair_rows writes them all
+  place(pair_cache_, n);     // ... and those of the pairs that hit, the only ones read
+  place(collided_, n);
+  std::fill(kept_from_.begin(), kept_from_.end(), kNotKept);
 }
 
 void set_full_body_passes(bool full) { g_full_body_passes.store(full, std::memory_order_relaxed); }

@@ -223,6 +223,8 @@ struct WorldImpl : WorldState
   /// Body i's tight box, read from its outline (pose_bodies) when it has one.
   Aabb posed_box(std::size_t i) const;
   PosedPolygon posed(std::size_t i) const;
+  /// The pair stage's buffers for n pairs, in the frame block.
+  void place_pair_buffers(std::size_t n);
   /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (the workers share it).
   void collide_range(std::size_t begin, std::size_t end);
   bool dynamic_pair(std::size_t i, std::size_t j) const;

@@ -82,21 +82,22 @@ struct WorldState
   std::vector<double> reach_;         ///< soft step: frame_reach of each moving body (m)
   double margin_ = 0.0;               ///< this detection's speculative margin (m)
   /// Scratch that buffers with lives apart take in turn (FrameBlock): the
-  /// narrow phase's manifolds until detection has read them, then the soft
-  /// step's rows until the contacts are published.
+  /// pair stage's buffers below (place_pair_buffers) until the bodies are
+  /// prepared after detection, then the soft step's rows until the contacts
+  /// are published.
   FrameBlock frame_block_;
   FrameSpan<Manifold> manifolds_;
-  FrameBuffer<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
+  FrameSpan<Collided> collided_;  ///< each pair's narrow-phase outcome, found by the workers
   /// Soft step: each pair's first cached contact when its manifold is kept, else kNotKept.
-  std::vector<std::size_t> kept_from_;
+  FrameSpan<std::size_t> kept_from_;
+  FrameSpan<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
+  FrameSpan<std::size_t> pair_cache_;  ///< each pair's first cached contact in contacts_
   double reuse_distance_ = 0.0;         ///< this detection's contact_reuse_distance (m), 0: none
   /// Polygon i's world vertices, then its face normals, from posed_offset_[i]
   /// in posed_vertices_ (2 vertex_count() entries).
   std::vector<std::size_t> posed_offset_;
   std::vector<Vec2> posed_vertices_;
   std::uint64_t posed_version_ = 0;       ///< version_ when posed_offset_ was laid out
-  std::vector<std::size_t> pair_rows_;   ///< each pair's first row in points_, and the total last
-  std::vector<std::size_t> pair_cache_;  ///< each pair's first cached contact in contacts_
   std::vector<double> partial_max_;      ///< max_over's result of each part
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part

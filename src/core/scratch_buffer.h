@@ -76,9 +76,9 @@ void resize_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
 }
 
 /// One block of memory that per-frame buffers whose lives never overlap
-/// take in turn (the narrow phase's manifolds, dead once detection has read
-/// them, then the soft step's rows): resident once, at the larger one's
-/// size, not at their sum. Each user places its FrameSpan in the block
+/// take in turn (the pair stage's buffers, dead once the bodies are
+/// prepared after detection, then the soft step's rows): resident once, at
+/// the larger one's size, not at their sum. Each user places its FrameSpan in the block
 /// again before each use; a block that must grow frees the old one first,
 /// which leaves the other users' spans pointing at freed memory, so they
 /// must be dead by then. A copy starts empty (its users place their spans

@@ -74,8 +74,8 @@ unsigned char* FrameBlock::take(std::size_t bytes)
   if (bytes > capacity_)
   {
     release();  // the old block goes first: the two are never resident together
-    data_ = static_cast<unsigned char*>(::operator new[](2 * bytes, kBlockAlignment));
-    capacity_ = 2 * bytes;
+    data_ = static_cast<unsigned char*>(::operator new[](kGrowthRoom * bytes, kBlockAlignment));
+    capacity_ = kGrowthRoom * bytes;
   }
   if (bytes > mapped_)
   {

@@ -13,6 +13,11 @@ namespace collision2d
 {
 namespace detail
 {
+/// A frame buffer that must grow takes room for this many times what it was
+/// asked for: a count that creeps up reallocates rarely, and room never
+/// written costs no resident memory.
+constexpr std::size_t kGrowthRoom = 2;
+
 /// An allocator whose vector leaves new elements as the memory holds them
 /// when it grows by resize(): for the per-frame buffers that a stage writes
 /// in full before any reads them. Their pages are then first touched by
@@ -54,7 +59,7 @@ void prefault_pages(const void* begin, const void* end);  // scratch_buffer.cpp
 
 /// Makes `v` hold n elements, to be overwritten. When it must grow, the old
 /// block is freed before the new one is taken, so the two are never resident
-/// together and nothing stale is copied; the new block has room for twice n,
+/// together and nothing stale is copied; the new block has room for kGrowthRoom n,
 /// so a count that creeps up reallocates rarely (untouched room costs no
 /// resident memory). The pages the caller is about to write for the first
 /// time are mapped in one request (prefault_pages).
@@ -65,7 +70,7 @@ void resize_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
   if (n > v.capacity())
   {
     std::vector<T, Allocator>().swap(v);
-    v.reserve(2 * n);
+    v.reserve(kGrowthRoom * n);
     written = 0;
   }
   if (n > written)
@@ -94,7 +99,7 @@ public:
   ~FrameBlock();
   /// At least `bytes` bytes, aligned for any frame buffer; the bytes held
   /// before stay where the block does not grow. As resize_to_overwrite:
-  /// room for twice `bytes` when it grows, and the pages not yet written
+  /// room for kGrowthRoom `bytes` when it grows, and the pages not yet written
   /// mapped in one request (prefault_pages).
   unsigned char* take(std::size_t bytes);
   std::size_t capacity() const { return capacity_; }
@@ -133,8 +138,6 @@ public:
     data_ = reinterpret_cast<T*>(at);
     size_ = n;
   }
-  /// Holds n elements from the start of `block`, to be overwritten.
-  void place_in(FrameBlock& block, std::size_t n) { place(block.take(n * sizeof(T)), n); }
   void clear()
   {
     data_ = nullptr;
@@ -154,7 +157,7 @@ private:
 };
 
 /// Room for n elements in `list` without changing what it holds; one that
-/// must grow takes room for twice n, so a count that creeps up reallocates
+/// must grow takes room for kGrowthRoom n, so a count that creeps up reallocates
 /// rarely. For a change that must not run out of memory halfway: room
 /// first, then the change.
 template <typename T, typename Allocator>
@@ -162,7 +165,7 @@ void make_room(std::vector<T, Allocator>& list, std::size_t n)
 {
   if (list.capacity() < n)
   {
-    list.reserve(2 * n);
+    list.reserve(kGrowthRoom * n);
   }
 }
 

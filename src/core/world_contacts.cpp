@@ -358,7 +358,7 @@ void WorldImpl::size_contacts(std::size_t n)
     return;
   }
   std::vector<WorldContact> grown;
-  grown.reserve(2 * n);  // as resize_to_overwrite: a creeping count reallocates rarely
+  grown.reserve(kGrowthRoom * n);
   touch_pages_first(workers_, grown.data(), grown.data() + n);
   grown.resize(n);
   contacts_.swap(grown);

@@ -31,6 +31,24 @@ void prefault_pages(const void* begin, const void* end)
 #endif
 }
 
+void give_back_pages(void* begin, std::size_t bytes) noexcept
+{
+#if defined(__linux__)
+  constexpr std::uintptr_t kPageBytes = 4096;
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(begin) + kPageBytes - 1) & ~(kPageBytes - 1);
+  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(begin) + bytes) & ~(kPageBytes - 1);
+  if (bytes >= kGiveBackFrom && last > first)
+  {
+    // The pages read as zeros if the heap hands them out again; a refusal
+    // only leaves them resident, as free() would.
+    static_cast<void>(madvise(reinterpret_cast<void*>(first), last - first, MADV_DONTNEED));
+  }
+#else
+  static_cast<void>(begin);
+  static_cast<void>(bytes);
+#endif
+}
+
 namespace
 {
 /// The block's alignment: a cache line, more than any frame buffer's type asks.
@@ -62,6 +80,7 @@ void FrameBlock::release() noexcept
 {
   if (data_ != nullptr)
   {
+    give_back_pages(data_, capacity_);
     ::operator delete[](data_, kBlockAlignment);
   }
   data_ = nullptr;

@@ -18,6 +18,17 @@ namespace detail
 /// written costs no resident memory.
 constexpr std::size_t kGrowthRoom = 2;
 
+/// A freed block of at least this many bytes gives its pages back to the
+/// system first (give_back_pages).
+constexpr std::size_t kGiveBackFrom = std::size_t{256} * 1024;
+
+/// Gives the whole pages inside [begin, begin + bytes) back to the system,
+/// for a block about to be freed whose contents are dead: the heap keeps a
+/// freed block resident for reuse, and one that a buffer growing with its
+/// scene has outgrown is seldom reused whole. Blocks below kGiveBackFrom
+/// are left to the heap (scratch_buffer.cpp).
+void give_back_pages(void* begin, std::size_t bytes) noexcept;
+
 /// An allocator whose vector leaves new elements as the memory holds them
 /// when it grows by resize(): for the per-frame buffers that a stage writes
 /// in full before any reads them. Their pages are then first touched by
@@ -35,6 +46,12 @@ struct FrameAllocator : std::allocator<T>
   template <typename U>
   FrameAllocator(const FrameAllocator<U>& /*other*/) noexcept
   {
+  }
+  /// A frame buffer's contents are dead once it lets go of its block.
+  void deallocate(T* p, std::size_t n) noexcept
+  {
+    give_back_pages(p, n * sizeof(T));
+    std::allocator<T>::deallocate(p, n);
   }
   /// resize()'s new elements: left as they are (plain data only). Copies
   /// and other constructions go through std::allocator_traits' placement new.
@@ -57,6 +74,23 @@ using FrameBuffer = std::vector<T, FrameAllocator<T>>;
 /// the writes fault as before.
 void prefault_pages(const void* begin, const void* end);  // scratch_buffer.cpp
 
+/// Whether an allocator gives a freed block's pages back itself.
+template <typename Allocator>
+constexpr bool kGivesBackPages = false;
+template <typename T>
+constexpr bool kGivesBackPages<FrameAllocator<T>> = true;
+
+/// Frees `v`'s block, whose contents are dead, its pages given back first.
+template <typename T, typename Allocator>
+void free_outgrown(std::vector<T, Allocator>& v)
+{
+  if constexpr (!kGivesBackPages<Allocator>)
+  {
+    give_back_pages(v.data(), v.capacity() * sizeof(T));
+  }
+  std::vector<T, Allocator>().swap(v);
+}
+
 /// Makes `v` hold n elements, to be overwritten. When it must grow, the old
 /// block is freed before the new one is taken, so the two are never resident
 /// together and nothing stale is copied; the new block has room for kGrowthRoom n,
@@ -69,7 +103,7 @@ void resize_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
   std::size_t written = v.size();  // these elements' pages are mapped already
   if (n > v.capacity())
   {
-    std::vector<T, Allocator>().swap(v);
+    free_outgrown(v);
     v.reserve(kGrowthRoom * n);
     written = 0;
   }

@@ -359,6 +359,9 @@ void WorldImpl::size_contacts(std::size_t n)
   }
   std::vector<WorldContact> grown;
   grown.reserve(kGrowthRoom * n);
+  // Taken: from here nothing throws, and the old pages go before the new
+  // ones are written, so the two are not resident together.
+  give_back_pages(contacts_.data(), contacts_.capacity() * sizeof(WorldContact));
   touch_pages_first(workers_, grown.data(), grown.data() + n);
   grown.resize(n);
   contacts_.swap(grown);

@@ -2,10 +2,15 @@
 // of their first write must leave what memory already holds as it was.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "scratch_buffer.h"
 
@@ -132,6 +137,74 @@ TEST(ScratchBuffer, ACopiedBlockAndItsSpansStartEmpty)
   EXPECT_EQ(block.capacity(), 0U);  // NOLINT(bugprone-use-after-move): a moved-from block is empty
   EXPECT_EQ(span[99], 1.5) << "the bytes moved with the block";
 }
+
+TEST(ScratchBuffer, ABufferGrownPastALargeBlockHoldsWhatIsWrittenAfter)
+{
+  // Growing frees the old block with its pages given back (they read as
+  // zeros if the heap hands them out again); the new one holds every write.
+  FrameBuffer<std::uint64_t> buffer;
+  const std::size_t n = 2 * kGiveBackFrom / sizeof(std::uint64_t);
+  resize_to_overwrite(buffer, n);
+  std::fill(buffer.begin(), buffer.end(), pattern(0));
+  resize_to_overwrite(buffer, 3 * n);
+  for (std::size_t k = 0; k < buffer.size(); ++k)
+  {
+    buffer[k] = pattern(k + 7);
+  }
+  for (std::size_t k = 0; k < buffer.size(); ++k)
+  {
+    ASSERT_EQ(buffer[k], pattern(k + 7)) << "element " << k;
+  }
+  FrameBlock block;
+  block.take(kGiveBackFrom);
+  unsigned char* bytes = block.take(4 * kGiveBackFrom);  // grows: the old block's pages go back
+  bytes[4 * kGiveBackFrom - 1] = 1;
+  EXPECT_EQ(bytes[4 * kGiveBackFrom - 1], 1);
+}
+
+#if defined(__linux__)
+constexpr std::size_t kPageBytes = 4096;
+
+/// How many of the whole pages inside [begin, begin + bytes) are resident.
+std::size_t resident_pages(const void* begin, std::size_t bytes)
+{
+  const std::uintptr_t first = (reinterpret_cast<std::uintptr_t>(begin) + kPageBytes - 1) & ~(kPageBytes - 1);
+  const std::uintptr_t last = (reinterpret_cast<std::uintptr_t>(begin) + bytes) & ~(kPageBytes - 1);
+  std::vector<unsigned char> in_core((last - first) / kPageBytes);
+  if (in_core.empty() || mincore(reinterpret_cast<void*>(first), last - first, in_core.data()) != 0)
+  {
+    return 0;
+  }
+  std::size_t resident = 0;
+  for (const unsigned char page : in_core)
+  {
+    resident += page & 1U;
+  }
+  return resident;
+}
+
+TEST(ScratchBuffer, AnOutgrownHeapBlockGivesItsPagesBack)
+{
+  // A public vector (the published contacts) lives in the heap; its pages
+  // go back to the system once it has been outgrown.
+  std::vector<std::uint64_t> held(4 * kGiveBackFrom / sizeof(std::uint64_t));
+  for (std::size_t k = 0; k < held.size(); ++k)
+  {
+    held[k] = pattern(k);
+  }
+  const std::size_t bytes = held.size() * sizeof(std::uint64_t);
+  const std::size_t whole_pages = bytes / kPageBytes - 1;
+  ASSERT_GE(resident_pages(held.data(), bytes), whole_pages);
+  give_back_pages(held.data(), bytes);
+  EXPECT_EQ(resident_pages(held.data(), bytes), 0U);
+  // Below the threshold a block is left to the heap: it still holds its words.
+  std::vector<std::uint64_t> smaller(kGiveBackFrom / 2 / sizeof(std::uint64_t), 3);
+  give_back_pages(smaller.data(), smaller.size() * sizeof(std::uint64_t));
+  EXPECT_EQ(std::count(smaller.begin(), smaller.end(), 3U), static_cast<std::ptrdiff_t>(smaller.size()));
+  free_outgrown(held);
+  EXPECT_EQ(held.capacity(), 0U);
+}
+#endif
 
 }  // namespace
 }  // namespace detail

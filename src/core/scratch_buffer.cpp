@@ -80,7 +80,6 @@ void FrameBlock::release() noexcept
 {
   if (data_ != nullptr)
   {
-    give_back_pages(data_, capacity_);
     ::operator delete[](data_, kBlockAlignment);
   }
   data_ = nullptr;
@@ -92,7 +91,8 @@ unsigned char* FrameBlock::take(std::size_t bytes)
 {
   if (bytes > capacity_)
   {
-    release();  // the old block goes first: the two are never resident together
+    give_back_pages(data_, capacity_);  // outgrown (release() alone keeps the pages in the heap)
+    release();                          // the old block goes first: the two are never resident together
     data_ = static_cast<unsigned char*>(::operator new[](kGrowthRoom * bytes, kBlockAlignment));
     capacity_ = kGrowthRoom * bytes;
   }

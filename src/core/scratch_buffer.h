@@ -47,12 +47,6 @@ struct FrameAllocator : std::allocator<T>
   FrameAllocator(const FrameAllocator<U>& /*other*/) noexcept
   {
   }
-  /// A frame buffer's contents are dead once it lets go of its block.
-  void deallocate(T* p, std::size_t n) noexcept
-  {
-    give_back_pages(p, n * sizeof(T));
-    std::allocator<T>::deallocate(p, n);
-  }
   /// resize()'s new elements: left as they are (plain data only). Copies
   /// and other constructions go through std::allocator_traits' placement new.
   template <typename U>
@@ -74,21 +68,26 @@ using FrameBuffer = std::vector<T, FrameAllocator<T>>;
 /// the writes fault as before.
 void prefault_pages(const void* begin, const void* end);  // scratch_buffer.cpp
 
-/// Whether an allocator gives a freed block's pages back itself.
-template <typename Allocator>
-constexpr bool kGivesBackPages = false;
-template <typename T>
-constexpr bool kGivesBackPages<FrameAllocator<T>> = true;
-
-/// Frees `v`'s block, whose contents are dead, its pages given back first.
+/// Frees the block `v` has outgrown, whose contents are dead, its pages
+/// given back first. Only growth gives pages back: a block freed with its
+/// owner (a World copied and dropped) stays in the heap for the next one.
 template <typename T, typename Allocator>
 void free_outgrown(std::vector<T, Allocator>& v)
 {
-  if constexpr (!kGivesBackPages<Allocator>)
-  {
-    give_back_pages(v.data(), v.capacity() * sizeof(T));
-  }
+  give_back_pages(v.data(), v.capacity() * sizeof(T));
   std::vector<T, Allocator>().swap(v);
+}
+
+/// Room for n elements in `v`, whose contents are dead: an outgrown block is
+/// freed first (free_outgrown), and the new one holds exactly n.
+template <typename T, typename Allocator>
+void reserve_to_overwrite(std::vector<T, Allocator>& v, std::size_t n)
+{
+  if (n > v.capacity())
+  {
+    free_outgrown(v);
+    v.reserve(n);
+  }
 }
 
 /// Makes `v` hold n elements, to be overwritten. When it must grow, the old

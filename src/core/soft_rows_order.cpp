@@ -49,7 +49,7 @@ void sort_by_height(FrameBuffer<std::uint64_t>& keys, FrameBuffer<std::uint64_t>
       ++start[d][digit(key, d)];
     }
   }
-  scratch.reserve(keys.capacity());
+  reserve_to_overwrite(scratch, keys.capacity());
   scratch.resize(keys.size());
   for (int d = 0; d < kKeyDigits; ++d)
   {
@@ -80,7 +80,7 @@ void SoftRows::order_manifolds(WorkerPool& workers)
   if (parts == 1)
   {
     order_.clear();
-    order_.reserve(notes_.size());
+    reserve_to_overwrite(order_, notes_.size());
     for (std::size_t k = 0; k < notes_.size(); ++k)
     {
       if (notes_[k].first)

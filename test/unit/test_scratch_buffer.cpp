@@ -162,6 +162,21 @@ TEST(ScratchBuffer, ABufferGrownPastALargeBlockHoldsWhatIsWrittenAfter)
   EXPECT_EQ(bytes[4 * kGiveBackFrom - 1], 1);
 }
 
+TEST(ScratchBuffer, ReservingToOverwriteKeepsABlockWithRoomAndTakesExactlyWhatItAsks)
+{
+  FrameBuffer<std::uint64_t> keys;
+  reserve_to_overwrite(keys, kElements);
+  EXPECT_EQ(keys.capacity(), kElements) << "exactly the room asked for";
+  const std::uint64_t* block = keys.data();
+  keys.push_back(pattern(1));
+  reserve_to_overwrite(keys, kElements / 2);
+  EXPECT_EQ(keys.data(), block) << "room enough: the block stays";
+  EXPECT_EQ(keys.front(), pattern(1)) << "and so does what it holds";
+  reserve_to_overwrite(keys, 2 * kElements);
+  EXPECT_GE(keys.capacity(), 2 * kElements);
+  EXPECT_TRUE(keys.empty()) << "an outgrown block's contents are dead";
+}
+
 #if defined(__linux__)
 constexpr std::size_t kPageBytes = 4096;
 

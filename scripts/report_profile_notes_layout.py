@@ -50,7 +50,19 @@ before -> after: rain of 1e4 3.33 -> 2.66, rain of 1e5 1.82 -> 1.63,
 the pyramids of 9870 and 99681 boxes unchanged at 5.02 and 5.00 (their
 contacts do not grow after the first frame); the same bits, the time
 unchanged (alternating runs, median new/old: pyramid of 9870 0.983, rain
-of 1e4 1.002 on 1 worker and 0.912 on 2, rain of 1e5 0.990). What is left
+of 1e4 1.002 on 1 worker and 0.912 on 2, rain of 1e5 0.990). At first
+(89f8a55) every freed block gave its pages back, and a World copied and
+dropped, as the ROS services do for each edit, left the next copy to fault
+its blocks in again: copying the pyramid of 9870 boxes three frames in
+took 15.3 and 15.9 ms (medians of 15 copies) against 5.9 and 6.3 ms
+before; since d45b069 only a block a buffer has outgrown gives its pages
+back (6.6 and 7.5 ms). Tried and not kept: one outline shared by the
+copies of a body, so that a scene's equal boxes hold a single one. Peak
+memory fell by 4% (pyramid of 9870 boxes 5.04 -> 4.84 kB a body, rain of
+1e5 1.63 -> 1.57), but copying that pyramid took 20 to 25 ms: without
+the 20000 small blocks a copy used to allocate, glibc gave the freed
+large blocks back to the system and each copy faulted them in again
+(with glibc's thresholds fixed, 7.5 ms either way). What is left
 on the pyramid is the layout: a contact point costs 296 bytes as a
 point, 168 as a published contact and 128 in the rows, and a box of the
 pyramid has 5.94 points, so 3.5 kB a body before the body's own arrays.

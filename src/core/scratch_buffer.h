@@ -18,8 +18,8 @@ namespace detail
 /// written costs no resident memory.
 constexpr std::size_t kGrowthRoom = 2;
 
-/// A freed block of at least this many bytes gives its pages back to the
-/// system first (give_back_pages).
+/// An outgrown block of at least this many bytes gives its pages back to
+/// the system before it is freed (give_back_pages, free_outgrown).
 constexpr std::size_t kGiveBackFrom = std::size_t{256} * 1024;
 
 /// Gives the whole pages inside [begin, begin + bytes) back to the system,

@@ -51,8 +51,7 @@ void give_back_pages(void* begin, std::size_t bytes) noexcept
 
 namespace
 {
-/// The block's alignment: a cache line, more than any frame buffer's type asks.
-constexpr std::align_val_t kBlockAlignment{64};
+constexpr std::align_val_t kBlockAlignment{kFrameBlockAlignment};
 }  // namespace
 
 FrameBlock::FrameBlock(FrameBlock&& other) noexcept

@@ -153,7 +153,6 @@ class FrameSpan
                 "a frame span holds plain data");
 
 public:
-  using value_type = T;
   FrameSpan() = default;
   FrameSpan(const FrameSpan& /*other*/) {}
   FrameSpan& operator=(const FrameSpan& /*other*/)
@@ -188,6 +187,48 @@ private:
   T* data_ = nullptr;
   std::size_t size_ = 0;
 };
+
+/// A FrameBlock's alignment: a cache line, more than any frame buffer's type asks.
+constexpr std::size_t kFrameBlockAlignment = 64;
+
+/// A span and how many elements it is to hold, for place_together.
+template <typename T>
+struct SpanPart
+{
+  FrameSpan<T>& span;
+  std::size_t count;
+};
+template <typename T>
+SpanPart<T> part(FrameSpan<T>& span, std::size_t count)
+{
+  return SpanPart<T>{span, count};
+}
+
+/// Whether the types come from the widest alignment down, the first no
+/// wider than a FrameBlock's: then spans placed end to end all start aligned.
+template <typename... T>
+constexpr bool widest_first()
+{
+  constexpr std::size_t alignments[] = {alignof(T)...};
+  for (std::size_t k = 1; k < sizeof...(T); ++k)
+  {
+    if (alignments[k] > alignments[k - 1])
+    {
+      return false;
+    }
+  }
+  return alignments[0] <= kFrameBlockAlignment;
+}
+
+/// Places the spans one after another in `block`, in one taking (a second
+/// could move the block under the spans placed before it).
+template <typename... T>
+void place_together(FrameBlock& block, SpanPart<T>... parts)
+{
+  static_assert(widest_first<T...>(), "spans listed from the widest alignment down");
+  unsigned char* at = block.take(((parts.count * sizeof(T)) + ...));
+  ((parts.span.place(at, parts.count), at += parts.count * sizeof(T)), ...);
+}
 
 /// Room for n elements in `list` without changing what it holds; one that
 /// must grow takes room for kGrowthRoom n, so a count that creeps up reallocates

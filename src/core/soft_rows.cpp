@@ -215,10 +215,7 @@ void SoftRows::pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, 
   // Both kinds in one stretch of the block (the lanes below write every slot).
   const std::size_t pair_batches = place_batches(Kind::Pair);
   const std::size_t single_batches = place_batches(Kind::Single);
-  const std::size_t pair_bytes = pair_batches * sizeof(RowBatch);
-  unsigned char* const at = block.take(pair_bytes + single_batches * sizeof(RowSingle));
-  rows_.place(at, pair_batches);
-  singles_.place(at + pair_bytes, single_batches);
+  place_together(block, part(rows_, pair_batches), part(singles_, single_batches));
   lane_of_.assign(points.size(), kNoLane);
   place_rows(points, friction, workers);
   for (std::size_t colour = 0; colour < used_colours_; ++colour)

@@ -2,7 +2,6 @@
 // published contacts; the rows of the pairs found are world_contact_rows.cpp.
 #include <algorithm>
 #include <atomic>
-#include <type_traits>
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
@@ -176,20 +175,10 @@ void WorldImpl::find_mover_pairs()
 
 void WorldImpl::place_pair_buffers(std::size_t n)
 {
-  // One taking for all, the widest elements first so each part is aligned:
-  // a second taking could move the block under the parts placed before it.
-  constexpr std::size_t kIndex = sizeof(std::size_t);
-  static_assert(sizeof(Manifold) % kIndex == 0, "the indices after the manifolds stay aligned");
-  unsigned char* at = frame_block_.take(n * sizeof(Manifold) + (3 * n + 1) * kIndex + n * sizeof(Collided));
-  const auto place = [&at](auto& span, std::size_t count) {
-    span.place(at, count);
-    at += count * sizeof(typename std::decay_t<decltype(span)>::value_type);
-  };
-  place(manifolds_, n);  // collide_range writes every slot it reads
-  place(kept_from_, n);
-  place(pair_rows_, n + 1);  // place_pair_rows writes them all
-  place(pair_cache_, n);     // ... and those of the pairs that hit, the only ones read
-  place(collided_, n);
+  // collide_range writes every manifold it reads, place_pair_rows every row
+  // start and the cache starts of the pairs that hit (the only ones read).
+  place_together(frame_block_, part(manifolds_, n), part(kept_from_, n), part(pair_rows_, n + 1),
+                 part(pair_cache_, n), part(collided_, n));
   std::fill(kept_from_.begin(), kept_from_.end(), kNotKept);
 }
 

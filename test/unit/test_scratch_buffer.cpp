@@ -74,18 +74,11 @@ TEST(ScratchBuffer, GrowingPastCapacityTakesRoomForTwiceTheCount)
   EXPECT_EQ(buffer[kElements - 1], pattern(kElements - 1));
 }
 
-/// Places `span` over n elements from the start of `block`, as the World's users do.
-template <typename T>
-void place_at_start(FrameSpan<T>& span, FrameBlock& block, std::size_t n)
-{
-  span.place(block.take(n * sizeof(T)), n);
-}
-
 TEST(ScratchBuffer, BuffersTakingABlockInTurnShareItsMemory)
 {
   FrameBlock block;
   FrameSpan<std::uint64_t> first;
-  place_at_start(first, block, kElements / 2);
+  place_together(block, part(first, kElements / 2));
   for (std::size_t k = 0; k < first.size(); ++k)
   {
     first[k] = pattern(k);
@@ -95,7 +88,7 @@ TEST(ScratchBuffer, BuffersTakingABlockInTurnShareItsMemory)
   // A second buffer within the capacity takes the same bytes, as they are:
   // the block holds the larger of the two, not their sum.
   FrameSpan<std::uint32_t> second;
-  place_at_start(second, block, kElements);
+  place_together(block, part(second, kElements));
   EXPECT_EQ(static_cast<void*>(second.data()), static_cast<void*>(first.data()));
   EXPECT_EQ(block.capacity(), capacity);
   for (std::size_t k = 0; k < kElements / 2; ++k)
@@ -122,7 +115,7 @@ TEST(ScratchBuffer, ACopiedBlockAndItsSpansStartEmpty)
 {
   FrameBlock block;
   FrameSpan<double> span;
-  place_at_start(span, block, 100);
+  place_together(block, part(span, 100));
   span[99] = 1.5;
   const FrameBlock block_copy = block;  // NOLINT(performance-unnecessary-copy-initialization): the copy is the test
   FrameSpan<double> span_copy = span;

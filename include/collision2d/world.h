@@ -131,10 +131,12 @@ struct WorldImpl;
 /// A World is a value: copying it snapshots the whole state, which is how a
 /// caller can try a change and roll back.
 ///
-/// Each substep follows the Fx2D order (integrate,
-/// detect, penetration resolution, velocity resolution with warm starting) on
-/// the shared contact-solver kernel; src/core/world_step.cpp lists the stages
-/// in order and says where each refinement of that order is coded.
+/// A frame runs one of two pipelines on the shared contact-solver kernel
+/// (WorldSettings::soft_step). The soft step, the default, collides once per
+/// frame and solves the contacts as damped springs in substeps
+/// (src/core/world_soft_step.cpp lists its stages); the Fx2D order detects,
+/// corrects penetration and resolves velocities every substep
+/// (src/core/world_step.cpp lists its stages and refinements).
 class World
 {
 public:

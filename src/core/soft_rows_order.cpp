@@ -1,12 +1,12 @@
 // The soft step's manifolds in height order (soft_rows.h): one key per noted
-// manifold, radix sorted. In a large frame the workers share it: each takes a
-// part of the notes, then a part of the keys in every digit's pass, and the
-// parts meet between the counting and the moving, so every key lands where
-// one pass puts it.
+// manifold, radix sorted. In a large frame the workers share it: each sorts
+// the keys of its part of the notes, then merges a share of the output.
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <utility>
 
+#include "collision2d/setting_table.h"
 #include "scratch_buffer.h"
 #include "soft_rows.h"
 
@@ -28,32 +28,31 @@ std::size_t digit(std::uint64_t key, int d)
   return static_cast<std::size_t>(key >> (32 + kDigitBits * d)) & (kDigits - 1);
 }
 
-/// Sorts keys by their high half, keeping the order of equal ones: a least
-/// significant digit radix sort, linear where a comparison sort cost more
-/// than the colouring it orders. One pass counts every digit. The low halves
-/// are distinct and ascending, so a comparison sort of the whole keys gives
-/// the same order: below kRadixSortFrom keys it is cheaper than clearing and
+/// Sorts n keys by their high half, keeping the order of equal ones: a
+/// least significant digit radix sort, linear where a comparison sort cost
+/// more than the colouring it orders. One pass counts every digit. Returns
+/// where the sorted keys ended, `keys` or `scratch`. The low halves are
+/// distinct and ascending, so a comparison sort of the whole keys gives the
+/// same order: below kRadixSortFrom keys it is cheaper than clearing and
 /// summing the digit counts.
-void sort_by_height(FrameBuffer<std::uint64_t>& keys, FrameBuffer<std::uint64_t>& scratch)
+std::uint64_t* sort_keys(std::uint64_t* keys, std::uint64_t* scratch, std::size_t n)
 {
-  if (keys.size() < kRadixSortFrom)
+  if (n < kRadixSortFrom)
   {
-    std::sort(keys.begin(), keys.end());
-    return;
+    std::sort(keys, keys + n);
+    return keys;
   }
   std::array<std::array<std::size_t, kDigits>, kKeyDigits> start{};
-  for (const std::uint64_t key : keys)
+  for (std::size_t k = 0; k < n; ++k)
   {
     for (int d = 0; d < kKeyDigits; ++d)
     {
-      ++start[d][digit(key, d)];
+      ++start[d][digit(keys[k], d)];
     }
   }
-  reserve_to_overwrite(scratch, keys.capacity());
-  scratch.resize(keys.size());
   for (int d = 0; d < kKeyDigits; ++d)
   {
-    if (keys.empty() || start[d][digit(keys.front(), d)] == keys.size())
+    if (start[d][digit(keys[0], d)] == n)
     {
       continue;  // one value of this digit for all: nothing moves
     }
@@ -62,11 +61,108 @@ void sort_by_height(FrameBuffer<std::uint64_t>& keys, FrameBuffer<std::uint64_t>
     {
       sum += std::exchange(s, sum);
     }
-    for (const std::uint64_t key : keys)
+    for (std::size_t k = 0; k < n; ++k)
     {
-      scratch[start[d][digit(key, d)]++] = key;
+      scratch[start[d][digit(keys[k], d)]++] = keys[k];
     }
+    std::swap(keys, scratch);
+  }
+  return keys;
+}
+
+/// sort_keys on a whole buffer, the sorted keys left in `keys`.
+void sort_by_height(FrameBuffer<std::uint64_t>& keys, FrameBuffer<std::uint64_t>& scratch)
+{
+  if (keys.size() < kRadixSortFrom)
+  {
+    std::sort(keys.begin(), keys.end());
+    return;
+  }
+  reserve_to_overwrite(scratch, keys.capacity());
+  scratch.resize(keys.size());
+  if (sort_keys(keys.data(), scratch.data(), keys.size()) != keys.data())
+  {
     keys.swap(scratch);
+  }
+}
+
+/// Sorted runs of distinct keys, one per part, end to end.
+struct SortedRuns
+{
+  const std::uint64_t* keys = nullptr;
+  const std::uint32_t* counts = nullptr;  ///< the run of part p has counts[p * stride] keys
+  std::size_t stride = 0;
+  std::size_t parts = 0;
+  std::size_t begin(std::size_t p) const
+  {
+    std::size_t at = 0;
+    for (std::size_t q = 0; q < p; ++q)
+    {
+      at += counts[q * stride];
+    }
+    return at;
+  }
+  std::size_t end(std::size_t p) const { return begin(p) + counts[p * stride]; }
+  /// How many keys of all the runs are below v.
+  std::size_t below(std::uint64_t v) const
+  {
+    std::size_t count = 0;
+    for (std::size_t p = 0; p < parts; ++p)
+    {
+      count += static_cast<std::size_t>(std::lower_bound(keys + begin(p), keys + end(p), v) - (keys + begin(p)));
+    }
+    return count;
+  }
+  /// The key that `rank` keys of all the runs are below (rank < their total):
+  /// each run's keys below it are the run's part of the first `rank`.
+  std::uint64_t at_rank(std::size_t rank) const
+  {
+    std::uint64_t lo = 0;
+    std::uint64_t hi = UINT64_MAX;
+    while (lo < hi)
+    {
+      const std::uint64_t mid = lo + (hi - lo) / 2 + 1;
+      if (below(mid) <= rank)
+      {
+        lo = mid;
+      }
+      else
+      {
+        hi = mid - 1;
+      }
+    }
+    return lo;
+  }
+};
+
+/// Writes places [from, to) of the merged runs into `out`.
+void merge_share(const SortedRuns& runs, std::size_t from, std::size_t to, std::uint64_t* out)
+{
+  // A run per worker.
+  constexpr std::size_t kMaxRuns = static_cast<std::size_t>(kWorkerCount.max);
+  std::array<std::size_t, kMaxRuns> head{};
+  std::array<std::size_t, kMaxRuns> stop{};
+  const std::size_t total = runs.begin(runs.parts);
+  const std::uint64_t first = from < total ? runs.at_rank(from) : UINT64_MAX;
+  const std::uint64_t last = to < total ? runs.at_rank(to) : UINT64_MAX;
+  for (std::size_t p = 0; p < runs.parts; ++p)
+  {
+    const std::uint64_t* b = runs.keys + runs.begin(p);
+    const std::uint64_t* e = runs.keys + runs.end(p);
+    head[p] = static_cast<std::size_t>((from < total ? std::lower_bound(b, e, first) : e) - runs.keys);
+    stop[p] = static_cast<std::size_t>((to < total ? std::lower_bound(b, e, last) : e) - runs.keys);
+  }
+  for (std::size_t k = from; k < to; ++k)
+  {
+    std::size_t take = runs.parts;
+    for (std::size_t p = 0; p < runs.parts; ++p)
+    {
+      if (head[p] < stop[p] && (take == runs.parts || runs.keys[head[p]] < runs.keys[head[take]]))
+      {
+        take = p;
+      }
+    }
+    out[k] = runs.keys[head[take]++];
   }
 }
 
@@ -108,30 +204,29 @@ void SoftRows::order_manifolds(WorkerPool& workers)
 
 void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& workers)
 {
-  // Round r's counts are set r % 2: a part reads round r's until it moves
-  // its keys, and writes round r + 2's only after the meeting that follows.
-  const auto counts = [&](int round, std::size_t p) { return &part_counts_[((round % 2) * parts + p) * kPartCounts]; };
-  // Round 0: each part's manifolds, then their keys below the parts after it.
+  // Each part's manifolds go, in point order, after those of the parts
+  // before it; each part sorts its own where it wrote them (in its core's
+  // cache), and the parts then merge a share each into sort_scratch_. A
+  // radix sort whose every digit's pass was shared moved each key between
+  // the cores' caches on every pass, and took as long on two workers as on one.
+  std::uint32_t* counts = part_counts_.data();
   const std::size_t n = notes_.size();
   std::uint32_t mine = 0;
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
   {
     mine += notes_[k].first ? 1 : 0;
   }
-  counts(0, part)[0] = mine;
+  counts[part * kPartCounts] = mine;
   workers.sync();
-  std::size_t total = 0;
-  std::size_t at = 0;
-  for (std::size_t p = 0; p < parts; ++p)
-  {
-    at += p < part ? counts(0, p)[0] : 0;
-    total += counts(0, p)[0];
-  }
+  const SortedRuns runs{order_.data(), counts, kPartCounts, parts};
+  const std::size_t at = runs.begin(part);
+  const std::size_t total = runs.begin(parts);
+  std::size_t next = at;
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
   {
     if (notes_[k].first)
     {
-      order_[at++] = std::uint64_t{notes_[k].key} << 32 | k;
+      order_[next++] = std::uint64_t{notes_[k].key} << 32 | k;
     }
   }
   if (part == 0)
@@ -143,55 +238,17 @@ void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& worke
   {
     return;  // order_manifolds sorts them
   }
-  workers.sync();
-  // Rounds 1 ..: a digit each. The keys of a part's share go, in order,
-  // after those of every smaller digit and of the parts before it.
-  std::uint64_t* from = order_.data();
-  std::uint64_t* to = sort_scratch_.data();
-  const std::size_t begin = total * part / parts;
-  const std::size_t end = total * (part + 1) / parts;
-  for (int d = 0; d < kKeyDigits; ++d)
+  std::uint64_t* own = order_.data() + at;
+  const std::uint64_t* sorted = sort_keys(own, sort_scratch_.data() + at, mine);
+  if (sorted != own)
   {
-    const int round = d + 1;
-    std::uint32_t* own = counts(round, part);
-    std::fill(own, own + kDigits, 0U);
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      ++own[digit(from[k], d)];
-    }
-    workers.sync();
-    std::array<std::size_t, kDigits> start{};
-    std::size_t sum = 0;
-    for (std::size_t v = 0; v < kDigits; ++v)
-    {
-      std::size_t before = 0;
-      std::size_t all = 0;
-      for (std::size_t p = 0; p < parts; ++p)
-      {
-        before += p < part ? counts(round, p)[v] : 0;
-        all += counts(round, p)[v];
-      }
-      if (all == total)
-      {
-        break;  // one value of this digit for all: nothing moves (every part sees it)
-      }
-      start[v] = sum + before;
-      sum += all;
-    }
-    if (sum == 0)
-    {
-      continue;
-    }
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      to[start[digit(from[k], d)]++] = from[k];
-    }
-    workers.sync();
-    std::swap(from, to);
+    std::copy(sorted, sorted + mine, own);
   }
+  workers.sync();
+  merge_share(runs, total * part / parts, total * (part + 1) / parts, sort_scratch_.data());
   if (part == 0)
   {
-    order_in_scratch_ = from != order_.data();
+    order_in_scratch_ = true;
   }
 }
 

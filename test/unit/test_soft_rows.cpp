@@ -330,15 +330,16 @@ TEST(SoftRows, PackingInPartsGivesOneWorkersColoursLanesAndBits)
   // Ordering and placing the rows are shared among the workers from a few
   // thousand points on; the colours, each colour's point-verb list, every
   // lane and the solved velocities must be one worker's. Cases: many heights,
-  // all heights equal (every digit pass skipped), and few manifolds among
-  // many points (ordered by a comparison sort).
+  // all heights equal (every digit pass skipped), parts too small for a
+  // radix sort of their own (sorted by comparison, then merged), and few
+  // manifolds among many points (ordered by a comparison sort).
   struct Case
   {
     std::size_t points;
     std::size_t active_every;
     int heights;
   };
-  for (const Case& c : {Case{6000, 1, 4000}, Case{6000, 1, 1}, Case{6000, 2, 7}, Case{6000, 40, 50}})
+  for (const Case& c : {Case{6000, 1, 4000}, Case{6000, 1, 1}, Case{6000, 2, 7}, Case{6000, 10, 50}, Case{6000, 40, 50}})
   {
     const Scene s = crowded_scene(11, c.points, c.heights);
     Packed one;

@@ -89,4 +89,43 @@ the per-point stages of the twenty-ninth and thirtieth notes. Two
 workers on the rain of 1e4 (`perf record`, 15 repetitions): both threads carried the same work, and each spent about
 a tenth of its samples in the scheduler and `sched_yield`, waiting at the
 passes' meetings between colours.
+
+A thirty-second, on the same host (commit 2723716; scratch builds, not
+committed, one that switched the solve order and the passes by
+environment, one that timed the step's stages). Whether the tall
+pyramids' drift at the defaults comes from the order of the passes: a
+pass over colours is Gauss-Seidel in colour order, and a colour holds
+manifolds of every height, so the weight of a stack reaches its bottom
+only over many substeps. Stepping the stacks for 10 s at the defaults,
+drift 1 s -> 10 s / largest penetration, mm (column, base-20, base-60,
+base-100): the colours as shipped (greedy from the top down) 0.0471 /
+6.02, 0.392 / 2.84, 6.59 / 10.9, 17.0 / 20.1; every manifold on the
+point verbs one after another from the top down, which carries the whole
+weight down in one pass, 0.0462 / 6.02, 0.402 / 2.84, 6.80 / 10.3, 29.3 /
+19.5; the colours greedy from the bottom up 0.041 / 6.32, 0.327 / 2.85,
+7.01 / 11.2, 28.1 / 20.2; one after another from the bottom up 0.044 /
+6.02, 0.555 / 3.07, 8.32 / 10.6, 31.0 / 19.5. The order does not make
+the drift: the base-60 pyramid drifts 6.6 to 8.3 mm in all four, and the
+colours as shipped are best on the base-100. Nor do more relax passes
+alone, at 40 Hz: one biased pass and two relax passes 0.874 / 6.02,
+0.448 / 2.84, 4.87 / 8.83, 21.2 / 17.4; one and three 9.13 / 6.02, 1.08 /
+2.83, 7.56 / 8.74, 18.0 / 15.5; two biased and one relax 0.00103 / 6.02,
+0.218 / 2.83, 2.66 / 10.6, 46.7 / 20.0; two and two 0.0645 / 6.02, 0.236
+/ 2.83, 2.58 / 9.50, 53.7 / 18.5. What drifts is the slow settling of the
+contact springs as a whole (*Stacks against Box2D v3*), which no
+ordering of one pass reaches. Two workers, by stage: the pyramid of 9870 boxes, 3
+rounds of 1 and 2 workers, share of the 1-worker frame and the stage's
+2-worker speed-up (medians): the solve 22.3% and 1.88, the relax 14.6%
+and 1.84, the contact rows with their preparation 18.1% and 1.94, the
+narrow phase 8.0% and 2.02, placing the rows 8.6% and 2.30, publishing
+11.2% and 2.38; what scaled least was the broad phase's kept pairs when
+rebuilt or paired exactly (4.4% at 1.1 to 1.4), moving the bodies with
+the sweep (2.7% at 1.58), ordering the manifolds (2.5% at 0.98), preparing
+the bodies (1.2% at 1.22) and the colouring, which is serial (1.0% at
+0.86). The whole step's speed-up was 1.82, between 1.49 and 1.99 from
+round to round. Ordering shared every digit's pass of its radix sort
+between the parts, moving keys between the cores' caches on each; since
+125468f each part sorts its own keys and the parts merge a share each
+(the same order): on 2 workers the stage took 14.8 ms a run instead of
+18.4, 1.28 times faster than on 1 worker (0.98 before).
 """

@@ -86,34 +86,35 @@ void sort_by_height(FrameBuffer<std::uint64_t>& keys, FrameBuffer<std::uint64_t>
   }
 }
 
+/// A run per worker, at most.
+constexpr std::size_t kMaxRuns = static_cast<std::size_t>(kWorkerCount.max);
+
 /// Sorted runs of distinct keys, one per part, end to end.
 struct SortedRuns
 {
-  const std::uint64_t* keys = nullptr;
-  const std::uint32_t* counts = nullptr;  ///< the run of part p has counts[p * stride] keys
-  std::size_t stride = 0;
-  std::size_t parts = 0;
-  std::size_t begin(std::size_t p) const
+  SortedRuns(const std::uint64_t* sorted, const std::uint32_t* counts, std::size_t stride, std::size_t parts)
+    : keys(sorted), count(parts)
   {
-    std::size_t at = 0;
-    for (std::size_t q = 0; q < p; ++q)
+    // The run of part p has counts[p * stride] keys.
+    for (std::size_t p = 0; p < parts; ++p)
     {
-      at += counts[q * stride];
+      start[p + 1] = start[p] + counts[p * stride];
     }
-    return at;
   }
-  std::size_t end(std::size_t p) const { return begin(p) + counts[p * stride]; }
+  std::size_t begin(std::size_t p) const { return start[p]; }
+  std::size_t end(std::size_t p) const { return start[p + 1]; }
+  std::size_t total() const { return start[count]; }
   /// How many keys of all the runs are below v.
   std::size_t below(std::uint64_t v) const
   {
-    std::size_t count = 0;
-    for (std::size_t p = 0; p < parts; ++p)
+    std::size_t n = 0;
+    for (std::size_t p = 0; p < count; ++p)
     {
-      count += static_cast<std::size_t>(std::lower_bound(keys + begin(p), keys + end(p), v) - (keys + begin(p)));
+      n += static_cast<std::size_t>(std::lower_bound(keys + begin(p), keys + end(p), v) - (keys + begin(p)));
     }
-    return count;
+    return n;
   }
-  /// The key that `rank` keys of all the runs are below (rank < their total):
+  /// The key that `rank` keys of all the runs are below (rank < total()):
   /// each run's keys below it are the run's part of the first `rank`.
   std::uint64_t at_rank(std::size_t rank) const
   {
@@ -133,19 +134,21 @@ struct SortedRuns
     }
     return lo;
   }
+
+  const std::uint64_t* keys;
+  std::size_t count;  ///< runs
+  std::array<std::size_t, kMaxRuns + 1> start{};
 };
 
 /// Writes places [from, to) of the merged runs into `out`.
 void merge_share(const SortedRuns& runs, std::size_t from, std::size_t to, std::uint64_t* out)
 {
-  // A run per worker.
-  constexpr std::size_t kMaxRuns = static_cast<std::size_t>(kWorkerCount.max);
   std::array<std::size_t, kMaxRuns> head{};
   std::array<std::size_t, kMaxRuns> stop{};
-  const std::size_t total = runs.begin(runs.parts);
+  const std::size_t total = runs.total();
   const std::uint64_t first = from < total ? runs.at_rank(from) : UINT64_MAX;
   const std::uint64_t last = to < total ? runs.at_rank(to) : UINT64_MAX;
-  for (std::size_t p = 0; p < runs.parts; ++p)
+  for (std::size_t p = 0; p < runs.count; ++p)
   {
     const std::uint64_t* b = runs.keys + runs.begin(p);
     const std::uint64_t* e = runs.keys + runs.end(p);
@@ -154,10 +157,10 @@ void merge_share(const SortedRuns& runs, std::size_t from, std::size_t to, std::
   }
   for (std::size_t k = from; k < to; ++k)
   {
-    std::size_t take = runs.parts;
-    for (std::size_t p = 0; p < runs.parts; ++p)
+    std::size_t take = runs.count;
+    for (std::size_t p = 0; p < runs.count; ++p)
     {
-      if (head[p] < stop[p] && (take == runs.parts || runs.keys[head[p]] < runs.keys[head[take]]))
+      if (head[p] < stop[p] && (take == runs.count || runs.keys[head[p]] < runs.keys[head[take]]))
       {
         take = p;
       }
@@ -220,7 +223,7 @@ void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& worke
   workers.sync();
   const SortedRuns runs{order_.data(), counts, kPartCounts, parts};
   const std::size_t at = runs.begin(part);
-  const std::size_t total = runs.begin(parts);
+  const std::size_t total = runs.total();
   std::size_t next = at;
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
   {

@@ -236,7 +236,7 @@ void SoftRows::place_rows(const ContactPoints& points, bool friction, WorkerPool
   }
   else
   {
-    resize_to_overwrite(part_counts_, 2 * parts * kPartCounts);
+    resize_to_overwrite(part_counts_, parts * kPartCounts);
     workers.run_team([&](std::size_t part) { place_rows_part(part, parts, points, friction, workers); });
   }
   // The rows past a colour's batches, after the manifolds colouring left to
@@ -262,6 +262,7 @@ void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const Contac
   const std::size_t begin = n * part / parts;
   const std::size_t end = n * (part + 1) / parts;
   std::array<std::uint32_t, 2 * kMaxColours> next{};
+  static_assert(2 * kMaxColours <= kPartCounts, "a part's counts hold every colour and kind");
   if (parts > 1)
   {
     std::uint32_t* own = &part_counts_[part * kPartCounts];

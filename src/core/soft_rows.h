@@ -303,8 +303,8 @@ private:
   FrameBuffer<std::uint64_t> order_;
   FrameBuffer<std::uint64_t> sort_scratch_;
   /// Scratch of the work in parts: each part's count of whatever it counts
-  /// before the parts meet (manifolds, digits of a sort pass, or rows by
-  /// colour and kind), kPartCounts entries a part, two sets used in turn.
+  /// before the parts meet (its manifolds, or its rows by colour and kind),
+  /// kPartCounts entries a part (apart, so no two parts write one cache line).
   std::vector<std::uint32_t> part_counts_;
   static constexpr std::size_t kPartCounts = 256;
   /// place_rows: the manifolds each part leaves to the point verbs, as

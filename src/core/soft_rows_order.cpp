@@ -192,7 +192,7 @@ void SoftRows::order_manifolds(WorkerPool& workers)
   }
   resize_to_overwrite(order_, notes_.size());  // the parts write the first `total` keys
   resize_to_overwrite(sort_scratch_, notes_.size());
-  resize_to_overwrite(part_counts_, 2 * parts * kPartCounts);
+  resize_to_overwrite(part_counts_, parts * kPartCounts);
   workers.run_team([&](std::size_t part) { order_part(part, parts, workers); });
   if (order_in_scratch_)
   {

@@ -229,8 +229,9 @@ private:
   /// The noted manifolds' keys in order_, from the highest down
   /// (soft_rows_order.cpp), in parts on the workers for a large frame.
   void order_manifolds(WorkerPool& workers);
-  /// Part `part` of `parts` of order_manifolds: the keys of its notes, then
-  /// each digit's pass over its share of the keys (the parts meet at `workers`).
+  /// Part `part` of `parts` of order_manifolds: the keys of its notes, sorted,
+  /// then its share of every part's keys merged into sort_scratch_ (the
+  /// parts meet at `workers`).
   void order_part(std::size_t part, std::size_t parts, WorkerPool& workers);
   /// No colours and no rows: every ordered manifold to the overflow.
   void order_without_colours();
@@ -310,8 +311,6 @@ private:
   /// place_rows: the manifolds each part leaves to the point verbs, as
   /// (colour, first point), in point order.
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> part_others_;
-  std::size_t ordered_ = 0;        ///< order_part: the manifolds' keys in all
-  bool order_in_scratch_ = false;  ///< order_part left the sorted keys in sort_scratch_
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
 };

@@ -194,15 +194,8 @@ void SoftRows::order_manifolds(WorkerPool& workers)
   resize_to_overwrite(sort_scratch_, notes_.size());
   resize_to_overwrite(part_counts_, parts * kPartCounts);
   workers.run_team([&](std::size_t part) { order_part(part, parts, workers); });
-  if (order_in_scratch_)
-  {
-    order_.swap(sort_scratch_);
-  }
-  order_.resize(ordered_);
-  if (ordered_ < kRadixSortFrom)
-  {
-    std::sort(order_.begin(), order_.end());  // the parts left them in point order
-  }
+  order_.swap(sort_scratch_);  // the parts merged into sort_scratch_
+  order_.resize(SortedRuns{order_.data(), part_counts_.data(), kPartCounts, parts}.total());
 }
 
 void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& workers)
@@ -232,15 +225,6 @@ void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& worke
       order_[next++] = std::uint64_t{notes_[k].key} << 32 | k;
     }
   }
-  if (part == 0)
-  {
-    ordered_ = total;
-    order_in_scratch_ = false;
-  }
-  if (total < kRadixSortFrom)
-  {
-    return;  // order_manifolds sorts them
-  }
   std::uint64_t* own = order_.data() + at;
   const std::uint64_t* sorted = sort_keys(own, sort_scratch_.data() + at, mine);
   if (sorted != own)
@@ -249,10 +233,6 @@ void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& worke
   }
   workers.sync();
   merge_share(runs, total * part / parts, total * (part + 1) / parts, sort_scratch_.data());
-  if (part == 0)
-  {
-    order_in_scratch_ = true;
-  }
 }
 
 }  // namespace detail

@@ -47,7 +47,7 @@ TEST(Turn, SmallTurnsAreWithinAnUlpOfTheLibrary)
 
 TEST(Turn, TheThresholdAndBeyondAreTheLibrarysOwn)
 {
-  for (const double x : {kSeriesTurn, -kSeriesTurn, 0.01, -0.3, 1.0, 3.0, -3.1})
+  for (const double x : {kSeriesTurn, -kSeriesTurn, 0.03, -0.3, 1.0, 3.0, -3.1})
   {
     double c = 0.0;
     double s = 0.0;

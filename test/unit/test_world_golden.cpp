@@ -154,7 +154,7 @@ const Golden kGolden[] = {
     {"incline_sliding_soft_step", Pipeline::Soft, [] { return scenes::incline(0.6, 0.5, 0.3); }, defaults, 120, 0xc50cffb3d4109831ULL},
     {"bouncing_soft_step", Pipeline::Soft, [] { return scenes::bouncing_disks(); }, defaults, 180, 0x4358f0c34771397cULL},
     {"bullet_soft_step", Pipeline::Soft, [] { return scenes::bullet_wall(); }, defaults, 30, 0x467559917c196034ULL},
-    {"demo_soft_step", Pipeline::Soft, [] { return scenes::demo(); }, defaults, 120, 0xe43b0ce05dbcf9a5ULL},
+    {"demo_soft_step", Pipeline::Soft, [] { return scenes::demo(); }, defaults, 120, 0x1e89f32099e11d8dULL},
     {"column_defaults", Pipeline::Fx2d, [] { return scenes::column(20); }, defaults, 120, 0xac173e8a2b9d9916ULL},
     {"gas_defaults", Pipeline::Fx2d, [] { return scenes::elastic_gas(200); }, defaults, 120, 0x95df6558a7b1d529ULL},
     {"gas_no_toggles", Pipeline::Fx2d, [] { return scenes::elastic_gas(100); },

@@ -23,6 +23,11 @@ namespace
 /// with them, so a pair turning together (a box on a tilting platform) has
 /// its normal off by up to this angle until it is detected again.
 constexpr double kMinKeptCos = 0.99985;
+// Every turn a manifold is kept for is summed by turn_of's series, not the
+// library: cos(x) <= 1 - x^2/2 + x^4/24, so cos(kSeriesTurn) lies below the bound.
+static_assert(1.0 - kSeriesTurn * kSeriesTurn / 2.0 + kSeriesTurn * kSeriesTurn * kSeriesTurn * kSeriesTurn / 24.0 <
+                  kMinKeptCos,
+              "a kept manifold's turns fit turn_of's series");
 
 bool same_pair(const WorldContact& c, BodyId a, BodyId b) { return c.a == a && c.b == b; }
 

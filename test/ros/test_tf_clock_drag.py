@@ -3,7 +3,6 @@
 and a body dragged through the interactive marker feedback topic as rviz
 drags it."""
 import math
-import threading
 import time
 import unittest
 
@@ -45,6 +44,16 @@ def wait_until(condition, timeout):
     return condition()
 
 
+def latest_transform(buffer, state, frame):
+    """The latest transform parent -> frame if it carries the state's stamp (tf2 keeps microseconds)."""
+    if not buffer.can_transform(state.header.frame_id, frame, rospy.Time(0)):
+        return None
+    transform = buffer.lookup_transform(state.header.frame_id, frame, rospy.Time(0))
+    if abs(transform.header.stamp.to_sec() - state.header.stamp.to_sec()) > 1e-6:
+        return None
+    return transform
+
+
 class TfClockDrag(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
@@ -64,11 +73,10 @@ class TfClockDrag(unittest.TestCase):
         state = self.get_world().state
         for body in state.bodies[:3] + state.bodies[-1:]:
             frame = "body_%d" % body.id
-            # The latest transform: the frame's position now (the world does not step in between).
-            found = wait_until(lambda: buffer.can_transform(state.header.frame_id, frame, rospy.Time(0)), TF_WAIT_S)
-            self.assertTrue(found, "no transform %s -> %s" % (state.header.frame_id, frame))
-            transform = buffer.lookup_transform(state.header.frame_id, frame, rospy.Time(0))
-            self.assertAlmostEqual(transform.header.stamp.to_sec(), state.header.stamp.to_sec(), delta=1e-6)
+            # load_scene published the frames too; wait for the step's (the world does not step in between).
+            transform = wait_until(lambda: latest_transform(buffer, state, frame), TF_WAIT_S)
+            self.assertTrue(transform, "no transform %s -> %s stamped %.6f s" %
+                            (state.header.frame_id, frame, state.header.stamp.to_sec()))
             self.assertAlmostEqual(transform.transform.translation.x, body.pose.x, places=9)
             self.assertAlmostEqual(transform.transform.translation.y, body.pose.y, places=9)
             rotation = transform.transform.rotation

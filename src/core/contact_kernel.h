@@ -102,7 +102,6 @@ struct ContactPoint
   double anchor_drift = 0.0;     ///< tangential slip since the point last stuck, at prepare (m)
   double base_separation = 0.0;  ///< m
   double pair_k12 = 0.0;         ///< first point of a manifold: pair_coupling, fixed for the frame (1/kg)
-  Softness softness;
   int count = 1;                 ///< points in this pair's manifold
   bool pair_block = false;       ///< first point of a manifold: whether its 2x2 block is solvable
   bool kinetic = false;          ///< slid before: the kinetic bound applies
@@ -115,9 +114,8 @@ struct ContactPoint
   std::uint32_t feature = 0;     ///< detection's feature id (beside the flags: no padding)
 
   // Detection.
-  Vec2 point;                ///< world contact point at detection (m)
-  double penetration = 0.0;  ///< depth at detection (m)
-  double separation = 0.0;   ///< signed gap at detection (m): -depth, > 0 for a speculative point
+  Vec2 point;               ///< world contact point at detection (m)
+  double separation = 0.0;  ///< signed gap at detection (m): -depth, > 0 for a speculative point
 
   // Prepare: the tangent's own mass and the Newton target (the soft step
   // sets the target each substep it bounces).
@@ -138,6 +136,22 @@ struct ContactPoint
 
   /// perp(normal): tangential impulses act on b along it.
   Vec2 tangent() const { return perp(normal); }
+  /// Overlap at detection (m), >= 0: detection sets the gap as minus it.
+  double depth() const { return std::max(0.0, -separation); }
+};
+
+/// A soft frame's two contact springs: between two bodies that move, and
+/// stiffer against one that cannot (static or kinematic). A point's spring
+/// follows from its masses, so the point does not keep a copy.
+struct ContactSprings
+{
+  Softness moving;
+  Softness fixed;
+  /// Only a dynamic body has an inverse mass (> 0, Body checks it).
+  const Softness& of(const ContactPoint& p) const
+  {
+    return p.inv_mass_a != 0.0 && p.inv_mass_b != 0.0 ? moving : fixed;
+  }
 };
 
 /// The contact points of a frame or a solve: a per-frame buffer, written
@@ -299,15 +313,16 @@ constexpr double kTouchingGap = 1e-9;
 /// friction's pull too). A speculative point (gap > 0) only removes the
 /// approach that would close its gap within the substep; an overlapping one,
 /// with `use_bias`, is pushed out at most at `max_push` (m/s) through the
-/// point's softness; without bias (the relax pass) it only stops the approach.
-void solve_soft_normal(ContactPoint& p, double gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
-                       bool use_bias);
+/// point's `spring`; without bias (the relax pass) it only stops the approach.
+void solve_soft_normal(ContactPoint& p, const Softness& spring, double gap, std::vector<BodyVelocity>& state,
+                       double inv_h, double max_push, bool use_bias);
 /// A manifold's two points solved together (the 2x2 LCP of the rigid update,
-/// each point's result scaled by its softness), so neither point's impulse
+/// each point's result scaled by the pair's `spring`), so neither point's impulse
 /// tilts the body against the other; nearly dependent points go one by one.
 /// Reads first.pair_k12 and first.pair_block, set when the frame is prepared.
-void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, double first_gap, double second_gap,
-                             std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias);
+void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, const Softness& spring, double first_gap,
+                             double second_gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
+                             bool use_bias);
 /// Takes back a point's whole normal impulse.
 void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// Drives a point toward its Newton target, of either sign (normal impulse

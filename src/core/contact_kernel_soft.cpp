@@ -36,7 +36,7 @@ namespace
 {
 /// The soft terms of one point at gap s: its push-out bias (m/s) and mass
 /// scale. A speculative point (gap > 0) may approach by its gap within the substep.
-void soft_terms(const ContactPoint& p, double s, double inv_h, double max_push, bool use_bias, double& bias,
+void soft_terms(const Softness& spring, double s, double inv_h, double max_push, bool use_bias, double& bias,
                 double& mass_scale)
 {
   bias = 0.0;
@@ -47,8 +47,8 @@ void soft_terms(const ContactPoint& p, double s, double inv_h, double max_push, 
   }
   else if (use_bias)
   {
-    bias = std::max(p.softness.mass_scale * p.softness.bias_rate * s, -max_push);
-    mass_scale = p.softness.mass_scale;
+    bias = std::max(spring.mass_scale * spring.bias_rate * s, -max_push);
+    mass_scale = spring.mass_scale;
   }
 }
 
@@ -67,35 +67,36 @@ double aimed_speed(double bias, double mass_scale, bool use_bias) { return use_b
 
 // A soft update is mass_scale times the rigid update toward the speed
 // -bias / mass_scale: lambda' = ms max(0, lambda - (vn + bias / ms) / k).
-void solve_soft_normal(ContactPoint& p, double gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
-                       bool use_bias)
+void solve_soft_normal(ContactPoint& p, const Softness& spring, double gap, std::vector<BodyVelocity>& state,
+                       double inv_h, double max_push, bool use_bias)
 {
   double bias = 0.0;
   double mass_scale = 1.0;
-  soft_terms(p, gap, inv_h, max_push, use_bias, bias, mass_scale);
+  soft_terms(spring, gap, inv_h, max_push, use_bias, bias, mass_scale);
   const double vn = dot(relative_velocity(p, state), p.normal);
   const double rigid = p.lambda_n - (vn + aimed_speed(bias, mass_scale, use_bias)) * p.normal_mass;
   set_soft_impulse(p, mass_scale * std::max(0.0, rigid), state);
 }
 
-void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, double first_gap, double second_gap,
-                             std::vector<BodyVelocity>& state, double inv_h, double max_push, bool use_bias)
+void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, const Softness& spring, double first_gap,
+                             double second_gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
+                             bool use_bias)
 {
   const double k11 = first.k_n;
   const double k22 = second.k_n;
   const double k12 = first.pair_k12;  // prepared with the frame (world_soft_step.cpp)
   if (!first.pair_block)
   {
-    solve_soft_normal(first, first_gap, state, inv_h, max_push, use_bias);
-    solve_soft_normal(second, second_gap, state, inv_h, max_push, use_bias);
+    solve_soft_normal(first, spring, first_gap, state, inv_h, max_push, use_bias);
+    solve_soft_normal(second, spring, second_gap, state, inv_h, max_push, use_bias);
     return;
   }
   double bias1 = 0.0;
   double bias2 = 0.0;
   double scale1 = 1.0;
   double scale2 = 1.0;
-  soft_terms(first, first_gap, inv_h, max_push, use_bias, bias1, scale1);
-  soft_terms(second, second_gap, inv_h, max_push, use_bias, bias2, scale2);
+  soft_terms(spring, first_gap, inv_h, max_push, use_bias, bias1, scale1);
+  soft_terms(spring, second_gap, inv_h, max_push, use_bias, bias2, scale2);
   const double x1 = first.lambda_n;
   const double x2 = second.lambda_n;
   const double q1 =

@@ -131,7 +131,7 @@ void build_rows(const std::vector<Body>& bodies, const std::vector<BodyVelocity>
     p.b = c.b;
     p.normal = c.normal;
     p.point = c.point;
-    p.penetration = c.penetration;
+    p.separation = -c.penetration;
     p.feature = c.feature;
     p.r_a = c.point - bodies[c.a].position();
     p.r_b = c.point - bodies[c.b].position();

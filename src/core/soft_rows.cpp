@@ -79,18 +79,21 @@ bool fixed(double inv_mass) { return inv_mass == 0.0; }
 
 /// What both kinds of batch keep of a manifold, from its first point.
 template <class Batch>
-void fill_common(Batch& r, int j, const ContactPoint& p, bool friction)
+void fill_common(Batch& r, int j, const ContactPoint& p, bool friction, const ContactSprings& springs)
 {
-  r.a[j] = static_cast<std::uint32_t>(p.a) | (fixed(p.inv_mass_a) ? kFixedBody : 0u);
-  r.b[j] = static_cast<std::uint32_t>(p.b) | (fixed(p.inv_mass_b) ? kFixedBody : 0u);
+  const bool a_fixed = fixed(p.inv_mass_a);
+  const bool b_fixed = fixed(p.inv_mass_b);
+  r.a[j] = static_cast<std::uint32_t>(p.a) | (a_fixed ? kFixedBody : 0u);
+  r.b[j] = static_cast<std::uint32_t>(p.b) | (b_fixed ? kFixedBody : 0u);
+  const Softness& spring = a_fixed || b_fixed ? springs.fixed : springs.moving;  // as springs.of(p)
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
   r.inv_mass_a[j] = p.inv_mass_a;
   r.inv_mass_b[j] = p.inv_mass_b;
   r.inv_inertia_a[j] = p.inv_inertia_a;
   r.inv_inertia_b[j] = p.inv_inertia_b;
-  r.bias_rate[j] = p.softness.bias_rate;
-  r.mass_scale[j] = p.softness.mass_scale;
+  r.bias_rate[j] = spring.bias_rate;
+  r.mass_scale[j] = spring.mass_scale;
   r.mu_s[j] = p.mu_s;
   r.mu_k[j] = p.mu_k;
   r.flags.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1 : 0;
@@ -143,7 +146,7 @@ void fill_padding(Batch& r, int j, std::uint32_t spare)
 /// (SIZE_MAX) whose masses are 1, so no division meets a zero.
 template <class Batch>
 void fill_manifold(Batch& r, int j, const ContactPoints& points, std::size_t first, bool friction,
-                   std::uint32_t spare)
+                   const ContactSprings& springs, std::uint32_t spare)
 {
   constexpr bool pair = std::is_same_v<Batch, RowBatch>;
   const bool padding = first == SIZE_MAX;
@@ -153,7 +156,7 @@ void fill_manifold(Batch& r, int j, const ContactPoints& points, std::size_t fir
   }
   else
   {
-    fill_common(r, j, points[first], friction);
+    fill_common(r, j, points[first], friction, springs);
     for (std::size_t k = 0; k < std::size(r.point); ++k)
     {
       fill_point(r, k, j, points[first + k]);
@@ -180,7 +183,7 @@ void pad_batches(const RowRange& range, FrameSpan<Batch>& batches, std::uint32_t
   for (std::size_t slot = range.lanes; slot < (range.end - range.begin) * kRowLanes; ++slot)
   {
     fill_manifold(batches[range.begin + slot / kRowLanes], static_cast<int>(slot % kRowLanes), {}, SIZE_MAX, false,
-                  spare);
+                  ContactSprings{}, spare);
   }
 }
 }  // namespace
@@ -199,8 +202,9 @@ std::size_t SoftRows::place_batches(Kind kind)
 }
 
 void SoftRows::pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, bool friction,
-                    WorkerPool& workers, FrameBlock& block)
+                    const ContactSprings& springs, WorkerPool& workers, FrameBlock& block)
 {
+  springs_ = springs;
   spare_ = static_cast<std::uint32_t>(velocity.size());
   velocity.push_back(body_velocity(Vec2{0.0, 0.0}, 0.0, 0.0, 0.0));
   order_manifolds(workers);                               // soft_rows_order.cpp
@@ -309,11 +313,11 @@ void SoftRows::fill_lane(const ContactPoints& points, std::size_t first, const N
   const std::size_t lane = range_of(m.colour, m.kind).begin * kRowLanes + slot;  // over all batches
   if (m.kind == Kind::Single)
   {
-    fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, spare_);
+    fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, springs_, spare_);
     lane_of_[first] = kSingleLane | static_cast<std::uint32_t>(lane);
     return;
   }
-  fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, spare_);
+  fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, springs_, spare_);
   lane_of_[first] = static_cast<std::uint32_t>(2 * lane);
   lane_of_[first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
 }

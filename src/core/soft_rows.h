@@ -150,13 +150,13 @@ public:
   /// ... and for every other point.
   void note_no_manifold(std::size_t k);
   /// Colours and packs this frame's noted manifolds (prepared, soft terms
-  /// set), the highest first; the lanes are filled by the workers. Below
+  /// set; their springs from `springs`), the highest first; the lanes are filled by the workers. Below
   /// kMinColouredManifolds they are only ordered, the highest first.
   /// `velocity` gains one spare body at its end for the padding lanes.
   /// The rows take `block` (FrameBlock: nothing else in it is alive from
   /// here until the contacts are published).
   void pack(ContactPoints& points, std::vector<BodyVelocity>& velocity, bool friction,
-            WorkerPool& workers, FrameBlock& block);
+            const ContactSprings& springs, WorkerPool& workers, FrameBlock& block);
   /// Colours in use: the greedy colouring takes the lowest free one, so
   /// they are 0 .. colour_count() - 1.
   std::size_t colour_count() const { return used_colours_; }
@@ -313,6 +313,7 @@ private:
   std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> part_others_;
   std::size_t coloured_ = 0;
   std::uint32_t spare_ = 0;              ///< index of the padding lanes' body
+  ContactSprings springs_;               ///< the frame's contact springs, which the lanes take
 };
 
 /// The lane paths of the rows, all giving the same bits: one lane at a time,

@@ -132,7 +132,6 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     row.b = j;
     row.normal = m.normal;
     row.point = m.points[c].point;
-    row.penetration = m.points[c].penetration;
     row.separation = m.points[c].separation;
     row.feature = m.points[c].feature;
     row.count = m.count;
@@ -149,7 +148,7 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
         set_new_origin(k, row);  // world_contact_reuse.cpp
       }
     }
-    deepest = std::max(deepest, row.penetration);
+    deepest = std::max(deepest, m.points[c].penetration);
     const WorldContact* cached = nullptr;
     if (warm_scale > 0.0 || friction)
     {

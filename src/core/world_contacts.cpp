@@ -315,7 +315,7 @@ void WorldImpl::publish_contacts(bool soft_frame)
       c.contact.b = row.b;
       c.contact.normal = row.normal;
       c.contact.point = row.point;
-      c.contact.penetration = row.penetration;
+      c.contact.penetration = row.depth();
       c.contact.feature = row.feature;
       c.impulse.normal = outcome.normal;
       c.impulse.tangent = outcome.tangent;

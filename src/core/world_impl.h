@@ -99,7 +99,7 @@ struct WorldImpl : WorldState
   /// Pair k's points (added by add_manifold) prepared; whether any can bounce (e > 0).
   bool prepare_pair_points(const PointPreparation& how, std::size_t k);
   /// prepare_pair_points' soft terms on points [begin, end) (whole pairs).
-  bool prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin, std::size_t end);
+  bool prepare_soft_range(std::size_t begin, std::size_t end);
   /// The bodies' side of the preparation: poses at prepare and which bodies touch.
   void prepare_soft_bodies();
   /// Body i's pose at prepare, no pose change yet, not stopped or touching.

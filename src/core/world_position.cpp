@@ -122,7 +122,7 @@ double WorldImpl::current_depth(const ContactPoint& row) const
 {
   const double approach = dot(moved_[row.b] - moved_[row.a], row.normal) + turned_[row.b] * cross(row.r_b, row.normal) -
                           turned_[row.a] * cross(row.r_a, row.normal);
-  return row.penetration - approach;
+  return row.depth() - approach;
 }
 
 void WorldImpl::correct_point(const ContactPoint& row, double depth, double softness)

@@ -132,8 +132,8 @@ void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool 
   {
     ContactPoint& q = points_[k + 1];
     const Vec2 second_offset = anchor_offset(q, velocity_);
-    solve_soft_normal_block(p, q, separation_at(p, offset), separation_at(q, second_offset), velocity_, ctx.inv_h,
-                            push, use_bias);
+    solve_soft_normal_block(p, q, springs_.of(p), separation_at(p, offset), separation_at(q, second_offset),
+                            velocity_, ctx.inv_h, push, use_bias);
     if (rough)
     {
       const double pull =
@@ -142,7 +142,7 @@ void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool 
     }
     return;
   }
-  solve_soft_normal(p, separation_at(p, offset), velocity_, ctx.inv_h, push, use_bias);
+  solve_soft_normal(p, springs_.of(p), separation_at(p, offset), velocity_, ctx.inv_h, push, use_bias);
   if (rough)
   {
     solve_friction(p, velocity_, use_bias ? anchor_pull(p, anchor_drift(p, offset), push) : 0.0);
@@ -157,7 +157,8 @@ double WorldImpl::anchor_drift(const ContactPoint& p, Vec2 offset) const
 double WorldImpl::anchor_pull(const ContactPoint& p, double drift, double max_push) const
 {
   // As the normal's push-out: the spring's rate, capped.
-  const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
+  const Softness& spring = springs_.of(p);
+  const double pull = spring.mass_scale * spring.bias_rate * drift;
   return std::max(-max_push, std::min(max_push, pull));
 }
 

@@ -50,13 +50,14 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // 1. Collide once: contacts within the margin, impulses from the last
   // frame, each pair's points prepared (masses, softness) as they are added.
   const PointPreparation preparation = point_preparation(ctx);
+  springs_ = preparation.springs;
   detect(ctx, settings_.speculative_margin, report, &preparation);  // world_contacts.cpp
   // 2. Prepare the bodies (velocities, poses, which touch); the rows from
   // the prepared points.
   prepare_soft_bodies();
   if (rows_on())
   {
-    soft_rows_.pack(points_, velocity_, ctx.effects.friction, workers_, frame_block_);  // soft_rows.cpp
+    soft_rows_.pack(points_, velocity_, ctx.effects.friction, springs_, workers_, frame_block_);  // soft_rows.cpp
   }
   find_bounce_points();                                   // world_soft_restitution.cpp
   // 3. Substeps.
@@ -95,8 +96,9 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
 PointPreparation WorldImpl::point_preparation(const StepContext& ctx) const
 {
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
-  return PointPreparation{ctx.effects, make_softness(hertz, settings_.contact_damping_ratio, ctx.h),
-                          make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h)};
+  return PointPreparation{ctx.effects,
+                          ContactSprings{make_softness(hertz, settings_.contact_damping_ratio, ctx.h),
+                                         make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h)}};
 }
 
 bool WorldImpl::prepare_pair_points(const PointPreparation& how, std::size_t k)
@@ -104,7 +106,7 @@ bool WorldImpl::prepare_pair_points(const PointPreparation& how, std::size_t k)
   const std::size_t begin = pair_rows_[k];
   const std::size_t end = pair_rows_[k + 1];
   prepare_point_range(how.effects, begin, end, false);  // world_solve.cpp: restitution aims per substep
-  return prepare_soft_range(how.moving, how.fixed, begin, end);
+  return prepare_soft_range(begin, end);
 }
 
 void WorldImpl::prepare_soft_bodies()
@@ -137,8 +139,7 @@ void WorldImpl::prepare_soft_bodies()
   }
 }
 
-bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed, std::size_t begin,
-                                   std::size_t end)
+bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)
 {
   bool bounces = false;
   for (std::size_t k = begin; k < end; ++k)
@@ -149,9 +150,6 @@ bool WorldImpl::prepare_soft_range(const Softness& moving, const Softness& fixed
       continue;
     }
     p.base_separation = p.separation - dot(p.r_b - p.r_a, p.normal);
-    // Only a dynamic body has an inverse mass (> 0, Body checks it).
-    const bool both_move = p.inv_mass_a != 0.0 && p.inv_mass_b != 0.0;
-    p.softness = both_move ? moving : fixed;
     bounces = bounces || p.restitution > 0.0;
   }
   // A manifold's normal block is the same all frame (lever arms are fixed).
@@ -238,7 +236,9 @@ void WorldImpl::aim_exact_targets(const StepContext& ctx, bool use_bias)
     ContactPoint& p = points_[k];
     p.exact = false;
     const double s = current_separation(p, velocity_);
-    const double push = std::min(-p.softness.mass_scale * p.softness.bias_rate * s, settings_.contact_push_speed);
+    // An inactive point keeps a spring that pushes nothing (its target goes unused).
+    const Softness spring = p.active ? springs_.of(p) : Softness{};
+    const double push = std::min(-spring.mass_scale * spring.bias_rate * s, settings_.contact_push_speed);
     exact_targets_[k] = s > 0.0 ? -s * ctx.inv_h : (use_bias ? push : 0.0);
   }
 }

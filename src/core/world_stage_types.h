@@ -28,12 +28,11 @@ struct StepContext
 };
 
 /// Soft step: what a pair's points are prepared with (masses, friction and
-/// restitution from the effects; the contact's spring by whether both bodies move).
+/// restitution from the effects) and the frame's contact springs.
 struct PointPreparation
 {
   ActiveEffects effects;
-  Softness moving;  ///< both bodies can move
-  Softness fixed;   ///< one cannot
+  ContactSprings springs;
 };
 
 /// Soft step, after the frame: a point's friction state as its contact

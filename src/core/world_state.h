@@ -138,6 +138,7 @@ struct WorldState
   std::vector<unsigned char> stopped_;
   std::vector<unsigned char> touching_;  ///< soft step: has a contact point this frame (bytes: the workers reset it)
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
+  ContactSprings springs_;               ///< soft step: this frame's contact springs (a point's: springs_.of(p))
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
   std::vector<double> held_theta_;

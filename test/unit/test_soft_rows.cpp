@@ -40,7 +40,14 @@ struct Scene
   detail::ContactPoints points;
 };
 
-/// A point's masses from its bodies and the soft step's default softness.
+/// The soft step's default spring, for every point (moving or not).
+detail::ContactSprings springs()
+{
+  const detail::Softness spring = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
+  return detail::ContactSprings{spring, spring};
+}
+
+/// A point's masses from its bodies.
 void prepare_soft(ContactPoint& p, const std::vector<BodyVelocity>& bodies)
 {
   p.inv_mass_a = bodies[p.a].inv_mass;
@@ -48,7 +55,6 @@ void prepare_soft(ContactPoint& p, const std::vector<BodyVelocity>& bodies)
   p.inv_inertia_a = bodies[p.a].inv_inertia;
   p.inv_inertia_b = bodies[p.b].inv_inertia;
   detail::prepare_masses(p, 0.0);
-  p.softness = detail::make_softness(40.0, 10.0, 1.0 / kInvH);
 }
 
 /// Random one-point contacts between disjoint pairs of bodies (2k, 2k + 1):
@@ -107,11 +113,12 @@ void solve_by_points(Scene& s, bool warm, bool use_bias)
   for (ContactPoint& p : s.points)
   {
     const Vec2 offset = detail::anchor_offset(p, s.bodies);
-    detail::solve_soft_normal(p, detail::separation_at(p, offset), s.bodies, kInvH, kMaxPush, use_bias);
+    const detail::Softness spring = springs().of(p);
+    detail::solve_soft_normal(p, spring, detail::separation_at(p, offset), s.bodies, kInvH, kMaxPush, use_bias);
     if (p.mu_s > 0.0 || p.mu_k > 0.0)
     {
       const double drift = p.kinetic ? 0.0 : p.anchor_drift + detail::slip_at(p, offset);
-      const double pull = p.softness.mass_scale * p.softness.bias_rate * drift;
+      const double pull = spring.mass_scale * spring.bias_rate * drift;
       detail::solve_friction(p, s.bodies, use_bias ? std::max(-kMaxPush, std::min(kMaxPush, pull)) : 0.0);
     }
   }
@@ -128,7 +135,7 @@ void solve_by_rows(Scene& s, bool warm, bool use_bias)
   {
     rows.note_manifold(k, s.points[k], nullptr, Vec2{0.0, 1.0});
   }
-  rows.pack(s.points, s.bodies, true, workers, block);
+  rows.pack(s.points, s.bodies, true, springs(), workers, block);
   ASSERT_EQ(rows.colour_count(), 1u) << "disjoint pairs share one colour";
   ASSERT_TRUE(rows.others(0).empty()) << "every manifold is in a batch";
   if (warm)
@@ -207,7 +214,7 @@ void pack_first(detail::SoftRows& rows, Scene& s, std::size_t count, detail::Wor
       rows.note_no_manifold(k);
     }
   }
-  rows.pack(s.points, s.bodies, true, workers, block);
+  rows.pack(s.points, s.bodies, true, springs(), workers, block);
   rows.drop_spare_body(s.bodies);
 }
 
@@ -306,7 +313,7 @@ void pack_crowded(Packed& out, const Scene& s, std::size_t active_every, int wor
       out.rows.note_no_manifold(k);
     }
   }
-  out.rows.pack(out.scene.points, out.scene.bodies, true, pool, out.block);
+  out.rows.pack(out.scene.points, out.scene.bodies, true, springs(), pool, out.block);
   const double* lowest = nullptr;
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {

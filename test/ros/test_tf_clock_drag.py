@@ -90,7 +90,10 @@ class TfClockDrag(unittest.TestCase):
         state_sub = rospy.Subscriber("/clocked/world_state", WorldState, states.append)
         try:
             self.assertTrue(wait_until(lambda: len(stamps) > 10, SERVICE_WAIT_S), "nothing on /clock")
-            first = next(s for s in list(states) if s.scene == "bouncing_disks")
+            # The two subscribers connect apart: wait for the state too.
+            first = wait_until(lambda: next((s for s in list(states) if s.scene == "bouncing_disks"), None),
+                               SERVICE_WAIT_S)
+            self.assertTrue(first, "nothing on /clocked/world_state")
             # Until the first reset, the clock is the world's own time.
             self.assertAlmostEqual(first.header.stamp.to_sec(), first.sim_time, delta=1e-4)
             time.sleep(CLOCK_LISTEN_S)

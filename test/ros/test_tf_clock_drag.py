@@ -19,6 +19,7 @@ from std_srvs.srv import Trigger
 NS = "/collision2d"
 SERVICE_WAIT_S = 30.0
 TF_WAIT_S = 10.0
+STEP_ATTEMPTS = 3
 CLOCK_LISTEN_S = 1.5
 DRAG_STEP_X = 0.1     # m per pose update
 DRAG_PERIOD_S = 0.05  # between pose updates: 2 m/s
@@ -71,6 +72,13 @@ class TfClockDrag(unittest.TestCase):
         self.assertTrue(self.load_scene(scene="demo").success)
         self.assertTrue(self.step(frames=30).success)
         state = self.get_world().state
+        # The publisher adds the listener just after the subscriber counts it
+        # connected, so the first changes can pass it by: step again until one arrives.
+        for _ in range(STEP_ATTEMPTS - 1):
+            if wait_until(lambda: latest_transform(buffer, state, "body_%d" % state.bodies[0].id), TF_WAIT_S):
+                break
+            self.assertTrue(self.step(frames=1).success)
+            state = self.get_world().state
         for body in state.bodies[:3] + state.bodies[-1:]:
             frame = "body_%d" % body.id
             # load_scene published the frames too; wait for the step's (the world does not step in between).

@@ -313,11 +313,13 @@ void SoftRows::fill_lane(const ContactPoints& points, std::size_t first, const N
   const std::size_t lane = range_of(m.colour, m.kind).begin * kRowLanes + slot;  // over all batches
   if (m.kind == Kind::Single)
   {
-    fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, springs_, spare_);
+    fill_manifold(singles_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, springs_,
+                  spare_);
     lane_of_[first] = kSingleLane | static_cast<std::uint32_t>(lane);
     return;
   }
-  fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, springs_, spare_);
+  fill_manifold(rows_[lane / kRowLanes], static_cast<int>(lane % kRowLanes), points, first, friction, springs_,
+                spare_);
   lane_of_[first] = static_cast<std::uint32_t>(2 * lane);
   lane_of_[first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
 }

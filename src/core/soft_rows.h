@@ -150,8 +150,9 @@ public:
   /// ... and for every other point.
   void note_no_manifold(std::size_t k);
   /// Colours and packs this frame's noted manifolds (prepared, soft terms
-  /// set; their springs from `springs`), the highest first; the lanes are filled by the workers. Below
-  /// kMinColouredManifolds they are only ordered, the highest first.
+  /// set; their springs from `springs`), the highest first; the lanes are
+  /// filled by the workers. Below kMinColouredManifolds they are only
+  /// ordered, the highest first.
   /// `velocity` gains one spare body at its end for the padding lanes.
   /// The rows take `block` (FrameBlock: nothing else in it is alive from
   /// here until the contacts are published).

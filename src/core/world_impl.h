@@ -93,9 +93,9 @@ struct WorldImpl : WorldState
 
   // world_soft_step.cpp: the soft step, top-down.
   void soft_frame(StepContext& ctx, StepReport& report);
-  /// The frame's masses and softness, for detect to prepare each pair's
-  /// points as it adds them.
-  PointPreparation point_preparation(const StepContext& ctx) const;
+  /// The frame's two contact springs (springs_), at most a quarter of the
+  /// substep rate in frequency, twice that against a body that cannot move.
+  ContactSprings contact_springs(const StepContext& ctx) const;
   /// Pair k's points (added by add_manifold) prepared; whether any can bounce (e > 0).
   bool prepare_pair_points(const PointPreparation& how, std::size_t k);
   /// prepare_pair_points' soft terms on points [begin, end) (whole pairs).

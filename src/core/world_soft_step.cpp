@@ -49,8 +49,8 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   ctx.warm = ctx.warm_available;
   // 1. Collide once: contacts within the margin, impulses from the last
   // frame, each pair's points prepared (masses, softness) as they are added.
-  const PointPreparation preparation = point_preparation(ctx);
-  springs_ = preparation.springs;
+  springs_ = contact_springs(ctx);
+  const PointPreparation preparation{ctx.effects};
   detect(ctx, settings_.speculative_margin, report, &preparation);  // world_contacts.cpp
   // 2. Prepare the bodies (velocities, poses, which touch); the rows from
   // the prepared points.
@@ -93,12 +93,12 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   cache_h_ = ctx.h;
 }
 
-PointPreparation WorldImpl::point_preparation(const StepContext& ctx) const
+ContactSprings WorldImpl::contact_springs(const StepContext& ctx) const
 {
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
-  return PointPreparation{ctx.effects,
-                          ContactSprings{make_softness(hertz, settings_.contact_damping_ratio, ctx.h),
-                                         make_softness(kStaticStiffnessFactor * hertz, settings_.contact_damping_ratio, ctx.h)}};
+  const double damping = settings_.contact_damping_ratio;
+  return ContactSprings{make_softness(hertz, damping, ctx.h),
+                        make_softness(kStaticStiffnessFactor * hertz, damping, ctx.h)};
 }
 
 bool WorldImpl::prepare_pair_points(const PointPreparation& how, std::size_t k)

@@ -28,11 +28,10 @@ struct StepContext
 };
 
 /// Soft step: what a pair's points are prepared with (masses, friction and
-/// restitution from the effects) and the frame's contact springs.
+/// restitution from the effects; their springs are the frame's, springs_).
 struct PointPreparation
 {
   ActiveEffects effects;
-  ContactSprings springs;
 };
 
 /// Soft step, after the frame: a point's friction state as its contact

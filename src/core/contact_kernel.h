@@ -147,11 +147,10 @@ struct ContactSprings
 {
   Softness moving;
   Softness fixed;
+  /// The spring of a contact that touches a body that cannot move, or not.
+  const Softness& against(bool fixed_body) const { return fixed_body ? fixed : moving; }
   /// Only a dynamic body has an inverse mass (> 0, Body checks it).
-  const Softness& of(const ContactPoint& p) const
-  {
-    return p.inv_mass_a != 0.0 && p.inv_mass_b != 0.0 ? moving : fixed;
-  }
+  const Softness& of(const ContactPoint& p) const { return against(p.inv_mass_a == 0.0 || p.inv_mass_b == 0.0); }
 };
 
 /// The contact points of a frame or a solve: a per-frame buffer, written

@@ -110,10 +110,11 @@ void solve_by_points(Scene& s, bool warm, bool use_bias)
       detail::warm_start(p, s.bodies);
     }
   }
+  const detail::ContactSprings frame_springs = springs();
   for (ContactPoint& p : s.points)
   {
     const Vec2 offset = detail::anchor_offset(p, s.bodies);
-    const detail::Softness spring = springs().of(p);
+    const detail::Softness& spring = frame_springs.of(p);
     detail::solve_soft_normal(p, spring, detail::separation_at(p, offset), s.bodies, kInvH, kMaxPush, use_bias);
     if (p.mu_s > 0.0 || p.mu_k > 0.0)
     {

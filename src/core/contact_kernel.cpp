@@ -78,7 +78,7 @@ void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state)
 bool solve_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
   const double vn = dot(relative_velocity(p, state), p.normal);
-  const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass);
+  const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass());
   const double change = total - p.lambda_n;
   p.lambda_n = total;
   apply_impulse(p, change * p.normal, state);
@@ -102,7 +102,7 @@ bool solve_friction(ContactPoint& p, std::vector<BodyVelocity>& state, double bi
 {
   const double slip = dot(relative_velocity(p, state), p.tangent());
   const double vt = bias == 0.0 ? slip : slip + bias;
-  const double total = coulomb(p, p.lambda_t - vt * p.tangent_mass, p.lambda_n);
+  const double total = coulomb(p, p.lambda_t - vt * p.tangent_mass(), p.lambda_n);
   const double change = total - p.lambda_t;
   p.lambda_t = total;
   apply_impulse(p, change * p.tangent(), state);
@@ -128,8 +128,8 @@ bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<B
   const Vec2 n = first.normal;
   // K's diagonal from the stored masses the per-point passes use (the Fx2D
   // pipeline's golden trajectories are pinned with this rounding).
-  const double k11 = 1.0 / first.normal_mass;
-  const double k22 = 1.0 / second.normal_mass;
+  const double k11 = 1.0 / first.normal_mass();
+  const double k22 = 1.0 / second.normal_mass();
   const double k12 = pair_coupling(first, second);
   if (!block_solvable(k11, k12, k22))
   {

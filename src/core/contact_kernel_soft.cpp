@@ -74,7 +74,7 @@ void solve_soft_normal(ContactPoint& p, const Softness& spring, double gap, std:
   double mass_scale = 1.0;
   soft_terms(spring, gap, inv_h, max_push, use_bias, bias, mass_scale);
   const double vn = dot(relative_velocity(p, state), p.normal);
-  const double rigid = p.lambda_n - (vn + aimed_speed(bias, mass_scale, use_bias)) * p.normal_mass;
+  const double rigid = p.lambda_n - (vn + aimed_speed(bias, mass_scale, use_bias)) * p.normal_mass();
   set_soft_impulse(p, mass_scale * std::max(0.0, rigid), state);
 }
 
@@ -120,7 +120,7 @@ void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
   const double vn = dot(relative_velocity(p, state), p.normal);
-  const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass);
+  const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass());
   const double applied = total - p.lambda_n;
   p.lambda_n = total;
   apply_impulse(p, applied * p.normal, state);

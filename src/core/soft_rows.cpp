@@ -171,8 +171,8 @@ void fill_manifold(Batch& r, int j, const ContactPoints& points, std::size_t fir
   }
   else
   {
-    r.normal_mass[j] = padding ? 1.0 : points[first].normal_mass;
-    r.tangent_mass[j] = padding ? 1.0 : points[first].tangent_mass;
+    r.normal_mass[j] = padding ? 1.0 : points[first].normal_mass();
+    r.tangent_mass[j] = padding ? 1.0 : points[first].tangent_mass();
   }
 }
 

@@ -181,35 +181,38 @@ A thirty-fifth, on a new host (an AMD EPYC with 2 virtual CPUs; commit
 3756614, and trials not kept; scratch builds, not committed). The point
 drops its two effective masses, which are now worked out where they are
 read (1 / k, the same bits): 272 -> 256 bytes a point. Peak memory above
-start (`collision2d_scaling_bench`, 1 worker, kB a body): pyramid of 9870
-boxes 4.89 -> 4.79, of 99681 4.77 -> 4.68, rain of 1e4 2.04 -> 2.01; the
-pyramid of 2016 boxes 1255.9 -> 1255.0 million instructions over its 40
-frames, and the time the same (10 paired whole runs pinned to one CPU,
-new/old 1.004, 0.96 to 1.02). Aligning the point to a cache line as well
-gave 0.985 on the pyramid of 9870 and on the rain of 1e4, within the
-spread: not kept. Two workers on the rain of 1e4 over the bench's
-default window (frames 61 to 110) gained little on this host: 3.9 to 4.0
-ms a frame on 1 worker, 3.6 to 3.7 on 2 (over frames 61 to 260, 3.2 to
-3.3 and 2.2 to 2.3), against 1.7 times on the pyramid of 9870 (11.3 ->
-6.7 ms). It is not the host: a one-worker run beside a copy on the other CPU
-took 0.98 to 1.03 of its time alone (5 pairs each, rain and pyramid). A
-clock around each stage of the soft frame (all 110 frames, ms, 1 -> 2
-workers): detection 124.6 -> 99.8, the bodies' preparation 12.3 -> 12.2,
-packing the rows 17.2 -> 22.1, the solve passes 31.4 -> 31.1, the relax
-passes 20.5 -> 18.3, moving the bodies 28.2 -> 18.6, publishing 16.0 ->
-13.5; within detection, in another run with a clock around its parts
-(slower throughout: 5.3 and 4.1 ms a frame), the broad phase 80.0 -> 51.8,
-the narrow phase 27.3 -> 18.5, adding and preparing the points 34.3 ->
-24.9, posing the outlines 11.4 -> 4.6. The rain's frames then hold about a thousand manifolds in a few
-colours, so a colour's share is some ten microseconds: in `perf record`
-the row work of both threads came to 1.3 times that of one worker, and
-the second worker waited at the colours' meetings for 45% of its time in
-the passes. Tried and not kept: workers taking a colour's batches 8 or
-64 at a time from a shared count instead of a fixed half each (same
-bits; pyramid of 9870 on 2 workers 2.2 and 1.6 times slower, rain 1.4
-and 1.2 times: neighbouring batches on two cores share the bodies'
-cache lines); spinning 4096 or 2^20 pauses instead of 64 before a
-waiting worker yields (rain on 2 workers, 8 pairs, 0.95 to 1.06); the
-passes shared from 256 or 4096 coloured manifolds instead of 1024 (0.98
-to 1.03, 0.91 to 1.03).
+start (`collision2d_scaling_bench`, 1 worker, kB a body): pyramid of
+9870 boxes 4.89 -> 4.79, of 99681 4.77 -> 4.68, rain of 1e4 2.04 ->
+2.01; the pyramid of 2016 boxes 1255.9 -> 1255.0 million instructions
+over its 40 frames, and the time the same (10 paired whole runs pinned
+to one CPU, new/old 1.004, 0.96 to 1.02). Aligning the point to a cache
+line as well gave 0.985 on the pyramid of 9870 and on the rain of 1e4,
+within the spread: not kept. Two workers on the rain of 1e4 over the
+bench's default window (frames 61 to 110) gained little on this host:
+3.9 to 4.0 ms a frame on 1 worker, 3.6 to 3.7 on 2 (over frames 61 to
+260, 3.2 to 3.3 and 2.2 to 2.3), against 1.7 times on the pyramid of
+9870 (11.3 -> 6.7 ms). It is not the host: a one-worker run beside a
+copy on the other CPU took 0.98 to 1.03 of its time alone (5 pairs each,
+rain and pyramid). A clock around each stage of the soft frame, over the
+bench's 50 timed frames (ms in all, 1 -> 2 workers; a second run of each
+within 10%): the whole frame 193 -> 169; detection 92.6 -> 75.6, of it
+the broad phase 32.7 -> 29.8 (the rain's boxes keep leaving their
+enlarged ones, so the grid is built every frame), the narrow phase 17.5
+-> 12.6, adding and preparing the points 25.3 -> 18.0, posing the
+outlines 3.0 -> 1.6; packing the rows 13.9 -> 19.1; the solve passes
+29.2 -> 27.8, the relax passes 19.0 -> 16.4; moving the bodies 12.7 ->
+9.2; publishing 15.9 -> 12.0; the bodies' preparation 4.4 -> 3.9. The
+rain's frames then hold about a thousand manifolds in a few colours, so
+a colour's share is some ten microseconds: in `perf record` the row work
+of both threads came to 1.3 times that of one worker, and the second
+worker waited at the colours' meetings for 45% of its time in the
+passes. Tried and not kept: workers taking a colour's batches 8 or 64 at
+a time from a shared count instead of a fixed half each (same bits;
+pyramid of 9870 on 2 workers 2.2 and 1.6 times slower, rain 1.4 and 1.2
+times: neighbouring batches on two cores share the bodies' cache lines);
+spinning 4096 or 2^20 pauses instead of 64 before a waiting worker
+yields (rain on 2 workers, 8 pairs, 0.95 to 1.06); the passes shared
+from 256 or 4096 coloured manifolds instead of 1024 (0.98 to 1.03, 0.91
+to 1.03); packing on one thread below 16384 points instead of 2048 (10
+pairs, median 1.02).
 """

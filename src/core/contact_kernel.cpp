@@ -126,8 +126,8 @@ bool solve_normal_block(ContactPoint& first, ContactPoint& second, std::vector<B
   // Solved one after the other, the first point's impulse tilts the body and
   // biases the second; solved together, a box on a floor rests after one pass.
   const Vec2 n = first.normal;
-  // K's diagonal from the stored masses the per-point passes use (the Fx2D
-  // pipeline's golden trajectories are pinned with this rounding).
+  // K's diagonal as 1 / normal_mass(), the rounding the per-point passes'
+  // masses carry (the Fx2D pipeline's golden trajectories are pinned with it).
   const double k11 = 1.0 / first.normal_mass();
   const double k22 = 1.0 / second.normal_mass();
   const double k12 = pair_coupling(first, second);

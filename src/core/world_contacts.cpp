@@ -51,13 +51,13 @@ double WorldImpl::frame_reach(const Body& b) const
   return along + std::abs(b.omega()) * b.radius() * dt;
 }
 
-void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report, const PointPreparation* prepare)
+void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report, bool prepare)
 {
   pose_bodies();                                          // world_pose.cpp
   margin_ = margin;
   // Kept within the margin: a feature out of reach when the points were found
   // cannot reach the other body before the pair is found again.
-  reuse_distance_ = prepare != nullptr ? std::min(settings_.contact_reuse_distance, margin) : 0.0;
+  reuse_distance_ = prepare ? std::min(settings_.contact_reuse_distance, margin) : 0.0;
   // A mover that reaches a sleeping island wakes all of it, and the woken
   // bodies are movers for a second look: the island's contacts are solved in
   // the frame it wakes.
@@ -71,7 +71,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   const bool friction = ctx.effects.friction;
   const std::size_t rows = place_pair_rows(warm_scale > 0.0 || friction);
   resize_to_overwrite(points_, rows);  // add_manifold writes every row
-  if (prepare != nullptr)
+  if (prepare)
   {
     soft_rows_.expect_points(rows);
   }
@@ -85,9 +85,9 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
       if (collided_[k] == Collided::Hit)
       {
         range_deepest = std::max(range_deepest, add_manifold(k, warm_scale, friction));
-        if (prepare != nullptr)
+        if (prepare)
         {
-          range_bounces = prepare_pair_points(*prepare, k) || range_bounces;  // world_soft_step.cpp
+          range_bounces = prepare_pair_points(ctx.effects, k) || range_bounces;  // world_soft_step.cpp
         }
       }
     }
@@ -98,7 +98,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
     }
   });
   report.max_detected_penetration = deepest.load();
-  if (prepare != nullptr)
+  if (prepare)
   {
     bounces_ = bounces.load();
   }

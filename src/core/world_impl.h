@@ -97,7 +97,7 @@ struct WorldImpl : WorldState
   /// substep rate in frequency, twice that against a body that cannot move.
   ContactSprings contact_springs(const StepContext& ctx) const;
   /// Pair k's points (added by add_manifold) prepared; whether any can bounce (e > 0).
-  bool prepare_pair_points(const PointPreparation& how, std::size_t k);
+  bool prepare_pair_points(const ActiveEffects& effects, std::size_t k);
   /// prepare_pair_points' soft terms on points [begin, end) (whole pairs).
   bool prepare_soft_range(std::size_t begin, std::size_t end);
   /// The bodies' side of the preparation: poses at prepare and which bodies touch.
@@ -191,9 +191,10 @@ struct WorldImpl : WorldState
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;
   /// Contacts at the current poses; pairs within `margin` (m) are kept too.
-  /// With `prepare` (the soft step), each pair's points are prepared as they
-  /// are added, while they are in cache, and bounces_ says whether any can bounce.
-  void detect(const StepContext& ctx, double margin, StepReport& report, const PointPreparation* prepare = nullptr);
+  /// With `prepare` (the soft step), each pair's points are prepared with
+  /// ctx's effects as they are added, while they are in cache, and bounces_
+  /// says whether any can bounce.
+  void detect(const StepContext& ctx, double margin, StepReport& report, bool prepare = false);
   /// Broad and narrow phase of the pairs with a mover, within margin_.
   void find_mover_pairs();
   /// pairs_: the movers' pairs merged with the resting grid's, in (i, j) order.

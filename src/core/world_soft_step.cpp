@@ -50,8 +50,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // 1. Collide once: contacts within the margin, impulses from the last
   // frame, each pair's points prepared (masses, softness) as they are added.
   springs_ = contact_springs(ctx);
-  const PointPreparation preparation{ctx.effects};
-  detect(ctx, settings_.speculative_margin, report, &preparation);  // world_contacts.cpp
+  detect(ctx, settings_.speculative_margin, report, true);  // world_contacts.cpp
   // 2. Prepare the bodies (velocities, poses, which touch); the rows from
   // the prepared points.
   prepare_soft_bodies();
@@ -101,11 +100,11 @@ ContactSprings WorldImpl::contact_springs(const StepContext& ctx) const
                         make_softness(kStaticStiffnessFactor * hertz, damping, ctx.h)};
 }
 
-bool WorldImpl::prepare_pair_points(const PointPreparation& how, std::size_t k)
+bool WorldImpl::prepare_pair_points(const ActiveEffects& effects, std::size_t k)
 {
   const std::size_t begin = pair_rows_[k];
   const std::size_t end = pair_rows_[k + 1];
-  prepare_point_range(how.effects, begin, end, false);  // world_solve.cpp: restitution aims per substep
+  prepare_point_range(effects, begin, end, false);  // world_solve.cpp: restitution aims per substep
   return prepare_soft_range(begin, end);
 }
 

@@ -27,13 +27,6 @@ struct StepContext
   bool warm = false;           ///< this substep starts from cached impulses
 };
 
-/// Soft step: what a pair's points are prepared with (masses, friction and
-/// restitution from the effects; their springs are the frame's, springs_).
-struct PointPreparation
-{
-  ActiveEffects effects;
-};
-
 /// Soft step, after the frame: a point's friction state as its contact
 /// carries it to the next frame (WorldImpl::carry_slip).
 struct CarriedSlip

@@ -91,7 +91,8 @@ std::vector<geometry_msgs::Point> vertices(Draw& draw, double size)
   {
     for (int i = 0; i < count; ++i)
     {
-      out.push_back(point(size * draw.range(-1.0, 1.0), size * draw.range(-1.0, 1.0)));
+      const double x = size * draw.range(-1.0, 1.0);  // one draw a statement: inputs decode alike under clang and gcc
+      out.push_back(point(x, size * draw.range(-1.0, 1.0)));
     }
     return out;
   }
@@ -116,7 +117,8 @@ BodyMsg body(Draw& draw, double scale, double speed)
   msg.id = in.ConsumeIntegralInRange<std::uint32_t>(0, kMaxId);
   msg.shape = in.ConsumeIntegralInRange<std::uint8_t>(0, 2);
   msg.type = in.ConsumeIntegralInRange(0, 9) < 8 ? BodyMsg::DYNAMIC : in.ConsumeIntegralInRange<std::uint8_t>(1, 3);
-  msg.mass = draw.log_range(fuzz::kMinMass, fuzz::kMaxMass) * (in.ConsumeIntegralInRange(0, 15) == 0 ? -1.0 : 1.0);
+  msg.mass = draw.log_range(fuzz::kMinMass, fuzz::kMaxMass);
+  msg.mass *= in.ConsumeIntegralInRange(0, 15) == 0 ? -1.0 : 1.0;
   const double size = scale * draw.log_range(0.05, 2.0);
   if (msg.shape == BodyMsg::DISK)
   {
@@ -131,7 +133,8 @@ BodyMsg body(Draw& draw, double scale, double speed)
   msg.pose.theta = draw.range(-kTwoPi, kTwoPi);
   msg.twist.linear.x = speed * draw.range(-1.0, 1.0);
   msg.twist.linear.y = speed * draw.range(-1.0, 1.0);
-  msg.twist.angular.z = draw.range(-fuzz::kMaxSpin, fuzz::kMaxSpin) * draw.range(0.0, 1.0);
+  msg.twist.angular.z = draw.range(-fuzz::kMaxSpin, fuzz::kMaxSpin);
+  msg.twist.angular.z *= draw.range(0.0, 1.0);
   msg.material.restitution = draw.range(0.0, 1.0);
   msg.material.static_friction = draw.range(0.0, 1.0);
   msg.material.kinetic_friction = draw.range(0.0, 1.0);

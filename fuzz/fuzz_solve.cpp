@@ -94,16 +94,23 @@ std::vector<Vec2> ellipse_outline(Draw& draw, double size)
   return outline;
 }
 
+Body polygon_body(Draw& draw, double mass, double size, Vec2 p, Vec2 v, double omega)
+{
+  std::vector<Vec2> outline = ellipse_outline(draw, size);  // drawn before the angle, as clang orders the arguments
+  const double theta = draw.range(-kTwoPi, kTwoPi);
+  return Body(mass, outline, p, v, theta, omega);
+}
+
 Body make_body(Draw& draw, double scale, Vec2 offset, double speed)
 {
   const double mass = draw.log_range(fuzz::kMinMass, fuzz::kMaxMass);
   const double size = scale * draw.log_range(0.05, 2.0);
   const Vec2 p = offset + scale * Vec2{draw.range(-2.0, 2.0), draw.range(-2.0, 2.0)};
   const Vec2 v{speed * draw.range(-1.0, 1.0), speed * draw.range(-1.0, 1.0)};
-  const double omega = draw.range(-fuzz::kMaxSpin, fuzz::kMaxSpin) * draw.range(0.0, 1.0);
+  const double spin = draw.range(-fuzz::kMaxSpin, fuzz::kMaxSpin);
+  const double omega = spin * draw.range(0.0, 1.0);
   const bool disk = draw.in().ConsumeBool();
-  Body body = disk ? Body(mass, size, p, v, omega)
-                   : Body(mass, ellipse_outline(draw, size), p, v, draw.range(-kTwoPi, kTwoPi), omega);
+  Body body = disk ? Body(mass, size, p, v, omega) : polygon_body(draw, mass, size, p, v, omega);
   switch (draw.in().ConsumeIntegralInRange(0, 9))
   {
     case 0:
@@ -189,9 +196,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   bool check = false;
   try
   {
-    const ContactSolver solver(draw.range(0.0, 1.0), draw.range(0.0, 2.0),
-                               in.ConsumeIntegralInRange(1, kMaxIterations), draw.log_range(1e-14, 1e-3),
-                               draw.range(0.0, 1.0), scale * draw.range(0.0, 0.01));
+    // One draw a statement: the order of a call's arguments is the
+    // compiler's, and an input must decode alike under clang and gcc.
+    const double restitution = draw.range(0.0, 1.0);
+    const double friction = draw.range(0.0, 2.0);
+    const int iterations = in.ConsumeIntegralInRange(1, kMaxIterations);
+    const double tolerance = draw.log_range(1e-14, 1e-3);
+    const double bias_factor = draw.range(0.0, 1.0);
+    const double slop = scale * draw.range(0.0, 0.01);
+    const ContactSolver solver(restitution, friction, iterations, tolerance, bias_factor, slop);
     const int count = in.ConsumeIntegralInRange(kMinBodies, kMaxBodies);
     for (int i = 0; i < count; ++i)
     {

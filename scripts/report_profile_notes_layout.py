@@ -226,12 +226,13 @@ grid search with its copy went from 13.6 to 9.0 ms, but the sort from
 list (both cores then write the same groups' cache lines), the broad
 phase 29.3 -> 29.2 in all.
 
-A thirty-sixth, on the host of the thirty-fifth (commit 7291b55, and a
-trial not kept; scratch builds, not committed). Where two workers lose
+A thirty-sixth, on the host of the thirty-fifth (commits a21e345 and
+7291b55, the same core, and a trial not kept; scratch builds, not
+committed). Where two workers lose
 time on the rain of 1e5: a clock around each soft-frame stage, in ms
 summed over the 25 timed frames (medians of 3 runs each, 1 -> 2
 workers; the bench read 27.6 - 28.5 ms a frame on 1 worker and 17.0 -
-17.7 on 2, 1.61 to 1.65 times): the whole frame 677 -> 436; detection
+17.7 on 2, 1.61 to 1.65 times): the soft frame in all 677 -> 436; detection
 406 -> 275, of it the broad phase 163 -> 139, the narrow phase 72 -> 39,
 adding and preparing the points 91 -> 51, posing the outlines 24 -> 10,
 the mover boxes 21 -> 8; the bodies' preparation 32 -> 14; packing the
@@ -243,9 +244,10 @@ workers'; halved like the narrow phase it would make two workers about
 1.8 times one. Within it (2 runs): the grid's pairs 85 - 87 -> 61 - 67,
 sorting them 26 - 28 -> 19 - 23 (the counting and scattering are
 serial), filling the grid 23 - 33 -> 16 - 19, classifying the boxes 18
-- 22 -> 11 - 12, placing them 6.5 -> 3.4. For some minutes of this
+- 22 -> 11 - 12, placing them 6.5 - 6.7 -> 3.4 - 3.5. For some minutes of this
 session one virtual CPU ran the pyramid of 9870 boxes on 1 worker 1.4
-times slower than the other (16.2 against 11.7 ms, pinned) and 2 workers
+times slower than the other (15.6 - 17.3 against 10.6 - 12.0 ms,
+pinned) and 2 workers
 took 9.0 - 9.2 ms instead of 6.8 - 7.1; minutes later both CPUs ran it
 in 11.3 - 11.5 ms. The worker figures of a report depend on such spells.
 Tried and not kept: the worker pool cutting each job into 2 or 4 shares

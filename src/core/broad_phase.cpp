@@ -76,18 +76,16 @@ void BroadPhase::find_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair
 void BroadPhase::find_pairs_with(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
   // The pairs end sorted, so the order the parts found them in does not show.
-  pairs.clear();
   if (boxes.size() <= kAllPairsBoxes)
   {
+    pairs.clear();
     all_pairs(boxes, pairs);
     return;
   }
   place_grid(boxes, runner);
   classify(boxes, runner);
   fill_grid(runner);
-  pairs_in_grid(boxes, pairs, runner);
-  pairs_of_large(boxes, pairs);
-  sort_pairs(boxes.size(), pairs, runner);
+  pairs_in_grid(boxes, pairs, runner);  // broad_phase_grid.cpp
 }
 
 void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs)
@@ -351,50 +349,6 @@ void BroadPhase::pairs_of_large(const std::vector<Aabb>& boxes, std::vector<Body
     }
     large_against_grid(boxes, large_[k], pairs);
   }
-}
-
-void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs, RangeRunner* runner)
-{
-  // Counting sort on the first index, then each body's few partners sorted:
-  // O(n + pairs) where a full sort would be O(pairs log pairs).
-  pair_start_.assign(box_count + 1, 0);
-  for (const BodyPair& p : pairs)
-  {
-    ++pair_start_[p.first];
-  }
-  std::size_t end = 0;
-  for (std::size_t& start : pair_start_)
-  {
-    end += start;
-    start = end;  // one past the group's end, decremented while scattering
-  }
-  // Both buffers grow geometrically (they are swapped): a creeping count allocates rarely.
-  detail::resize_to_overwrite(sorted_pairs_, pairs.size());  // the scatter writes every slot
-  for (const BodyPair& p : pairs)
-  {
-    sorted_pairs_[--pair_start_[p.first]] = p;
-  }
-  // Each body's group is its own: the parts sort theirs apart.
-  const auto sort_groups = [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i)
-    {
-      std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
-                sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i + 1]));
-    }
-  };
-  const std::size_t parts = detail::runner_parts(runner, box_count);
-  if (parts == 1)
-  {
-    sort_groups(0, box_count);
-  }
-  else
-  {
-    detail::run_parts(*runner, parts, [&](std::size_t part) {
-      sort_groups(detail::part_begin(box_count, part, parts), detail::part_begin(box_count, part + 1, parts));
-    });
-  }
-  // Swapping hands the sorted buffer out and keeps the old one as scratch.
-  pairs.swap(sorted_pairs_);
 }
 
 }  // namespace collision2d

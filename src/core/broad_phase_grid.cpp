@@ -187,42 +187,75 @@ void BroadPhase::scatter_entries(std::size_t part, std::size_t parts, std::size_
 
 void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
-  // Each bucket is searched (and its entries sorted) by one part only.
-  const std::size_t buckets = bucket_start_.size() - 1;
   const std::size_t parts = detail::runner_parts(runner, entries_.size());
   if (parts == 1)
   {
-    pairs_in_buckets(boxes, 0, buckets, pairs);
+    pairs.clear();
+    pairs_of_large(boxes, pairs);
+    auto add = [&pairs](std::size_t i, std::size_t j) { pairs.emplace_back(i, j); };
+    pairs_in_buckets(boxes, 0, bucket_start_.size() - 1, add);
+    sort_pairs(boxes.size(), pairs, runner);  // broad_phase_sort.cpp
     return;
   }
-  // The parts take equal shares of the entries, not of the buckets: a dense
+  // `pairs` keeps its last contents until the sorted pairs replace them: the
+  // buffer it hands over for the next call has every slot written once.
+  large_pairs_.clear();
+  pairs_of_large(boxes, large_pairs_);
+  search_in_parts(boxes, parts, *runner);
+  sort_in_parts(boxes.size(), parts, *runner, pairs);  // broad_phase_sort.cpp
+}
+
+void BroadPhase::search_in_parts(const std::vector<Aabb>& boxes, std::size_t parts, RangeRunner& runner)
+{
+  // Each bucket is searched (and its entries sorted) by one part only. The
+  // parts take equal shares of the entries, not of the buckets: a dense
   // grid's buckets are rows of cells, and a pyramid's lower rows hold most of
   // its boxes. Bucket b goes to the part its first entry falls in.
+  const std::size_t buckets = bucket_start_.size() - 1;
   const auto first_bucket = [&](std::size_t part) {
+    if (part == parts)
+    {
+      return buckets;
+    }
     const std::size_t entry = entries_.size() * part / parts;
     return static_cast<std::size_t>(
         std::lower_bound(bucket_start_.begin(), bucket_start_.begin() + static_cast<std::ptrdiff_t>(buckets), entry) -
         bucket_start_.begin());
   };
-  detail::collect_in_parts(*runner, parts, part_pairs_, pairs, [&](std::size_t part, std::vector<BodyPair>& found) {
-    pairs_in_buckets(boxes, first_bucket(part), part + 1 == parts ? buckets : first_bucket(part + 1), found);
+  part_pairs_.resize(parts * parts);
+  choose_owners(boxes.size(), parts);  // broad_phase_sort.cpp
+  detail::run_parts(runner, parts, [&](std::size_t part) {
+    PartPairs* lists = part_pairs_.data() + part * parts;
+    for (std::size_t owner = 0; owner < parts; ++owner)
+    {
+      lists[owner].pairs.clear();
+    }
+    auto add = [&](std::size_t i, std::size_t j) {
+      std::size_t owner = 0;
+      while (i >= owner_box_[owner + 1])
+      {
+        ++owner;
+      }
+      lists[owner].pairs.emplace_back(i, j);
+    };
+    pairs_in_buckets(boxes, first_bucket(part), first_bucket(part + 1), add);
   });
 }
 
-void BroadPhase::pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
-                                  std::vector<BodyPair>& pairs)
+template <class Add>
+void BroadPhase::pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end, Add& add)
 {
   for (std::size_t b = begin; b < end; ++b)
   {
     if (bucket_start_[b + 1] - bucket_start_[b] > 1)
     {
-      pairs_in_bucket(boxes, bucket_start_[b], bucket_start_[b + 1], pairs);
+      pairs_in_bucket(boxes, bucket_start_[b], bucket_start_[b + 1], add);
     }
   }
 }
 
-void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end,
-                                 std::vector<BodyPair>& pairs)
+template <class Add>
+void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end, Add& add)
 {
   // `same_cell` joins the box test with `&`: one branch for the whole test
   // (Aabb::overlaps), where a bucket of two or three boxes mispredicts each
@@ -230,7 +263,7 @@ void BroadPhase::pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t beg
   const auto report_if_overlapping = [&](bool same_cell, const Entry& a, const Entry& b) {
     if ((same_cell & boxes[a.box].overlaps(boxes[b.box])) && owns(a.cx, a.cy, a.box, b.box))
     {
-      pairs.emplace_back(std::min(a.box, b.box), std::max(a.box, b.box));
+      add(std::min(a.box, b.box), std::max(a.box, b.box));
     }
   };
   if (end - begin <= kAllPairsBucket)

@@ -63,8 +63,9 @@ void run_parts(RangeRunner& runner, std::size_t parts, F f)
 
 /// Calls fill(part, list) for every part on the runner's threads, each with
 /// its own list from `lists` (emptied, its storage kept from the last call),
-/// then appends the lists to `out` in part order, copied in parts: what one
-/// pass appending in order gives.
+/// then replaces `out` with the lists in part order, copied in parts: what one
+/// pass appending in order gives. `out` is resized over its old contents, so
+/// only the slots past its old size are zeroed first.
 template <class T, class Fill>
 void collect_in_parts(RangeRunner& runner, std::size_t parts, std::vector<std::vector<T>>& lists,
                       std::vector<T>& out, Fill fill)
@@ -79,15 +80,14 @@ void collect_in_parts(RangeRunner& runner, std::size_t parts, std::vector<std::v
     fill(part, list);
     list.swap(lists[part]);
   });
-  const std::size_t start = out.size();
   std::size_t total = 0;
   for (const std::vector<T>& list : lists)
   {
     total += list.size();
   }
-  out.resize(start + total);
+  out.resize(total);
   run_parts(runner, parts, [&](std::size_t part) {
-    std::size_t at = start;
+    std::size_t at = 0;
     for (std::size_t p = 0; p < part; ++p)
     {
       at += lists[p].size();

@@ -84,9 +84,9 @@ void FatBoxPairs::keep_overlapping(const std::vector<Aabb>& boxes, std::vector<B
   };
   const std::size_t n = fat_pairs_.size();
   const std::size_t parts = runner_parts(&runner, n);
-  pairs.clear();
   if (parts == 1)
   {
+    pairs.clear();
     keep(0, n, pairs);
     return;
   }

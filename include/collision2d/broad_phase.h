@@ -129,6 +129,9 @@ private:
 
   /// The grid's pairs and the large boxes', sorted, replace `pairs`.
   void pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner);
+  /// Part `part` of `parts`: its share of the buckets searched, each pair
+  /// listed under the part that owns its first box.
+  void search_part(const std::vector<Aabb>& boxes, std::size_t part, std::size_t parts);
   /// The pairs found in buckets [begin, end), each passed to add(i, j).
   template <class Add>
   void pairs_in_buckets(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end, Add& add);
@@ -136,19 +139,14 @@ private:
   void pairs_in_bucket(const std::vector<Aabb>& boxes, std::size_t begin, std::size_t end, Add& add);
   void pairs_of_large(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs);
   void large_against_grid(const std::vector<Aabb>& boxes, std::size_t large, std::vector<BodyPair>& pairs) const;
-  void sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs, RangeRunner* runner);
-  /// Shared by `parts` parts: each searches its share of the buckets, listing
-  /// each pair under the part that owns its first box (a share of the box
-  /// indices) ...
-  void search_in_parts(const std::vector<Aabb>& boxes, std::size_t parts, RangeRunner& runner);
-  /// ... then each owner sorts its pairs, with the large boxes' it owns,
-  /// into its own stretch of the result, which replaces `pairs`.
-  void sort_in_parts(std::size_t box_count, std::size_t parts, RangeRunner& runner, std::vector<BodyPair>& pairs);
-  void sort_owned(std::size_t owner, std::size_t parts);
-  /// Each owner's share of the boxes: about an equal share of the last
-  /// call's pairs (a scene's pairs crowd where it is densest), or of the
-  /// boxes when their count changed.
+  /// Each owner's share of the boxes: about an equal share of the boxes
+  /// and the last call's pairs (a scene's pairs crowd where it is densest).
   void choose_owners(std::size_t box_count, std::size_t parts);
+  /// Each owner sorts the pairs it owns, with the large boxes' among them,
+  /// into its own stretch of `pairs`: a counting sort on the first box, then
+  /// each box's few partners sorted.
+  void sort_by_owner(std::size_t box_count, std::size_t parts, RangeRunner* runner, std::vector<BodyPair>& pairs);
+  void sort_owned(std::size_t owner, std::size_t parts, std::vector<BodyPair>& sorted);
 
   // Grid geometry of the current call.
   double cell_ = 1.0;
@@ -182,17 +180,16 @@ private:
   };
   std::vector<StagedEntry> staged_;
   std::vector<std::size_t> pair_start_;
-  std::vector<BodyPair> sorted_pairs_;
   /// A list of pairs that one part fills: on a cache line of its own, so
   /// that two parts adding pairs do not write the same line.
   struct alignas(64) PartPairs
   {
     std::vector<BodyPair> pairs;
   };
-  std::vector<PartPairs> part_pairs_;      // when shared: by searching part, then owner part
-  std::vector<BodyPair> large_pairs_;     // when shared: the large boxes' pairs
-  std::vector<std::size_t> owner_box_;    // when shared: each owner's first box, and the box count
-  std::vector<std::size_t> owner_start_;  // when shared: where each owner's stretch of the result starts
+  std::vector<PartPairs> part_pairs_;      // the grid's pairs by searching part, then owner part
+  std::vector<BodyPair> large_pairs_;     // the large boxes' pairs
+  std::vector<std::size_t> owner_box_;    // each owner's first box, and the box count
+  std::vector<std::size_t> owner_start_;  // where each owner's stretch of the result starts
   std::vector<std::size_t> first_entry_;  // each grid box's first entry
   std::vector<std::size_t> part_count_;   // when shared: per part and bucket, a count, then a cursor
   std::vector<LowCorner> corners_;        // each part's lowest corner

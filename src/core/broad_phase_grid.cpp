@@ -187,59 +187,50 @@ void BroadPhase::scatter_entries(std::size_t part, std::size_t parts, std::size_
 
 void BroadPhase::pairs_in_grid(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner* runner)
 {
+  // In one part, or in as many as the runner has workers: each part searches
+  // a share of the buckets, listing each pair under the part that owns its
+  // first box, then each owner sorts its pairs into its own stretch of
+  // `pairs` (broad_phase_sort.cpp).
   const std::size_t parts = detail::runner_parts(runner, entries_.size());
-  if (parts == 1)
-  {
-    pairs.clear();
-    pairs_of_large(boxes, pairs);
-    auto add = [&pairs](std::size_t i, std::size_t j) { pairs.emplace_back(i, j); };
-    pairs_in_buckets(boxes, 0, bucket_start_.size() - 1, add);
-    sort_pairs(boxes.size(), pairs, runner);  // broad_phase_sort.cpp
-    return;
-  }
-  // `pairs` keeps its last contents until the sorted pairs replace them: the
-  // buffer it hands over for the next call has every slot written once.
   large_pairs_.clear();
   pairs_of_large(boxes, large_pairs_);
-  search_in_parts(boxes, parts, *runner);
-  sort_in_parts(boxes.size(), parts, *runner, pairs);  // broad_phase_sort.cpp
+  choose_owners(boxes.size(), parts);  // broad_phase_sort.cpp
+  part_pairs_.resize(parts * parts);
+  detail::for_each_part(runner, parts, [&](std::size_t part) { search_part(boxes, part, parts); });
+  sort_by_owner(boxes.size(), parts, runner, pairs);  // broad_phase_sort.cpp
 }
 
-void BroadPhase::search_in_parts(const std::vector<Aabb>& boxes, std::size_t parts, RangeRunner& runner)
+void BroadPhase::search_part(const std::vector<Aabb>& boxes, std::size_t part, std::size_t parts)
 {
   // Each bucket is searched (and its entries sorted) by one part only. The
   // parts take equal shares of the entries, not of the buckets: a dense
   // grid's buckets are rows of cells, and a pyramid's lower rows hold most of
   // its boxes. Bucket b goes to the part its first entry falls in.
   const std::size_t buckets = bucket_start_.size() - 1;
-  const auto first_bucket = [&](std::size_t part) {
-    if (part == parts)
+  const auto first_bucket = [&](std::size_t k) {
+    if (k == parts)
     {
       return buckets;
     }
-    const std::size_t entry = entries_.size() * part / parts;
+    const std::size_t entry = entries_.size() * k / parts;
     return static_cast<std::size_t>(
         std::lower_bound(bucket_start_.begin(), bucket_start_.begin() + static_cast<std::ptrdiff_t>(buckets), entry) -
         bucket_start_.begin());
   };
-  part_pairs_.resize(parts * parts);
-  choose_owners(boxes.size(), parts);  // broad_phase_sort.cpp
-  detail::run_parts(runner, parts, [&](std::size_t part) {
-    PartPairs* lists = part_pairs_.data() + part * parts;
-    for (std::size_t owner = 0; owner < parts; ++owner)
+  PartPairs* lists = part_pairs_.data() + part * parts;
+  for (std::size_t owner = 0; owner < parts; ++owner)
+  {
+    lists[owner].pairs.clear();
+  }
+  auto add = [&](std::size_t i, std::size_t j) {
+    std::size_t owner = 0;
+    while (i >= owner_box_[owner + 1])
     {
-      lists[owner].pairs.clear();
+      ++owner;
     }
-    auto add = [&](std::size_t i, std::size_t j) {
-      std::size_t owner = 0;
-      while (i >= owner_box_[owner + 1])
-      {
-        ++owner;
-      }
-      lists[owner].pairs.emplace_back(i, j);
-    };
-    pairs_in_buckets(boxes, first_bucket(part), first_bucket(part + 1), add);
-  });
+    lists[owner].pairs.emplace_back(i, j);
+  };
+  pairs_in_buckets(boxes, first_bucket(part), first_bucket(part + 1), add);
 }
 
 template <class Add>

@@ -61,6 +61,19 @@ void run_parts(RangeRunner& runner, std::size_t parts, F f)
       &f);
 }
 
+/// Calls f(part) for every part in [0, parts): on the calling thread when
+/// there is one part, else on the runner's threads.
+template <class F>
+void for_each_part(RangeRunner* runner, std::size_t parts, F f)
+{
+  if (parts == 1)
+  {
+    f(0);
+    return;
+  }
+  run_parts(*runner, parts, f);
+}
+
 /// Calls fill(part, list) for every part on the runner's threads, each with
 /// its own list from `lists` (emptied, its storage kept from the last call),
 /// then replaces `out` with the lists in part order, copied in parts: what one

@@ -12,48 +12,6 @@
 
 namespace collision2d
 {
-void BroadPhase::sort_pairs(std::size_t box_count, std::vector<BodyPair>& pairs, RangeRunner* runner)
-{
-  pair_start_.assign(box_count + 1, 0);
-  for (const BodyPair& p : pairs)
-  {
-    ++pair_start_[p.first];
-  }
-  std::size_t end = 0;
-  for (std::size_t& start : pair_start_)
-  {
-    end += start;
-    start = end;  // one past the group's end, decremented while scattering
-  }
-  // Both buffers grow geometrically (they are swapped): a creeping count allocates rarely.
-  detail::resize_to_overwrite(sorted_pairs_, pairs.size());  // the scatter writes every slot
-  for (const BodyPair& p : pairs)
-  {
-    sorted_pairs_[--pair_start_[p.first]] = p;
-  }
-  // Each body's group is its own: the parts sort theirs apart.
-  const auto sort_groups = [&](std::size_t first, std::size_t last) {
-    for (std::size_t i = first; i < last; ++i)
-    {
-      std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
-                sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i + 1]));
-    }
-  };
-  const std::size_t parts = detail::runner_parts(runner, box_count);
-  if (parts == 1)
-  {
-    sort_groups(0, box_count);
-  }
-  else
-  {
-    detail::run_parts(*runner, parts, [&](std::size_t part) {
-      sort_groups(detail::part_begin(box_count, part, parts), detail::part_begin(box_count, part + 1, parts));
-    });
-  }
-  // Swapping hands the sorted buffer out and keeps the old one as scratch.
-  pairs.swap(sorted_pairs_);
-}
-
 void BroadPhase::choose_owners(std::size_t box_count, std::size_t parts)
 {
   // An owner's work is a count and a group per box and a move per pair.
@@ -85,7 +43,7 @@ void BroadPhase::choose_owners(std::size_t box_count, std::size_t parts)
   }
 }
 
-void BroadPhase::sort_in_parts(std::size_t box_count, std::size_t parts, RangeRunner& runner,
+void BroadPhase::sort_by_owner(std::size_t box_count, std::size_t parts, RangeRunner* runner,
                                std::vector<BodyPair>& pairs)
 {
   // Each owner's stretch starts after the pairs of the owners before it.
@@ -107,15 +65,16 @@ void BroadPhase::sort_in_parts(std::size_t box_count, std::size_t parts, RangeRu
   {
     owner_start_[owner + 1] += owner_start_[owner];
   }
-  // Every count and slot is written by its owner before it is read.
+  // Every count and slot is written by its owner before it is read. The
+  // sorted pairs go straight into `pairs`, which keeps its own block: only
+  // slots past its last size are new.
   pair_start_.resize(box_count + 1);
-  detail::resize_to_overwrite(sorted_pairs_, owner_start_[parts]);
-  detail::run_parts(runner, parts, [&](std::size_t owner) { sort_owned(owner, parts); });
+  detail::resize_to_overwrite(pairs, owner_start_[parts]);
+  detail::for_each_part(runner, parts, [&](std::size_t owner) { sort_owned(owner, parts, pairs); });
   pair_start_[box_count] = owner_start_[parts];
-  pairs.swap(sorted_pairs_);
 }
 
-void BroadPhase::sort_owned(std::size_t owner, std::size_t parts)
+void BroadPhase::sort_owned(std::size_t owner, std::size_t parts, std::vector<BodyPair>& sorted)
 {
   const std::size_t first = owner_box_[owner];
   const std::size_t last = owner_box_[owner + 1];
@@ -145,14 +104,18 @@ void BroadPhase::sort_owned(std::size_t owner, std::size_t parts)
     end += pair_start_[i];
     pair_start_[i] = end;  // one past the group's end, decremented while scattering
   }
-  for_each_owned([this](const BodyPair& p) { sorted_pairs_[--pair_start_[p.first]] = p; });
+  for_each_owned([&](const BodyPair& p) { sorted[--pair_start_[p.first]] = p; });
   // The last group ends where the next owner's stretch starts (its first
   // count is that owner's to write).
   for (std::size_t i = first; i < last; ++i)
   {
     const std::size_t group_end = i + 1 < last ? pair_start_[i + 1] : owner_start_[owner + 1];
-    std::sort(sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
-              sorted_pairs_.begin() + static_cast<std::ptrdiff_t>(group_end));
+    if (group_end - pair_start_[i] < 2)
+    {
+      continue;  // in order already (most boxes: a call each would cost more than the sorts)
+    }
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(pair_start_[i]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(group_end));
   }
 }
 

@@ -258,4 +258,32 @@ against 6.6 - 6.8 with one (4 alternating runs); the rain of 1e4 1.09
 and 1.10 times slower, of 1e5 1.07 times with 4: with one share each,
 every stage gives each core the same bodies' records, which stay in its
 cache from stage to stage.
+
+A thirty-seventh, on the same host (commits 698aaaa and deca5a1; scratch
+builds with clocks, not committed). The broad phase shares its sort: each
+part of the grid search lists a pair under the part that owns its first
+box (owners take shares of the box indices balanced on the boxes and the
+last call's pairs), and each owner counts, places and sorts its own pairs
+straight into the caller's list. The serial counting sort, the copy of
+every part's pairs into one list and the buffer swapped with the caller's
+list are gone, and one part takes the same path. Same pairs and bits.
+Clocks over the rain of 1e5's 25 timed frames (ms, 3 runs each of 1 and
+2 workers): the broad phase 166 - 177 -> 110 - 114 (139 on 2 workers in
+the thirty-sixth), of it the grid search 85 -> 43 - 44 and the sort 31
+-> 28, most of which is first writes to pair lists that grow with the
+rain (a list grew in 5 of the 25 frames, 20 ms); the soft frame 725 -
+829 -> 440 - 466. Whole processes against d11b226, alternating, both
+CPUs checked equal: on 2 workers the rain of 1e5 took 0.957 of the time
+(6 pairs, 0.88 to 0.99), the rain of 1e4 0.948 (6, 0.85 to 1.01), the
+pyramid of 9870 boxes 0.992 (5); on 1 worker the rain of 1e4 1.008 (5,
+pinned). Peak memory above start on 1 worker, kB a body: rain of 1e5
+1.667 -> 1.594, of 1e4 2.632 -> 2.531, pyramid of 9870 4.784 -> 4.786:
+the swapped buffer had kept a second block as large as the largest list
+sorted (on the rain of 1e5 the enlarged boxes' 394 thousand pairs, 6.3
+MB). What still shares badly on the rain of 1e4 is packing the rows
+(ms over the bench's 50 timed frames, 1 -> 2 workers, 2 runs): 13.9 -
+14.8 -> 20.2 - 20.3, of it placing the rows 7.1 - 7.7 -> 9.0, ordering
+the manifolds 4.2 -> 5.1 - 5.2 and colouring them, on one thread, 1.7 -
+2.0 -> 4.7 - 4.8: the colouring reads manifold notes that the other
+core wrote while preparing its share of the points.
 """

@@ -22,7 +22,8 @@ void BroadPhase::choose_owners(std::size_t box_count, std::size_t parts)
   const bool known = pair_start_.size() == box_count + 1;
   const std::size_t total = box_count + (known ? pair_start_[box_count] : 0);
   owner_box_[0] = 0;
-  for (std::size_t owner = 1; owner <= parts; ++owner)
+  owner_box_[parts] = box_count;  // every box has an owner, whatever the last call left
+  for (std::size_t owner = 1; owner < parts; ++owner)
   {
     const std::size_t share = detail::part_begin(total, owner, parts);
     std::size_t lo = owner_box_[owner - 1];

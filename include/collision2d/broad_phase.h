@@ -142,6 +142,16 @@ private:
   /// Each owner's share of the boxes: about an equal share of the boxes
   /// and the last call's pairs (a scene's pairs crowd where it is densest).
   void choose_owners(std::size_t box_count, std::size_t parts);
+  /// The owner whose share holds `box` (the owners are few: a walk).
+  std::size_t owner_of(std::size_t box) const
+  {
+    std::size_t owner = 0;
+    while (box >= owner_box_[owner + 1])
+    {
+      ++owner;
+    }
+    return owner;
+  }
   /// Each owner sorts the pairs it owns, with the large boxes' among them,
   /// into its own stretch of `pairs`: a counting sort on the first box, then
   /// each box's few partners sorted.

@@ -222,14 +222,7 @@ void BroadPhase::search_part(const std::vector<Aabb>& boxes, std::size_t part, s
   {
     lists[owner].pairs.clear();
   }
-  auto add = [&](std::size_t i, std::size_t j) {
-    std::size_t owner = 0;
-    while (i >= owner_box_[owner + 1])
-    {
-      ++owner;
-    }
-    lists[owner].pairs.emplace_back(i, j);
-  };
+  auto add = [&](std::size_t i, std::size_t j) { lists[owner_of(i)].pairs.emplace_back(i, j); };
   pairs_in_buckets(boxes, first_bucket(part), first_bucket(part + 1), add);
 }
 

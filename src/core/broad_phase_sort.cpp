@@ -51,12 +51,7 @@ void BroadPhase::sort_by_owner(std::size_t box_count, std::size_t parts, RangeRu
   owner_start_.assign(parts + 1, 0);
   for (const BodyPair& p : large_pairs_)  // few
   {
-    std::size_t owner = 0;
-    while (p.first >= owner_box_[owner + 1])
-    {
-      ++owner;
-    }
-    ++owner_start_[owner + 1];
+    ++owner_start_[owner_of(p.first) + 1];
   }
   for (std::size_t k = 0; k < part_pairs_.size(); ++k)
   {

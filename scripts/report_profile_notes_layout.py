@@ -286,4 +286,42 @@ MB). What still shares badly on the rain of 1e4 is packing the rows
 the manifolds 4.2 -> 5.1 - 5.2 and colouring them, on one thread, 1.7 -
 2.0 -> 4.7 - 4.8: the colouring reads manifold notes that the other
 core wrote while preparing its share of the points.
+
+A thirty-eighth, on the same host (commit 714ffcd; scratch drivers and
+clocks, not committed). Where the two-worker targets stand on this host.
+Two threads handing one cache line back and forth took 159 to 557 ns a
+round trip at different times of one session (the guest's two virtual
+CPUs are placed anew by the host), while two threads of independent
+arithmetic ran together as fast as one alone (0.36 - 0.39 s each, either
+CPU). Alternating runs in a slow-link spell (484 - 557 ns): the rain of
+1e4 took 4.71 - 4.82 ms a frame on 1 worker and 3.83 - 4.18 on 2 (1.13 -
+1.24x), Box2D v3 5.45 - 5.53 and 5.80 - 5.86 (0.93 - 0.94x). With clocks
+on the stages (frames 61 to 90, two runs each), no stage of the rain of
+1e4 ran much faster on 2 workers in such a spell: moving the bodies, a
+loop over them that no two workers write alike, 8.2 ms -> 7.2 - 7.4;
+detection 41 -> 46; the solve passes 8.1 -> 12.3 - 13.1. A stage reads
+records the other core wrote in the stage before. The pyramid of 9870 boxes
+took 12.3 and 20.2 ms on 1 worker minutes apart, Box2D v3 9.5 and 15.8,
+while the arithmetic test ran at one speed: memory-bound frames follow
+the host's other load, so a single round decides little. Where the
+base-100 pyramid's time goes on 1 worker (clocks, frames 61 to 180, one
+core): the solve passes with the warm start 28%, the relax 18%, detection
+26% (of it adding and preparing the points 13%, the narrow phase 7%),
+packing the rows 12% (placing them 8%, ordering the manifolds 2.4%,
+colouring 1.4%), publishing 9%, moving the bodies 3.5%. A colouring kept
+from frame to frame, as Box2D v3 keeps its constraint graph, could save
+at most the ordering and colouring, 3.8%; the stages that copy each
+point (adding and preparing, placing the rows, publishing) take 30%,
+which is what the compact per-point record would shrink. The tiny
+scenes: the first frame of a fresh world took 2.5 to 8.2 times a later
+one (medians of 20000 worlds, allocator thresholds fixed as the sweep
+bench does), a share of the 30-frame timed run of 5.9% on incline, 4.9%
+on incline_slide, 8.7% on bouncing_disks and 19.3% on bullet_wall
+(incline's first frame: 18.7 thousand instructions, 56 allocations,
+against 6.9 thousand a later frame). Without any of it, only incline
+would have met its 0.75x (0.782 -> 0.736); bullet_wall would still take
+0.98x Chipmunk 7's time. Tried and not kept: every pair of up to 8 boxes
+tested as four rows of coordinates and one bit mask a box, with no branch
+per pair; on bouncing_disks (6 boxes) it ran 3.78 million instructions
+against 3.72 million over 6000 frames, the pair tests staying scalar.
 """

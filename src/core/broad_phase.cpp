@@ -133,14 +133,7 @@ void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)
     }
     corners_[part] = c;
   };
-  if (parts == 1)
-  {
-    lowest(0);
-  }
-  else
-  {
-    detail::run_parts(*runner, parts, lowest);
-  }
+  detail::for_each_part(runner, parts, lowest);
   LowCorner low;
   for (const LowCorner& c : corners_)
   {

@@ -19,16 +19,23 @@ void BroadPhase::choose_owners(std::size_t box_count, std::size_t parts)
   // started, with their count at its end: the boxes before box i and their
   // pairs cost i + pair_start_[i], which grows with i.
   owner_box_.resize(parts + 1);
-  const bool known = pair_start_.size() == box_count + 1;
-  const std::size_t total = box_count + (known ? pair_start_[box_count] : 0);
   owner_box_[0] = 0;
   owner_box_[parts] = box_count;  // every box has an owner, whatever the last call left
+  if (pair_start_.size() != box_count + 1)
+  {
+    for (std::size_t owner = 1; owner < parts; ++owner)
+    {
+      owner_box_[owner] = detail::part_begin(box_count, owner, parts);  // no pairs known: by boxes alone
+    }
+    return;
+  }
+  const std::size_t total = box_count + pair_start_[box_count];
   for (std::size_t owner = 1; owner < parts; ++owner)
   {
     const std::size_t share = detail::part_begin(total, owner, parts);
     std::size_t lo = owner_box_[owner - 1];
     std::size_t hi = box_count;
-    while (known && lo < hi)
+    while (lo < hi)
     {
       const std::size_t mid = lo + (hi - lo) / 2;
       if (mid + pair_start_[mid] < share)
@@ -40,7 +47,7 @@ void BroadPhase::choose_owners(std::size_t box_count, std::size_t parts)
         hi = mid;
       }
     }
-    owner_box_[owner] = known ? lo : detail::part_begin(box_count, owner, parts);
+    owner_box_[owner] = lo;
   }
 }
 

@@ -1,7 +1,9 @@
 // Extreme speeds: bodies at 1e4 m/s do not tunnel with time of
 // impact on (ContactSolver::step and World with time_of_impact On or Auto),
 // the same World scene with it Off does tunnel (so the check can fail), and
-// spin at 1e4 rad/s stays finite without gaining energy.
+// spin at 1e4 rad/s stays finite without gaining energy. The soft step
+// sweeps a body in the substep it turns fast, whether a contact or gravity
+// makes it so.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -276,6 +278,92 @@ TEST(ExtremesSpeed, SpinningBoxOnGroundStaysFiniteAndLosesEnergy)
   test::print_figure("largest rise of kinetic + potential energy (relative)", worst_rise, kEnergyRiseTol);
   test::print_figure("lowest centre height (m), at least", lowest, kLowestCentre);
   test::print_figure("spin at the end (rad/s)", world.body(box).omega(), kSpin);
+}
+
+/// A wide disk too slow to be swept hits a small one of the same mass at
+/// rest (e = 1: they swap velocities), which flies into a thin wall within
+/// the same frame, at the defaults (time of impact Auto, 4 substeps). The
+/// frame began with the small disk at rest, so its pair with the wall has no
+/// contact: only the sweep, which checks each substep the bodies a contact
+/// touches, can stop it. Returns the small disk's largest overshoot past the
+/// wall's face (m); `totals` gathers the frames' sweeps.
+double small_disk_launched_at_the_wall(Toggle toi, StepReport& totals)
+{
+  constexpr double kWideRadius = 1.0;  // m
+  constexpr double kMass = 1e-3;       // kg, both disks
+  constexpr double kSpeed = 50.0;      // m/s
+  constexpr double kGap = 0.3;         // m, small disk to wall: far past the margin, within a frame's flight
+  Scene scene;
+  scene.settings.gravity = Vec2{0.0, 0.0};
+  scene.settings.time_of_impact = toi;
+  const Material elastic{1.0, 0.0, 0.0};
+  const double small_x = wall_face() - kGap - kBulletRadius;
+  const Vec2 wide_at{small_x - kBulletRadius - 0.01 - kWideRadius, 0.0};
+  scene.bodies.push_back(SceneBody{scenes::make_static_box(kWallThickness, 4.0, {kWallX, 0.0}), Material{}, "wall"});
+  scene.bodies.push_back(SceneBody{Body(kMass, kBulletRadius, {small_x, 0.0}, {0.0, 0.0}), elastic, "small"});
+  scene.bodies.push_back(SceneBody{Body(kMass, kWideRadius, wide_at, {kSpeed, 0.0}), elastic, "wide"});
+  // The wide disk moves less than its sweep reach in a substep (a fraction
+  // of its and the wall's half-widths): it is never swept itself.
+  const double substep = scene.settings.dt / scene.settings.substeps;
+  EXPECT_LT(kSpeed * substep, scene.settings.toi_displacement_fraction * (kWideRadius + 0.5 * kWallThickness));
+  World world = make_world(scene);
+  const BodyId small = world.body_ids()[1];
+  double worst = -1e300;
+  for (int f = 0; f < 3; ++f)
+  {
+    const StepReport report = world.step();
+    totals.swept_bodies += report.swept_bodies;
+    totals.toi_clamps += report.toi_clamps;
+    worst = std::max(worst, front(world.body(small)) - wall_face());
+  }
+  return worst;
+}
+
+TEST(ExtremesSpeed, SoftStepSweepsABodyOnlyAContactMakesFast)
+{
+  StepReport swept;
+  const double overshoot = small_disk_launched_at_the_wall(Toggle::Auto, swept);
+  const double bound = WorldSettings().slop + kTouchSlack;
+  EXPECT_LE(overshoot, bound);
+  EXPECT_GT(swept.swept_bodies, 0u);
+  EXPECT_GT(swept.toi_clamps, 0u);
+  test::print_figure("small disk launched at a thin wall, soft step, toi Auto: overshoot (m)", overshoot, bound);
+  // The control: without the sweep the small disk passes the wall.
+  StepReport none;
+  const double tunnelled = small_disk_launched_at_the_wall(Toggle::Off, none);
+  EXPECT_GT(tunnelled, kWallThickness);
+  std::printf("the same with toi Off: overshoot %.4g m (expected past the wall)\n", tunnelled);
+}
+
+TEST(ExtremesSpeed, SoftStepSweepsAFreeBodyFromTheSubstepItTurnsFast)
+{
+  // A disk falling far from a box that rests on the ground: its speed
+  // crosses its sweep reach per substep within the first frame under gravity
+  // alone. Each substep it counts as swept when its move exceeds its reach
+  // (the fraction of its and the thinnest body's inner radii), whether or
+  // not a contact touches it.
+  constexpr double kRadius = 0.1;  // m, the thinnest body: the disk itself
+  Scene scene;
+  const double substep = scene.settings.dt / scene.settings.substeps;
+  const double reach = scene.settings.toi_displacement_fraction * (kRadius + kRadius);
+  const double kick = -scene.settings.gravity.y * substep;  // m/s a substep
+  const double start_speed = reach / substep - 1.5 * kick;  // fast from the second substep
+  scene.bodies.push_back(SceneBody{scenes::make_static_box(20.0, 2.0, {0.0, -1.0}), Material{}, "ground"});
+  scene.bodies.push_back(SceneBody{scenes::make_box(1.0, 2.0, 2.0, {0.0, 1.0}), Material{}, "box"});
+  scene.bodies.push_back(SceneBody{Body(1.0, kRadius, {500.0, 1000.0}, {0.0, -start_speed}), Material{}, "disk"});
+  World world = make_world(scene);
+  std::size_t expected = 0;
+  for (int k = 0; k < scene.settings.substeps; ++k)
+  {
+    const double move = (start_speed + (k + 1) * kick) * substep;  // after the substep's kick
+    expected += move > reach ? 1 : 0;
+  }
+  ASSERT_GT(expected, 0u);
+  ASSERT_LT(expected, static_cast<std::size_t>(scene.settings.substeps));
+  const StepReport report = world.step();
+  EXPECT_EQ(report.swept_bodies, expected);
+  std::printf("disk turning fast under gravity: %zu of %d substeps swept (expected %zu)\n", report.swept_bodies,
+              scene.settings.substeps, expected);
 }
 
 TEST(ExtremesSpeed, SpinningBodiesInContactSolveFinite)

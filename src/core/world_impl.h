@@ -179,12 +179,26 @@ struct WorldImpl : WorldState
   /// O(1) update for a body just appended: building a world stays O(n).
   void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
-  /// The squared substep move above which body i is swept in Auto (m^2);
-  /// -1 for a body that is not awake and dynamic (never swept).
+  /// The substep move above which body i is swept in Auto (m); -1 for a
+  /// body that is not awake and dynamic (never swept).
+  double sweep_reach(std::size_t i) const;
+  /// sweep_reach squared (m^2), -1 as there.
   double sweep_reach_sq(std::size_t i) const;
+  /// Soft step: the frame's bound on a free body's speed for substeps of `h` (s).
+  FreeSpeedBound free_speed_bound(double h) const;
+  /// Soft step: whether body i, were no contact to touch it this frame,
+  /// could move farther than its reach in a substep (mark_swept_bodies).
+  bool may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const;
+  /// Soft step: marks body i touched by a contact this frame, a sweep candidate.
+  void note_touching(std::size_t i);
+  /// Soft step: whether mark_swept_bodies checks every body this frame or
+  /// only the candidates.
+  void choose_sweep_pass(bool any_may_turn_fast);
   /// `stored`: the bodies hold their velocities; otherwise (the soft
   /// substep) they are read from velocity_ and stored only if a sweep runs.
   bool mark_swept_bodies(double h, bool stored);
+  /// mark_swept_bodies over sweep_candidates_ only.
+  bool mark_sweep_candidates(double h);
   bool sweep(double h, StepReport& report, bool stored = true);
   bool clamped(std::size_t i) const;
 

@@ -18,6 +18,7 @@
 // (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
 // out rigidly at the soft rate; the relax adds normal impulses only.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -121,21 +122,31 @@ void WorldImpl::prepare_soft_bodies()
   frame_theta_.resize(bodies_.size());
   frame_motion_.resize(bodies_.size());
   swept_reach_sq_.resize(bodies_.size());
+  swept_.resize(bodies_.size());
   // One pass over the body records, which a large world streams from memory.
-  for_each_body([this](std::size_t i) {
+  const FreeSpeedBound bound = free_speed_bound(settings_.dt / settings_.substeps);  // world_toi.cpp
+  std::atomic<bool> any_may_turn_fast{false};
+  for_each_body([&](std::size_t i) {
     load_velocity(i);                                     // world_solve.cpp
     reset_body_motion(i);
+    if (may_turn_fast(i, bound))
+    {
+      any_may_turn_fast.store(true, std::memory_order_relaxed);
+    }
   });
   // The frame's active points are those of the pairs that hit (detect()),
-  // so the short pair list says which bodies they touch.
+  // so the short pair list says which bodies they touch; a substep can make
+  // only those fast unless a free body may turn fast on its own.
+  sweep_candidates_.clear();
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
     if (collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k])
     {
-      touching_[pairs_[k].first] = true;
-      touching_[pairs_[k].second] = true;
+      note_touching(pairs_[k].first);                     // world_toi.cpp
+      note_touching(pairs_[k].second);
     }
   }
+  choose_sweep_pass(any_may_turn_fast.load());
 }
 
 bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)
@@ -186,6 +197,7 @@ void WorldImpl::reset_body_motion(std::size_t i)
   frame_motion_[i] = frame_motion(i);
   stopped_[i] = false;
   touching_[i] = false;
+  swept_[i] = 0;
   swept_reach_sq_[i] = sweep_reach_sq(i);
 }
 

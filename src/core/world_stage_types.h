@@ -38,6 +38,14 @@ struct CarriedSlip
 /// One soft pass's parameters (world_soft_solve.cpp).
 struct SoftPass;
 
+/// Soft step: the fastest a body no contact touches can move in a frame,
+/// held against its sweep reach (WorldImpl::may_turn_fast).
+struct FreeSpeedBound
+{
+  double per_width = 0.0;   ///< reach speed per metre of the two thinnest half-widths (1/s)
+  double frame_kick = 0.0;  ///< speed gravity adds in a frame (m/s)
+};
+
 /// Soft step: a contact point that can bounce (e > 0) and where its normal
 /// impulses live during the substeps (world_soft_restitution.cpp).
 struct BouncePoint

@@ -122,6 +122,10 @@ struct WorldState
   std::vector<BodyPair> resting_pairs_;
   std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
   std::vector<double> swept_reach_sq_;  ///< soft step: sweep_reach_sq per body, set for the frame
+  /// Soft step: the visited bodies a contact touches this frame, which alone
+  /// a substep can make fast unless sweep_every_body_ (mark_swept_bodies).
+  std::vector<std::size_t> sweep_candidates_;
+  bool sweep_every_body_ = true;
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact in the last sweep (toi_ follows edits)
   ContactPoints points_;  ///< this substep's contact points

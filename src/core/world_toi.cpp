@@ -7,6 +7,7 @@
 // time_of_impact() defines it; the rest of a clamped body's substep move is
 // dropped, its velocity is not.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 
@@ -19,6 +20,10 @@ namespace detail
 {
 namespace
 {
+/// A body's reach is divided by this before a free body's speed is held to
+/// it (may_turn_fast): far above the round-off of a frame's gravity kicks.
+constexpr double kReachRoundOffMargin = 1.0 + 1e-9;
+
 /// Distance from the centroid to the nearest face: the thinnest a body can be
 /// seen from any direction is twice this.
 double inner_radius(const Body& b)
@@ -66,7 +71,7 @@ Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
   return b.type() == BodyType::Static || asleep_[i] ? Vec2{0.0, 0.0} : b.velocity() * h;
 }
 
-double WorldImpl::sweep_reach_sq(std::size_t i) const
+double WorldImpl::sweep_reach(std::size_t i) const
 {
   if (!awake_dynamic(i))
   {
@@ -74,8 +79,53 @@ double WorldImpl::sweep_reach_sq(std::size_t i) const
   }
   // Two bodies can pass through each other in one substep only when their
   // relative move exceeds the sum of their thinnest half-widths.
-  const double reach = settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
-  return reach * reach;
+  return settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
+}
+
+double WorldImpl::sweep_reach_sq(std::size_t i) const
+{
+  const double reach = sweep_reach(i);
+  return reach < 0.0 ? -1.0 : reach * reach;
+}
+
+FreeSpeedBound WorldImpl::free_speed_bound(double h) const
+{
+  // A body no contact touches gains at most one frame of gravity's speed;
+  // the margin covers the round-off of the substeps' kicks and of the test.
+  return FreeSpeedBound{settings_.toi_displacement_fraction / (h * kReachRoundOffMargin),
+                        length(settings_.gravity) * settings_.dt};
+}
+
+bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
+{
+  if (swept_reach_sq_[i] < 0.0)  // set for the frame (reset_body_motion)
+  {
+    return false;
+  }
+  const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_) - bound.frame_kick;
+  return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);
+}
+
+void WorldImpl::note_touching(std::size_t i)
+{
+  // The visited bodies were reset to untouched; a resting body outside the
+  // pass keeps its swept flag at 0 and is not a candidate.
+  if (touching_[i])
+  {
+    return;
+  }
+  touching_[i] = true;
+  if ((body_pass_full_ || !is_resting_[i]) && swept_reach_sq_[i] >= 0.0)
+  {
+    sweep_candidates_.push_back(i);
+  }
+}
+
+void WorldImpl::choose_sweep_pass(bool any_may_turn_fast)
+{
+  // With most bodies touched, the plain pass over them is the cheaper.
+  sweep_every_body_ = any_may_turn_fast || settings_.time_of_impact == Toggle::On ||
+                      2 * sweep_candidates_.size() > visited_count();
 }
 
 bool WorldImpl::mark_swept_bodies(double h, bool stored)
@@ -83,6 +133,10 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
   const Toggle mode = settings_.time_of_impact;
   // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
+  if (!stored && !sweep_every_body_)
+  {
+    return mark_sweep_candidates(h);
+  }
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
   for_each_body([&](std::size_t i) {
@@ -96,6 +150,27 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
     return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
   }
   return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != 0; });
+}
+
+bool WorldImpl::mark_sweep_candidates(double h)
+{
+  // The other bodies' flags were cleared with their motion (reset_body_motion)
+  // and no substep this frame can make them fast (may_turn_fast).
+  std::atomic<bool> any{false};
+  workers_.parallel_for(sweep_candidates_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
+    bool part_any = false;
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      const std::size_t i = sweep_candidates_[k];
+      swept_[i] = length_sq(velocity_[i].v * h) > swept_reach_sq_[i];
+      part_any = part_any || swept_[i] != 0;
+    }
+    if (part_any)
+    {
+      any.store(true, std::memory_order_relaxed);
+    }
+  });
+  return any.load();
 }
 
 bool WorldImpl::sweep(double h, StepReport& report, bool stored)

@@ -122,31 +122,45 @@ void WorldImpl::prepare_soft_bodies()
   frame_theta_.resize(bodies_.size());
   frame_motion_.resize(bodies_.size());
   swept_reach_sq_.resize(bodies_.size());
-  swept_.resize(bodies_.size());
   // One pass over the body records, which a large world streams from memory.
-  const FreeSpeedBound bound = free_speed_bound(settings_.dt / settings_.substeps);  // world_toi.cpp
+  sweep_every_body_ = !sweep_candidates_pay();            // world_toi.cpp
   std::atomic<bool> any_may_turn_fast{false};
-  for_each_body([&](std::size_t i) {
-    load_velocity(i);                                     // world_solve.cpp
-    reset_body_motion(i);
-    if (may_turn_fast(i, bound))
-    {
-      any_may_turn_fast.store(true, std::memory_order_relaxed);
-    }
-  });
+  if (sweep_every_body_)
+  {
+    for_each_body([this](std::size_t i) {
+      load_velocity(i);                                   // world_solve.cpp
+      reset_body_motion(i);
+    });
+  }
+  else
+  {
+    swept_.resize(bodies_.size());
+    const FreeSpeedBound bound = free_speed_bound(settings_.dt / settings_.substeps);
+    for_each_body([&](std::size_t i) {
+      load_velocity(i);
+      reset_body_motion(i);
+      swept_[i] = 0;  // each substep sets only the candidates' flags
+      if (may_turn_fast(i, bound))
+      {
+        any_may_turn_fast.store(true, std::memory_order_relaxed);
+      }
+    });
+  }
   // The frame's active points are those of the pairs that hit (detect()),
   // so the short pair list says which bodies they touch; a substep can make
   // only those fast unless a free body may turn fast on its own.
-  sweep_candidates_.clear();
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
     if (collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k])
     {
-      note_touching(pairs_[k].first);                     // world_toi.cpp
-      note_touching(pairs_[k].second);
+      touching_[pairs_[k].first] = true;
+      touching_[pairs_[k].second] = true;
     }
   }
-  choose_sweep_pass(any_may_turn_fast.load());
+  if (!sweep_every_body_)
+  {
+    list_sweep_candidates(any_may_turn_fast.load());     // world_toi.cpp
+  }
 }
 
 bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)
@@ -197,7 +211,6 @@ void WorldImpl::reset_body_motion(std::size_t i)
   frame_motion_[i] = frame_motion(i);
   stopped_[i] = false;
   touching_[i] = false;
-  swept_[i] = 0;
   swept_reach_sq_[i] = sweep_reach_sq(i);
 }
 

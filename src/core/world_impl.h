@@ -179,10 +179,8 @@ struct WorldImpl : WorldState
   /// O(1) update for a body just appended: building a world stays O(n).
   void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
-  /// The substep move above which body i is swept in Auto (m); -1 for a
-  /// body that is not awake and dynamic (never swept).
-  double sweep_reach(std::size_t i) const;
-  /// sweep_reach squared (m^2), -1 as there.
+  /// The squared substep move above which body i is swept in Auto (m^2);
+  /// -1 for a body that is not awake and dynamic (never swept).
   double sweep_reach_sq(std::size_t i) const;
   /// Soft step: the frame's bound on a free body's speed for substeps of `h` (s).
   FreeSpeedBound free_speed_bound(double h) const;
@@ -243,6 +241,8 @@ struct WorldImpl : WorldState
   /// Narrow phase of pairs_[begin, end) into manifolds_ and collided_ (the workers share it).
   void collide_range(std::size_t begin, std::size_t end);
   bool dynamic_pair(std::size_t i, std::size_t j) const;
+  /// Pair k of this frame hit and has contact points: its bodies touch.
+  bool pair_touches(std::size_t k) const { return collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k]; }
   /// Soft step: pair k's manifold from its cached contacts when the pair has
   /// moved little since they were detected (world_contact_reuse.cpp);
   /// `cursor` as cached_pair's.

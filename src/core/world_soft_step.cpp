@@ -151,7 +151,7 @@ void WorldImpl::prepare_soft_bodies()
   // only those fast unless a free body may turn fast on its own.
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
-    if (collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k])
+    if (pair_touches(k))
     {
       touching_[pairs_[k].first] = true;
       touching_[pairs_[k].second] = true;

@@ -23,8 +23,9 @@ namespace
 /// A body's reach is divided by this before a free body's speed is held to
 /// it (may_turn_fast): far above the round-off of a frame's gravity kicks.
 constexpr double kReachRoundOffMargin = 1.0 + 1e-9;
-/// Visited bodies below which each substep checks all of them: choosing the
-/// candidates cost a two-body incline 1.7% more instructions a frame.
+/// Visited bodies below which each substep checks all of them: in a world this
+/// small choosing the candidates costs more than it saves (docs/performance.md,
+/// the thirty-ninth profile note).
 constexpr std::size_t kMinBodiesToChooseSweepCandidates = 16;
 
 /// Distance from the centroid to the nearest face: the thinnest a body can be
@@ -74,7 +75,7 @@ Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
   return b.type() == BodyType::Static || asleep_[i] ? Vec2{0.0, 0.0} : b.velocity() * h;
 }
 
-double WorldImpl::sweep_reach(std::size_t i) const
+double WorldImpl::sweep_reach_sq(std::size_t i) const
 {
   if (!awake_dynamic(i))
   {
@@ -82,13 +83,8 @@ double WorldImpl::sweep_reach(std::size_t i) const
   }
   // Two bodies can pass through each other in one substep only when their
   // relative move exceeds the sum of their thinnest half-widths.
-  return settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
-}
-
-double WorldImpl::sweep_reach_sq(std::size_t i) const
-{
-  const double reach = sweep_reach(i);
-  return reach < 0.0 ? -1.0 : reach * reach;
+  const double reach = settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
+  return reach * reach;
 }
 
 FreeSpeedBound WorldImpl::free_speed_bound(double h) const
@@ -124,7 +120,7 @@ void WorldImpl::list_sweep_candidates(bool any_may_turn_fast)
   };
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
-    if (collided_[k] == Collided::Hit && pair_rows_[k + 1] > pair_rows_[k])
+    if (pair_touches(k))
     {
       list(pairs_[k].first);
       list(pairs_[k].second);

@@ -27,7 +27,25 @@ void BodyCensus::add(const BodyCensus& other)
   dynamic_rough += other.dynamic_rough;
   bouncy += other.bouncy;
   dynamic_bouncy += other.dynamic_bouncy;
-  turning += other.turning;
+  dynamic_polygons += other.dynamic_polygons;
+  spinning_disks += other.spinning_disks;
+}
+
+const BodyCensus& WorldImpl::census_for_frame()
+{
+  // Types, shapes and materials change only by an edit, so their counts hold
+  // until one. A disk's spin changes every frame: it is counted again when
+  // rotation's Auto choice turns on it (no friction, no dynamic polygon).
+  const bool counted = census_known_ && census_version_ == version_;
+  const bool spin_decides = settings_.rotation == Toggle::Auto &&
+                            !resolve(settings_.friction, census_.rough_pair()) && census_.dynamic_polygons == 0;
+  if (!counted || spin_decides)
+  {
+    census_ = take_census();
+    census_known_ = true;
+    census_version_ = version_;
+  }
+  return census_;
 }
 
 BodyCensus WorldImpl::take_census()
@@ -64,25 +82,22 @@ void WorldImpl::count_body(std::size_t i, BodyCensus& census) const
   census.dynamic_rough += rough && dynamic ? 1 : 0;
   census.bouncy += bouncy ? 1 : 0;
   census.dynamic_bouncy += bouncy && dynamic ? 1 : 0;
-  // Frictionless contact impulses on a disk act along a line through its
-  // centre, so disks only turn under friction or with a spin of their own;
-  // a polygon's impulses act off its centroid.
-  census.turning += dynamic && (b.shape() == Shape::Polygon || b.omega() != 0.0) ? 1 : 0;
+  const bool polygon = b.shape() == Shape::Polygon;
+  census.dynamic_polygons += dynamic && polygon ? 1 : 0;
+  census.spinning_disks += dynamic && !polygon && b.omega() != 0.0 ? 1 : 0;
 }
 
 StepContext WorldImpl::select_effects()
 {
   const WorldSettings& s = settings_;
-  const BodyCensus census = take_census();
+  const BodyCensus& census = census_for_frame();
   const bool contacts_possible = census.dynamic > 0 && bodies_.size() >= 2;
-  // Pairs combine materials by min, so a pair shows a property only when
-  // both bodies have it; a pair matters only when one of them is dynamic.
-  const bool rough_pair = census.dynamic_rough > 0 && census.rough >= 2;
-  const bool bouncy_pair = census.dynamic_bouncy > 0 && census.bouncy >= 2;
   StepContext e;
-  e.effects.friction = resolve(s.friction, rough_pair);
-  e.effects.rotation = resolve(s.rotation, e.effects.friction || census.turning > 0);
-  e.effects.restitution = resolve(s.restitution, bouncy_pair);
+  e.effects.friction = resolve(s.friction, census.rough_pair());
+  // Disks only turn under friction or with a spin of their own.
+  const bool turning = census.dynamic_polygons > 0 || census.spinning_disks > 0;
+  e.effects.rotation = resolve(s.rotation, e.effects.friction || turning);
+  e.effects.restitution = resolve(s.restitution, census.bouncy_pair());
   e.effects.position_correction = resolve(s.position_correction, contacts_possible);
   // Without gravity (or another steady load) contacts do not persist from
   // frame to frame, and last frame's impulses would only disturb new impacts.

@@ -165,6 +165,8 @@ struct WorldImpl : WorldState
 
   // world_effects.cpp
   StepContext select_effects();
+  /// take_census, kept while no edit changes the bodies (census_).
+  const BodyCensus& census_for_frame();
   /// The bodies counted for select_effects, in parts on the workers.
   BodyCensus take_census();
   void count_body(std::size_t i, BodyCensus& census) const;

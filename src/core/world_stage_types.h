@@ -75,8 +75,15 @@ struct BodyCensus
   std::size_t dynamic_rough = 0;
   std::size_t bouncy = 0;          ///< bodies with restitution
   std::size_t dynamic_bouncy = 0;
-  std::size_t turning = 0;         ///< dynamic polygons and spinning dynamic bodies
+  // Bodies that turn under contacts: a polygon's impulses act off its
+  // centroid; frictionless impulses on a disk act through its centre.
+  std::size_t dynamic_polygons = 0;
+  std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
   void add(const BodyCensus& other);
+  /// Pairs combine materials by min, so a pair shows a property only when
+  /// both bodies have it; a pair matters only when one of them is dynamic.
+  bool rough_pair() const { return dynamic_rough > 0 && rough >= 2; }
+  bool bouncy_pair() const { return dynamic_bouncy > 0 && bouncy >= 2; }
 };
 
 /// Narrow-phase outcome of a pair.

@@ -101,6 +101,9 @@ struct WorldState
   std::vector<double> partial_max_;      ///< max_over's result of each part
   std::vector<PairPlacement> placements_;
   std::vector<BodyCensus> census_parts_;  ///< take_census's count of each part
+  BodyCensus census_;                     ///< the last take_census, at census_version_
+  bool census_known_ = false;
+  std::uint64_t census_version_ = 0;
   std::vector<double> block_energies_;    ///< kinetic_energy: each block's sum
   WorkerPool workers_;
   std::vector<BodyPair> pairs_;

@@ -69,6 +69,33 @@ TEST(WorldEffects, AutoModelsOnlyWhatTheSceneNeeds)
   EXPECT_TRUE(bullet.step(5).active.time_of_impact);
 }
 
+// The bodies' types, shapes and materials are counted again after each edit
+// (the counts are kept between edits); a disk's spin whenever it decides.
+TEST(WorldEffects, AutoFollowsEditsToTheBodies)
+{
+  const Material rough{0.0, 0.6, 0.6};
+  World world;
+  world.add_body(Body(1.0, {{-5.0, -0.5}, {5.0, -0.5}, {5.0, 0.5}, {-5.0, 0.5}}, Vec2{0.0, -0.5}, Vec2{0.0, 0.0}),
+                 rough);
+  world.set_body_type(0, BodyType::Static);
+  const BodyId disk = world.add_body(Body(1.0, 0.5, Vec2{0.0, 0.5}, Vec2{0.0, 0.0}), rough);
+  ActiveEffects a = world.step(3).active;
+  EXPECT_TRUE(a.friction);  // a rough disk on rough ground
+  EXPECT_TRUE(a.rotation);
+  world.set_body_type(disk, BodyType::Static);
+  a = world.step(3).active;
+  EXPECT_FALSE(a.friction);  // nothing dynamic is rough now
+  EXPECT_FALSE(a.rotation);
+  const BodyId smooth = world.add_body(Body(1.0, 0.5, Vec2{3.0, 0.5}, Vec2{0.0, 0.0}), Material{});
+  EXPECT_FALSE(world.step(3).active.rotation);  // a smooth disk with no spin
+  world.set_body_state(smooth, Vec2{3.0, 0.5}, 0.0, Vec2{0.0, 0.0}, 2.0);
+  EXPECT_TRUE(world.step(3).active.rotation);  // ... spun
+  world.add_body(Body(1.0, {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}, Vec2{-3.0, 0.5}, Vec2{0.0, 0.0}),
+                 Material{});
+  world.set_body_state(smooth, Vec2{3.0, 0.5}, 0.0, Vec2{0.0, 0.0}, 0.0);
+  EXPECT_TRUE(world.step(3).active.rotation);  // a dynamic box turns under contacts
+}
+
 TEST(WorldEffects, SwitchingOffUnneededEffectsChangesNothing)
 {
   const Scene frictionless = scenes::bouncing_disks(5, 0.8);

@@ -361,4 +361,39 @@ low on the pyramid moving inward while the top box had sunk 237 mm into
 the contacts below it by 1 s; base-100 27.3 by 2 s (the top still
 sinking), 16.7 by 5 s, 17.0 by 30 s. The drift is the first seconds'
 settling, the slow vertical mode of *Stacks against Box2D v3*.
+
+A fortieth, on the same host (commit ff056d6; callgrind, perf and
+scratch drivers, not committed). Every frame counted each moving body's
+type, shape and materials to choose the Auto effects, though only an edit
+changes them: on the rain of 1e4 that census took 3% of the bench
+process's instructions. Since ff056d6 it is kept until the next edit, and
+a disk's spin is counted again each frame only where it decides rotation
+(no friction, no dynamic polygon). Same effects and bits. Whole bench
+processes, 1 worker, million instructions: rain of 1e4 1157.0 -> 1117.4
+(-3.4%), rain of 1e5 9794 -> 9429 (-3.7%), pyramid of 5050 1431.1 ->
+1419.0 (-0.85%); 300 fresh worlds of 30 frames: incline -1.2%,
+incline_slide -1.3%, bouncing_disks +0.6% and bullet_wall +0.8% (their
+frictionless disks are still counted each frame). Alternating whole
+processes (CPU, medians): rain of 1e4 0.988 (15 pairs, 0.95 to 1.06),
+rain of 1e5 0.947 (9 pairs, 0.82 to 1.12). Tried and not kept: batches
+without their inverse masses (the lanes took each body's from the load
+that already brought its velocity) and without their springs (chosen by
+whether a body is fixed, as the point verbs choose), 1024 -> 896 bytes a
+two-point batch and 704 -> 576 a one-point batch, the same bits; the
+pyramid of 5050 boxes peaked 448 kB lower (89 of its 4.85 kB a body) but
+ran 1431 -> 1460 million instructions, 27 million of them from carrying
+the masses beside the velocities, and took 0.994 of the time (11
+alternating pairs, 0.80 to 1.07): the passes are not limited by the
+batches' bytes. How much an incremental broad phase could save on the
+rain: of the 10000 bodies, 80 to 86% left an enlarged box (by 0.1 of its
+size, as FatBoxPairs enlarges) each frame from frame 60 to 75, so re-pairing
+only the boxes that left would spare at most a fifth of the pairing. Two
+workers against one in alternating runs today: the rain of 1e5 1.70,
+1.71, 1.51, 1.64, 1.73; the rain of 1e4 1.25, 1.24, 1.35, 1.63, 1.39.
+Profiled with call stacks on 2 workers, the calling thread spent 60% of
+its step in its shares on the rain of 1e4, about 30% waiting for the
+worker (yields at a colour's end or a job's) and 8% in serial work (the
+worker 79% at work, 16% idle); on the rain of 1e5, 76% in shares, 15%
+waiting and 9% serial, of which the colouring 3.1 points and the touching
+flags and sweep candidates 1.4.
 """

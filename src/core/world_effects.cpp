@@ -34,8 +34,9 @@ void BodyCensus::add(const BodyCensus& other)
 const BodyCensus& WorldImpl::census_for_frame()
 {
   // Types, shapes and materials change only by an edit, so their counts hold
-  // until one. A disk's spin changes every frame: it is counted again when
-  // rotation's Auto choice turns on it (no friction, no dynamic polygon).
+  // until one. A disk's spin can change in any frame (a disk that falls
+  // asleep stops): it is counted again each frame where rotation's Auto
+  // choice turns on it (no friction, no dynamic polygon).
   const bool counted = census_known_ && census_version_ == version_;
   const bool spin_decides = settings_.rotation == Toggle::Auto &&
                             !resolve(settings_.friction, census_.rough_pair()) && census_.dynamic_polygons == 0;

@@ -34,13 +34,14 @@ void BodyCensus::add(const BodyCensus& other)
 const BodyCensus& WorldImpl::census_for_frame()
 {
   // Types, shapes and materials change only by an edit, so their counts hold
-  // until one. A disk's spin can change in any frame (a disk that falls
-  // asleep stops): it is counted again each frame where rotation's Auto
-  // choice turns on it (no friction, no dynamic polygon).
+  // until one. Where rotation's Auto choice turns on a disk's spin (no
+  // friction, no dynamic polygon), a spinning disk can stop in any frame (it
+  // falls asleep), so spins are counted again each frame; with none, rotation
+  // is off and nothing but an edit starts one.
   const bool counted = census_known_ && census_version_ == version_;
   const bool spin_decides = settings_.rotation == Toggle::Auto &&
                             !resolve(settings_.friction, census_.rough_pair()) && census_.dynamic_polygons == 0;
-  if (!counted || spin_decides)
+  if (!counted || (spin_decides && census_.spinning_disks > 0))
   {
     census_ = take_census();
     census_known_ = true;

@@ -96,6 +96,27 @@ TEST(WorldEffects, AutoFollowsEditsToTheBodies)
   EXPECT_TRUE(world.step(3).active.rotation);  // a dynamic box turns under contacts
 }
 
+// A frictionless disk that spins slowly keeps rotation on until it falls
+// asleep, which stops it: the spin is counted again each frame, no edit needed.
+TEST(WorldEffects, RotationEndsWhenTheOnlySpinningDiskSleeps)
+{
+  WorldSettings settings;
+  settings.sleeping = Toggle::On;
+  World world(settings);
+  const BodyId ground =
+      world.add_body(Body(1.0, {{-5.0, -0.5}, {5.0, -0.5}, {5.0, 0.5}, {-5.0, 0.5}}, Vec2{0.0, -0.5}, Vec2{0.0, 0.0}));
+  world.set_body_type(ground, BodyType::Static);
+  world.add_body(Body(1.0, 0.5, Vec2{0.0, 0.5}, Vec2{0.0, 0.0}, 0.5 * settings.sleep_angular_speed));
+  EXPECT_TRUE(world.step().active.rotation);
+  int frames = 1;
+  while (world.step().sleeping_bodies == 0 && frames < 600)
+  {
+    ++frames;
+  }
+  ASSERT_LT(frames, 600) << "the disk never fell asleep";
+  EXPECT_FALSE(world.step().active.rotation);
+}
+
 TEST(WorldEffects, SwitchingOffUnneededEffectsChangesNothing)
 {
   const Scene frictionless = scenes::bouncing_disks(5, 0.8);

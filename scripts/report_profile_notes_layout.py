@@ -373,7 +373,8 @@ processes, 1 worker, million instructions: rain of 1e4 1157.0 -> 1117.4
 (-3.4%), rain of 1e5 9794 -> 9429 (-3.7%), pyramid of 5050 1431.1 ->
 1419.0 (-0.85%); 300 fresh worlds of 30 frames: incline -1.2%,
 incline_slide -1.3%, bouncing_disks +0.6% and bullet_wall +0.8% (their
-frictionless disks are still counted each frame). Alternating whole
+frictionless disks were still counted each frame; since 479f055 only
+while one spins, for -4.5% and -2.2%). Alternating whole
 processes (CPU, medians): rain of 1e4 0.988 (15 pairs, 0.95 to 1.06),
 rain of 1e5 0.947 (9 pairs, 0.82 to 1.12). Tried and not kept: batches
 without their inverse masses (the lanes took each body's from the load

@@ -191,9 +191,12 @@ struct WorldImpl : WorldState
   bool may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const;
   /// Soft step: whether choosing sweep candidates can pay this frame.
   bool sweep_candidates_pay() const;
-  /// Soft step: sweep_candidates_ from the frame's touching pairs, and
-  /// whether mark_swept_bodies checks only them this frame.
-  void list_sweep_candidates(bool any_may_turn_fast);
+  /// Soft step: marks body i touched by a contact this frame, and lists it
+  /// as a sweep candidate unless every body is checked.
+  void note_touching(std::size_t i);
+  /// Soft step: whether mark_swept_bodies checks every body this frame or
+  /// only the candidates.
+  void choose_sweep_pass(bool any_may_turn_fast);
   /// `stored`: the bodies hold their velocities; otherwise (the soft
   /// substep) they are read from velocity_ and stored only if a sweep runs.
   bool mark_swept_bodies(double h, bool stored);

@@ -124,43 +124,38 @@ void WorldImpl::prepare_soft_bodies()
   swept_reach_sq_.resize(bodies_.size());
   // One pass over the body records, which a large world streams from memory.
   sweep_every_body_ = !sweep_candidates_pay();            // world_toi.cpp
-  std::atomic<bool> any_may_turn_fast{false};
-  if (sweep_every_body_)
-  {
-    for_each_body([this](std::size_t i) {
-      load_velocity(i);                                   // world_solve.cpp
-      reset_body_motion(i);
-    });
-  }
-  else
+  const bool candidates = !sweep_every_body_;
+  if (candidates)
   {
     swept_.resize(bodies_.size());
-    const FreeSpeedBound bound = free_speed_bound(settings_.dt / settings_.substeps);
-    for_each_body([&](std::size_t i) {
-      load_velocity(i);
-      reset_body_motion(i);
+  }
+  const FreeSpeedBound bound = candidates ? free_speed_bound(settings_.dt / settings_.substeps) : FreeSpeedBound{};
+  std::atomic<bool> any_may_turn_fast{false};
+  for_each_body([&](std::size_t i) {
+    load_velocity(i);                                     // world_solve.cpp
+    reset_body_motion(i);
+    if (candidates)
+    {
       swept_[i] = 0;  // each substep sets only the candidates' flags
       if (may_turn_fast(i, bound))
       {
         any_may_turn_fast.store(true, std::memory_order_relaxed);
       }
-    });
-  }
+    }
+  });
   // The frame's active points are those of the pairs that hit (detect()),
   // so the short pair list says which bodies they touch; a substep can make
   // only those fast unless a free body may turn fast on its own.
+  sweep_candidates_.clear();
   for (std::size_t k = 0; k < pairs_.size(); ++k)
   {
     if (pair_touches(k))
     {
-      touching_[pairs_[k].first] = true;
-      touching_[pairs_[k].second] = true;
+      note_touching(pairs_[k].first);                     // world_toi.cpp
+      note_touching(pairs_[k].second);
     }
   }
-  if (!sweep_every_body_)
-  {
-    list_sweep_candidates(any_may_turn_fast.load());     // world_toi.cpp
-  }
+  choose_sweep_pass(any_may_turn_fast.load());
 }
 
 bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)

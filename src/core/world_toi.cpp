@@ -105,33 +105,21 @@ bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
   return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);
 }
 
-void WorldImpl::list_sweep_candidates(bool any_may_turn_fast)
+void WorldImpl::note_touching(std::size_t i)
 {
-  // The touched visited bodies, each once: a listed body's swept flag (0 for
-  // the frame so far) marks it until the list is done. A resting body
-  // outside the frame's pass keeps its flag at 0 and is never listed.
-  sweep_candidates_.clear();
-  const auto list = [this](std::size_t i) {
-    if (swept_[i] == 0 && (body_pass_full_ || !is_resting_[i]) && swept_reach_sq_[i] >= 0.0)
-    {
-      swept_[i] = 1;
-      sweep_candidates_.push_back(i);
-    }
-  };
-  for (std::size_t k = 0; k < pairs_.size(); ++k)
+  // A visited body was reset to untouched, so it is listed once; a resting
+  // body outside the frame's pass is never a candidate.
+  if (!sweep_every_body_ && !touching_[i] && (body_pass_full_ || !is_resting_[i]) && swept_reach_sq_[i] >= 0.0)
   {
-    if (pair_touches(k))
-    {
-      list(pairs_[k].first);
-      list(pairs_[k].second);
-    }
+    sweep_candidates_.push_back(i);
   }
-  for (std::size_t i : sweep_candidates_)
-  {
-    swept_[i] = 0;
-  }
+  touching_[i] = true;
+}
+
+void WorldImpl::choose_sweep_pass(bool any_may_turn_fast)
+{
   // With most bodies touched, the plain pass over them is the cheaper.
-  sweep_every_body_ = any_may_turn_fast || 2 * sweep_candidates_.size() > visited_count();
+  sweep_every_body_ = sweep_every_body_ || any_may_turn_fast || 2 * sweep_candidates_.size() > visited_count();
 }
 
 bool WorldImpl::sweep_candidates_pay() const

@@ -75,9 +75,7 @@ TEST(WorldEffects, AutoFollowsEditsToTheBodies)
 {
   const Material rough{0.0, 0.6, 0.6};
   World world;
-  world.add_body(Body(1.0, {{-5.0, -0.5}, {5.0, -0.5}, {5.0, 0.5}, {-5.0, 0.5}}, Vec2{0.0, -0.5}, Vec2{0.0, 0.0}),
-                 rough);
-  world.set_body_type(0, BodyType::Static);
+  world.add_body(scenes::make_static_box(10.0, 1.0, Vec2{0.0, -0.5}), rough);
   const BodyId disk = world.add_body(Body(1.0, 0.5, Vec2{0.0, 0.5}, Vec2{0.0, 0.0}), rough);
   ActiveEffects a = world.step(3).active;
   EXPECT_TRUE(a.friction);  // a rough disk on rough ground
@@ -90,8 +88,7 @@ TEST(WorldEffects, AutoFollowsEditsToTheBodies)
   EXPECT_FALSE(world.step(3).active.rotation);  // a smooth disk with no spin
   world.set_body_state(smooth, Vec2{3.0, 0.5}, 0.0, Vec2{0.0, 0.0}, 2.0);
   EXPECT_TRUE(world.step(3).active.rotation);  // ... spun
-  world.add_body(Body(1.0, {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}}, Vec2{-3.0, 0.5}, Vec2{0.0, 0.0}),
-                 Material{});
+  world.add_body(scenes::make_box(1.0, 1.0, 1.0, Vec2{-3.0, 0.5}), Material{});
   world.set_body_state(smooth, Vec2{3.0, 0.5}, 0.0, Vec2{0.0, 0.0}, 0.0);
   EXPECT_TRUE(world.step(3).active.rotation);  // a dynamic box turns under contacts
 }
@@ -103,9 +100,7 @@ TEST(WorldEffects, RotationEndsWhenTheOnlySpinningDiskSleeps)
   WorldSettings settings;
   settings.sleeping = Toggle::On;
   World world(settings);
-  const BodyId ground =
-      world.add_body(Body(1.0, {{-5.0, -0.5}, {5.0, -0.5}, {5.0, 0.5}, {-5.0, 0.5}}, Vec2{0.0, -0.5}, Vec2{0.0, 0.0}));
-  world.set_body_type(ground, BodyType::Static);
+  world.add_body(scenes::make_static_box(10.0, 1.0, Vec2{0.0, -0.5}));
   world.add_body(Body(1.0, 0.5, Vec2{0.0, 0.5}, Vec2{0.0, 0.0}, 0.5 * settings.sleep_angular_speed));
   EXPECT_TRUE(world.step().active.rotation);
   int frames = 1;

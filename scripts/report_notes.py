@@ -142,6 +142,22 @@ the bodies): one pass at a fraction 0.2 column 0.900 / 5.33, base-20 0.496
 compress again within the next frame, so the deepest overlap barely
 shrinks, while the lift, point by point, spreads the pyramid's flanks.
 
+Nor does a part of that carry, nor a softer contact, nor the stiff row
+with one relax pass. Measured at commit e0b4cbc (not this run) with a
+scratch driver stepping `make_stack_scene` for 10 s (scratch changes to
+the core, not kept); drift 1 s -> 10 s / penetration at 10 s, mm. A
+point's gap at prepare lowered by a share of the compression that the
+impulse it carried into the frame would need, so its spring carries only
+the rest of the load: at a share of 0.3 the column went from 0.047 / 6.02
+to 0.172 / 3.76 and base-20 from 0.392 / 2.83 to 0.311 / 2.29, but
+base-60 from 6.59 / 8.71 to 7.43 / 7.05 and base-100 from 17.0 / 14.6 to
+84.7 / 11.8 (at 0.2: 7.14 and 57.8 mm; at 0.6 the column drifted 9.07):
+even a partial carry winds up the tall pyramids' slow mode. At 40 Hz a
+damping ratio of 5, 3 or 2 drifted base-60 6.86, 28.5 and 18.9 mm. The
+stiff row (6 substeps, 90 Hz, damping ratio 15) with its two biased
+passes but one relax a substep, a fifth fewer passes: base-60 0.571 mm
+(0.679 with two), base-100 15.3 mm (2.34 with two).
+
 Why a nudged column (`stack_column_20_nudged`, the column with its top box
 1 um off centre): the exact column is symmetric to the last bit, so nothing
 can start it tipping, and its drift says nothing about a user's column.

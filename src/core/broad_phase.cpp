@@ -94,14 +94,38 @@ void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>
   // hi) that overlaps nothing; then one branch per pair, not one per
   // comparison: in a frame's few boxes the outcomes change as bodies meet and part.
   constexpr double kInf = std::numeric_limits<double>::infinity();
+  const std::size_t n = boxes.size();
+#if defined(__SSE2__)
+  // A corner's x and y side by side: two-lane compares test both axes at once
+  // (lo_i <= hi_j and lo_j <= hi_i), the same comparisons as Aabb::overlaps.
+  __m128d lo[kAllPairsBoxes];
+  __m128d hi[kAllPairsBoxes];
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const __m128d l = _mm_loadu_pd(&boxes[i].lo.x);
+    const __m128d h = _mm_loadu_pd(&boxes[i].hi.x);
+    const bool usable = detail::is_usable(l, h);
+    lo[i] = usable ? l : _mm_set1_pd(kInf);
+    hi[i] = usable ? h : _mm_set1_pd(-kInf);
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    for (std::size_t j = i + 1; j < n; ++j)
+    {
+      const __m128d overlap = _mm_and_pd(_mm_cmple_pd(lo[i], hi[j]), _mm_cmple_pd(lo[j], hi[i]));
+      if (_mm_movemask_pd(overlap) == detail::kBothAxes)
+      {
+        pairs.emplace_back(i, j);
+      }
+    }
+  }
+#else
   constexpr Aabb kEmpty{{kInf, kInf}, {-kInf, -kInf}};
   std::array<Aabb, kAllPairsBoxes> box;
-  const std::size_t n = boxes.size();
   for (std::size_t i = 0; i < n; ++i)
   {
     box[i] = detail::is_usable(boxes[i]) ? boxes[i] : kEmpty;
   }
-  // In (i, j) order: sorted as the grid's pairs end.
   for (std::size_t i = 0; i < n; ++i)
   {
     for (std::size_t j = i + 1; j < n; ++j)
@@ -112,6 +136,8 @@ void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>
       }
     }
   }
+#endif
+  // Either way in (i, j) order: sorted as the grid's pairs end.
 }
 
 void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)

@@ -11,6 +11,10 @@
 
 #include "collision2d/broad_phase.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace collision2d
 {
 namespace detail
@@ -32,6 +36,19 @@ inline bool is_usable(const Aabb& box)
   return std::isfinite(box.lo.x) && std::isfinite(box.lo.y) && std::isfinite(box.hi.x) &&
          std::isfinite(box.hi.y) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y;
 }
+
+#if defined(__SSE2__)
+/// _mm_movemask_pd of a test that holds on both axes of an (x, y) pair.
+constexpr int kBothAxes = 3;
+
+/// is_usable on a box's corners held as (x, y) pairs: x - x is 0 only for a
+/// finite x, so both axes are tested at once.
+inline bool is_usable(__m128d lo, __m128d hi)
+{
+  const __m128d finite = _mm_cmpord_pd(_mm_sub_pd(lo, lo), _mm_sub_pd(hi, hi));
+  return _mm_movemask_pd(_mm_and_pd(finite, _mm_cmple_pd(lo, hi))) == kBothAxes;
+}
+#endif
 
 /// How many parts a pass over `count` items takes (1: not shared).
 inline std::size_t runner_parts(const RangeRunner* runner, std::size_t count)

@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <new>
 #include <random>
 #include <vector>
 
+#include "broad_phase_test_support.h"
 #include "collision2d/broad_phase.h"
 #include "random_scene.h"
 #include "range_runners.h"
@@ -23,44 +23,9 @@ namespace collision2d
 namespace
 {
 constexpr int kSceneBodies = 400;
-
-std::vector<Aabb> boxes_of(const std::vector<Body>& bodies)
-{
-  std::vector<Aabb> boxes;
-  for (const Body& b : bodies)
-  {
-    boxes.push_back(b.aabb());
-  }
-  return boxes;
-}
-
-std::vector<BodyPair> brute_force(const std::vector<Aabb>& boxes)
-{
-  std::vector<BodyPair> pairs;
-  for (std::size_t i = 0; i < boxes.size(); ++i)
-  {
-    for (std::size_t j = i + 1; j < boxes.size(); ++j)
-    {
-      if (boxes[i].overlaps(boxes[j]))
-      {
-        pairs.emplace_back(i, j);
-      }
-    }
-  }
-  return pairs;
-}
-
-void expect_sorted_unique_ordered(const std::vector<BodyPair>& pairs)
-{
-  for (std::size_t k = 0; k < pairs.size(); ++k)
-  {
-    EXPECT_LT(pairs[k].first, pairs[k].second);
-    if (k > 0)
-    {
-      EXPECT_LT(pairs[k - 1], pairs[k]);
-    }
-  }
-}
+using test::boxes_of;
+using test::brute_force;
+using test::expect_sorted_unique_ordered;
 
 /// The unit boxes of a pyramid with `base` boxes in its lowest row, touching.
 std::vector<Aabb> pyramid_boxes(int base)
@@ -163,25 +128,6 @@ TEST(BroadPhase, TouchingBoxesArePairedAndSmallInputsWork)
   broad_phase.find_pairs(boxes, pairs);
   const std::vector<BodyPair> want{{0, 1}, {1, 2}};
   EXPECT_EQ(pairs, want);
-}
-
-/// Brute force restricted to usable boxes: finite, lo <= hi. The others pair
-/// with nothing by contract.
-std::vector<BodyPair> brute_force_usable(const std::vector<Aabb>& boxes)
-{
-  const auto usable = [](const Aabb& b) {
-    return std::isfinite(b.lo.x) && std::isfinite(b.lo.y) && std::isfinite(b.hi.x) && std::isfinite(b.hi.y) &&
-           b.lo.x <= b.hi.x && b.lo.y <= b.hi.y;
-  };
-  std::vector<BodyPair> pairs;
-  for (const BodyPair& p : brute_force(boxes))
-  {
-    if (usable(boxes[p.first]) && usable(boxes[p.second]))
-    {
-      pairs.push_back(p);
-    }
-  }
-  return pairs;
 }
 
 Aabb box_at(Vec2 centre, Vec2 half)
@@ -296,62 +242,6 @@ TEST(BroadPhase, FarAwayAndHugeCoordinates)
   std::vector<BodyPair> pairs;
   broad_phase.find_pairs(boxes, pairs);
   EXPECT_EQ(pairs, brute_force(boxes));
-}
-
-TEST(BroadPhase, NonFiniteAndInvertedBoxesPairWithNothing)
-{
-  std::vector<Aabb> boxes = boxes_of(test::random_scene(8, 200, {12.0, 12.0}));
-  const double inf = std::numeric_limits<double>::infinity();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<std::size_t> bad{3, 40, 41, 100, 150};
-  boxes[3] = Aabb{{-inf, -inf}, {inf, inf}};
-  boxes[40] = Aabb{{nan, 1.0}, {2.0, 3.0}};
-  boxes[41] = Aabb{{1.0, 1.0}, {2.0, nan}};
-  boxes[100] = Aabb{{5.0, 5.0}, {4.0, 6.0}};  // lo > hi along x
-  boxes[150] = Aabb{{nan, nan}, {nan, nan}};
-  BroadPhase broad_phase;
-  std::vector<BodyPair> pairs;
-  broad_phase.find_pairs(boxes, pairs);
-  EXPECT_EQ(pairs, brute_force_usable(boxes));
-  for (const BodyPair& p : pairs)
-  {
-    EXPECT_EQ(std::count(bad.begin(), bad.end(), p.first), 0);
-    EXPECT_EQ(std::count(bad.begin(), bad.end(), p.second), 0);
-  }
-  EXPECT_GT(pairs.size(), 10u);
-  std::vector<Aabb> all_bad(10, Aabb{{nan, nan}, {nan, nan}});
-  broad_phase.find_pairs(all_bad, pairs);
-  EXPECT_TRUE(pairs.empty());
-}
-
-TEST(BroadPhase, FewBoxesTestedPairwiseMatchTheGrid)
-{
-  // From 1 box to 16, across the size where every pair is tested instead of
-  // gridded, on one reused broad phase: the same pairs, sorted, and no pair
-  // with an unusable box.
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  BroadPhase broad_phase;
-  std::vector<BodyPair> pairs;
-  std::size_t found = 0;
-  for (unsigned seed = 1; seed <= 40; ++seed)
-  {
-    const std::size_t n = 1 + seed % 16;
-    std::vector<Aabb> boxes = boxes_of(test::random_scene(seed, n, {3.0, 3.0}));
-    if (seed % 5 == 0)
-    {
-      boxes[seed % n] = Aabb{{nan, 0.0}, {1.0, 1.0}};
-    }
-    if (seed % 3 == 0)
-    {
-      // Inverted along x inside the scene: plain overlap tests would pair it.
-      boxes.back() = Aabb{{1.5, -1.0}, {1.49, 4.0}};
-    }
-    broad_phase.find_pairs(boxes, pairs);
-    EXPECT_EQ(pairs, brute_force_usable(boxes)) << n << " boxes, seed " << seed;
-    expect_sorted_unique_ordered(pairs);
-    found += pairs.size();
-  }
-  EXPECT_GT(found, 40u) << "scenes too sparse to test anything";
 }
 
 TEST(BroadPhase, WarmedUpCallsAllocateNothing)

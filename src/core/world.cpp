@@ -226,7 +226,7 @@ void World::set_step_state(const StepState& state)
     c.contact.a = w.index_of(c.a);
     c.contact.b = w.index_of(c.b);
   }
-  std::vector<bool> asleep(w.bodies_.size(), false);
+  std::vector<unsigned char> asleep(w.bodies_.size(), 0);
   for (BodyId id : state.asleep)
   {
     if (!has_body(id))

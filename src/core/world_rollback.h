@@ -34,7 +34,7 @@ struct Rollback
   bool active = false;       ///< inside a step that keeps what it changes
   bool movers_only = false;  ///< only the movers' motion is kept so far
   std::vector<BodyMotion> motion;
-  std::vector<bool> asleep;
+  std::vector<unsigned char> asleep;
   std::vector<double> rest_time;
   std::vector<WorldContact> contacts;  ///< unless contacts_in_place
   bool contacts_in_place = false;      ///< the step's contacts before it stay in contacts_ until its one publish

@@ -69,7 +69,7 @@ struct WorldState
   std::vector<Material> materials_;
   std::vector<BodyId> ids_;
   BodyId next_id_ = 0;
-  std::vector<bool> asleep_;
+  std::vector<unsigned char> asleep_;  ///< 1 while the body's island sleeps (bytes: read in every body pass)
   std::vector<double> rest_time_;     ///< how long each body has been resting (s)
   std::vector<double> inner_radius_;  ///< m, for the time-of-impact speed test
   double min_inner_radius_ = 0.0;
@@ -164,7 +164,7 @@ struct WorldState
   std::vector<Vec2> kicked_velocity_;  ///< velocities after the gravity kick, before a prediction
   std::vector<double> kicked_omega_;
   std::vector<std::size_t> island_;   ///< union-find parents for sleeping
-  std::vector<bool> island_awake_;
+  std::vector<unsigned char> island_awake_;  ///< by union-find root: some body of the island rests too little
   std::size_t asleep_count_ = 0;        ///< bodies asleep, counted at this sleep stamp and version:
   std::uint64_t asleep_counted_stamp_ = ~std::uint64_t{0};
   std::uint64_t asleep_counted_version_ = 0;

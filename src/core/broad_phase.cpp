@@ -93,6 +93,7 @@ void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>
   // Each box checked once, an unusable one kept as an empty box (lo above
   // hi) that overlaps nothing; then one branch per pair, not one per
   // comparison: in a frame's few boxes the outcomes change as bodies meet and part.
+  // The pairs come out in (i, j) order, sorted as the grid's pairs end.
   constexpr double kInf = std::numeric_limits<double>::infinity();
   const std::size_t n = boxes.size();
 #if defined(__SSE2__)
@@ -137,7 +138,6 @@ void BroadPhase::all_pairs(const std::vector<Aabb>& boxes, std::vector<BodyPair>
     }
   }
 #endif
-  // Either way in (i, j) order: sorted as the grid's pairs end.
 }
 
 void BroadPhase::place_grid(const std::vector<Aabb>& boxes, RangeRunner* runner)

@@ -111,28 +111,23 @@ bool WorldImpl::prepare_pair_points(const ActiveEffects& effects, std::size_t k)
 
 void WorldImpl::prepare_soft_bodies()
 {
-  const std::size_t n = bodies_.size();
-  if (soft_arrays_bodies_ != n || velocity_.size() != n)
-  {
-    velocity_.resize(n);
-    stopped_.resize(n);
-    touching_.resize(n);
-    held_position_.resize(n);
-    held_theta_.resize(n);
-    prepared_position_.resize(n);
-    prepared_theta_.resize(n);
-    frame_position_.resize(n);
-    frame_theta_.resize(n);
-    frame_motion_.resize(n);
-    swept_reach_sq_.resize(n);
-    soft_arrays_bodies_ = n;
-  }
+  velocity_.resize(bodies_.size());
+  stopped_.resize(bodies_.size());
+  touching_.resize(bodies_.size());
+  held_position_.resize(bodies_.size());
+  held_theta_.resize(bodies_.size());
+  prepared_position_.resize(bodies_.size());
+  prepared_theta_.resize(bodies_.size());
+  frame_position_.resize(bodies_.size());
+  frame_theta_.resize(bodies_.size());
+  frame_motion_.resize(bodies_.size());
+  swept_reach_sq_.resize(bodies_.size());
   // One pass over the body records, which a large world streams from memory.
   sweep_every_body_ = !sweep_candidates_pay();            // world_toi.cpp
   const bool candidates = !sweep_every_body_;
   if (candidates)
   {
-    swept_.resize(n);
+    swept_.resize(bodies_.size());
   }
   const FreeSpeedBound bound = candidates ? free_speed_bound(settings_.dt / settings_.substeps) : FreeSpeedBound{};
   std::atomic<bool> any_may_turn_fast{false};

@@ -139,9 +139,6 @@ struct WorldState
   std::vector<Vec2> frame_position_;     ///< soft step: each body's pose during the substeps (place_bodies)
   std::vector<double> frame_theta_;
   std::vector<FrameMotion> frame_motion_;  ///< soft step: how each body moves this frame
-  /// The body count the soft step's per-body arrays (velocity_ to
-  /// swept_reach_sq_) were last sized for: only an edit changes it.
-  std::size_t soft_arrays_bodies_ = 0;
   bool poses_pending_ = false;           ///< frame_position_ and frame_theta_ hold poses not yet on the bodies
   /// soft step: stopped at its time of impact this frame (bytes, not bits:
   /// the workers set their own bodies' flags at once)

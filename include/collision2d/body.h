@@ -119,11 +119,25 @@ private:
   std::vector<Vec2> local_normals_;
 };
 
+/// Whether position, theta, velocity and omega are all finite, in one test:
+/// x * 0 is 0 for a finite x and NaN otherwise (the World checks every body
+/// each frame).
+inline bool has_finite_state(const Body& b)
+{
+  const double zeros = (b.position().x * 0.0 + b.position().y * 0.0) + (b.velocity().x * 0.0 + b.velocity().y * 0.0) +
+                       (b.theta() * 0.0 + b.omega() * 0.0);
+  return zeros == 0.0;
+}
+
 /// The first of position, theta, velocity, omega that is not finite, or
 /// nullptr when the whole state is finite. Body setters do not check (they
 /// run in every substep), so every entry point checks with this.
 inline const char* non_finite_state_field(const Body& b)
 {
+  if (has_finite_state(b))
+  {
+    return nullptr;
+  }
   return !is_finite(b.position())   ? "position"
          : !std::isfinite(b.theta()) ? "theta"
          : !is_finite(b.velocity())  ? "velocity"

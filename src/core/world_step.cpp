@@ -38,15 +38,6 @@ constexpr std::size_t kEnergyBlock = 512;
 
 std::size_t energy_blocks(std::size_t bodies) { return (bodies + kEnergyBlock - 1) / kEnergyBlock; }
 
-/// non_finite_state_field(b) == nullptr in one test: x * 0 is 0 for a finite
-/// x and NaN for an infinite or NaN one, so the sum is 0 only if all six are finite.
-bool finite_state(const Body& b)
-{
-  const double zeros = (b.position().x * 0.0 + b.position().y * 0.0) + (b.velocity().x * 0.0 + b.velocity().y * 0.0) +
-                       (b.theta() * 0.0 + b.omega() * 0.0);
-  return zeros == 0.0;
-}
-
 }  // namespace
 
 StepReport WorldImpl::step(int frames)
@@ -330,7 +321,7 @@ void WorldImpl::require_finite_state()
 void WorldImpl::note_non_finite(std::size_t i, std::atomic<std::size_t>& first_bad) const
 {
   // The lowest index, whichever worker finds it: the same body for any split.
-  if (!finite_state(bodies_[i]))
+  if (!has_finite_state(bodies_[i]))
   {
     lower_to(first_bad, i);
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "collision2d/contact_solver.h"
+#include "timing.h"
 
 namespace collision2d
 {
@@ -17,18 +18,6 @@ namespace
 /// Gap (relative to the pair's size) that still counts as resting contact.
 constexpr double kTouchTolerance = 1e-9;
 constexpr double kMillisecondsPerSecond = 1e3;
-
-int frames_for(double seconds, double dt)
-{
-  return std::max(1, static_cast<int>(std::lround(seconds / dt)));
-}
-
-double median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 == 1 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
 
 /// Wall time of one frame (ms), averaged over `frames` frames of a fresh world.
 double time_per_frame(const Scene& scene, int frames)

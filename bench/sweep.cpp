@@ -28,8 +28,10 @@ constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an 
 constexpr int kSoftStiffSubsteps = 8;
 constexpr double kSoftStiffHertz = 120.0;
 
-/// The Fx2D pipeline's runs (`base` has soft_step off).
-void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
+/// The runs both pipelines start with: the baseline, the exact mode,
+/// sleeping where the scene comes to rest and, on a bullet scene, the time
+/// of impact and the substeps. True on a bullet scene.
+bool add_common_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
   runs.add("baseline", steps_text(base.substeps, base.velocity_iterations), base);
   // The pyramid is one island of 210 boxes (~2400 complementarity rows):
@@ -42,10 +44,20 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
   {
     add_sleeping(base, runs);
   }
-  if (scene.kind == SceneKind::Bullet)
+  if (scene.kind != SceneKind::Bullet)
   {
-    add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
-    add_substeps(base, quick ? std::vector<int>{1, 16} : std::vector<int>{1, 2, 8, 16}, runs);
+    return false;
+  }
+  add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
+  add_substeps(base, quick ? std::vector<int>{1, 16} : std::vector<int>{1, 2, 8, 16}, runs);
+  return true;
+}
+
+/// The Fx2D pipeline's runs (`base` has soft_step off).
+void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
+{
+  if (add_common_runs(scene, base, quick, runs))
+  {
     return;
   }
   if (is_mass_ratio(scene))
@@ -98,20 +110,8 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
 /// found once a frame: the slop and the position passes do not enter it.
 void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
-  runs.add("baseline", steps_text(base.substeps, base.velocity_iterations), base);
-  // The exact mode in the soft step: as in Fx2D, not on the pyramid's one big island.
-  if (scene.name != "pyramid")
+  if (add_common_runs(scene, base, quick, runs))
   {
-    add_exact(base, runs);
-  }
-  if (comes_to_rest(scene))
-  {
-    add_sleeping(base, runs);
-  }
-  if (scene.kind == SceneKind::Bullet)
-  {
-    add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
-    add_substeps(base, quick ? std::vector<int>{1, 16} : std::vector<int>{1, 2, 8, 16}, runs);
     add_values(base, &WorldSettings::speculative_margin, "speculative_margin", {0.0}, runs);
     return;
   }

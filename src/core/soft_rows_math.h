@@ -1,6 +1,7 @@
 // Internal to soft_rows*.cpp: the arithmetic the soft step's row verbs
 // (soft_rows_kernel.h) are written in, for every lane type V: the one-lane
-// type's selects, maxima and minima as selects, and two-vectors of lanes.
+// type's selects, maxima and minima as selects, and two-vectors of lanes;
+// and the vector paths' writes of a batch's byte flags from their masks.
 #pragma once
 
 #include <cmath>

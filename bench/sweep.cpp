@@ -28,10 +28,9 @@ constexpr int kExactFallbackIterations = 256;  // cap of the iterative solve an 
 constexpr int kSoftStiffSubsteps = 8;
 constexpr double kSoftStiffHertz = 120.0;
 
-/// The runs both pipelines start with: the baseline, the exact mode,
-/// sleeping where the scene comes to rest and, on a bullet scene, the time
-/// of impact and the substeps. True on a bullet scene.
-bool add_common_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
+/// The runs both pipelines start with: the baseline, the exact mode and
+/// sleeping where the scene comes to rest.
+void add_common_runs(const BenchScene& scene, const WorldSettings& base, Runs runs)
 {
   runs.add("baseline", steps_text(base.substeps, base.velocity_iterations), base);
   // The pyramid is one island of 210 boxes (~2400 complementarity rows):
@@ -44,20 +43,22 @@ bool add_common_runs(const BenchScene& scene, const WorldSettings& base, bool qu
   {
     add_sleeping(base, runs);
   }
-  if (scene.kind != SceneKind::Bullet)
-  {
-    return false;
-  }
+}
+
+/// A bullet scene's runs in both pipelines: the time of impact and the substeps.
+void add_bullet_runs(const WorldSettings& base, bool quick, Runs runs)
+{
   add_toggles(base, &WorldSettings::time_of_impact, "time_of_impact", {Toggle::On, Toggle::Off}, runs);
   add_substeps(base, quick ? std::vector<int>{1, 16} : std::vector<int>{1, 2, 8, 16}, runs);
-  return true;
 }
 
 /// The Fx2D pipeline's runs (`base` has soft_step off).
 void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
-  if (add_common_runs(scene, base, quick, runs))
+  add_common_runs(scene, base, runs);
+  if (scene.kind == SceneKind::Bullet)
   {
+    add_bullet_runs(base, quick, runs);
     return;
   }
   if (is_mass_ratio(scene))
@@ -110,8 +111,10 @@ void fx2d_world_runs(const BenchScene& scene, const WorldSettings& base, bool qu
 /// found once a frame: the slop and the position passes do not enter it.
 void soft_world_runs(const BenchScene& scene, const WorldSettings& base, bool quick, Runs runs)
 {
-  if (add_common_runs(scene, base, quick, runs))
+  add_common_runs(scene, base, runs);
+  if (scene.kind == SceneKind::Bullet)
   {
+    add_bullet_runs(base, quick, runs);
     add_values(base, &WorldSettings::speculative_margin, "speculative_margin", {0.0}, runs);
     return;
   }

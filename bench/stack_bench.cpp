@@ -18,7 +18,8 @@
 // simulated seconds, wall and thread CPU; the engines
 // take turns, one run each per round), then one run to the longest S: drift
 // from 1 s to each S (largest displacement of any dynamic body between the
-// two instants) and the largest penetration up to each S (our detection on
+// two instants), its sway (the largest such displacement at any frame from
+// 1 s to S) and the largest penetration up to each S (our detection on
 // the engine's poses, as every benchmark measures it), and each engine's time
 // over Box2D v3's: the median over the rounds of that round's ratio, so a
 // machine whose speed drifts between rounds does not skew it. A table goes to stdout (the
@@ -52,6 +53,10 @@ struct Checkpoint
   double seconds = 0.0;
   double drift = 0.0;            ///< m, from kStackSettleSeconds to `seconds`
   double max_penetration = 0.0;  ///< m, largest over the frames up to `seconds`
+  /// m, the largest displacement of any dynamic body from its pose at
+  /// kStackSettleSeconds over every frame up to `seconds`: a stack that
+  /// still rings after 1 s can end near where it was and show little drift.
+  double sway = 0.0;
 };
 
 struct EngineResult
@@ -129,6 +134,7 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
   std::vector<BodyState> now(scene.bodies.size());
   std::vector<Checkpoint> out;
   double deepest = 0.0;
+  double sway = 0.0;
   std::size_t next = 0;
   for (int f = 1; next < seconds.size(); ++f)
   {
@@ -136,9 +142,11 @@ std::vector<Checkpoint> accuracy_run(const BenchScene& bs, const EngineConfig& c
     read_states(*engine, now);
     deepest = std::max(deepest, deepest_overlap(probe, now));
     settled = f == settle_frame ? now : settled;
+    const double drift = largest_move(scene, settled, now);
+    sway = f >= settle_frame ? std::max(sway, drift) : sway;
     while (next < seconds.size() && f == frames_for(seconds[next], dt))
     {
-      out.push_back(Checkpoint{seconds[next], largest_move(scene, settled, now), deepest});
+      out.push_back(Checkpoint{seconds[next], drift, deepest, sway});
       ++next;
     }
   }
@@ -236,17 +244,17 @@ void print_scene(const BenchScene& scene, const std::vector<EngineResult>& resul
     for (const Checkpoint& c : r.checkpoints)
     {
       const std::string engine = run_name(r);
-      std::printf("| %s | %zu | %s | %.3g | %.3g | %.3g | %.3g | %g | %.3g | %.3g |\n", scene.name.c_str(), boxes,
-                  engine.c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
-                  c.drift, c.max_penetration);
+      std::printf("| %s | %zu | %s | %.3g | %.3g | %.3g | %.3g | %g | %.3g | %.3g | %.3g |\n", scene.name.c_str(),
+                  boxes, engine.c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
+                  c.drift, c.sway, c.max_penetration);
       if (csv != nullptr)
       {
-        std::fprintf(csv, "%s,%zu,%s,%s,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g\n", scene.name.c_str(), boxes,
+        std::fprintf(csv, "%s,%zu,%s,%s,%s,%s,%.6g,%.6g,%.6g,%.6g,%g,%.6g,%.6g,%.6g\n", scene.name.c_str(), boxes,
                      engine_name(r.kind).c_str(),
                      r.stiff ? "stiff" : variant_name(config_for(r.kind, scene, Pipeline::Fx2d).variant).c_str(),
                      r.pipeline.c_str(),
                      default_pipeline_name().c_str(), r.ms_per_frame, r.cpu_ms_per_frame, ratio, cpu_ratio, c.seconds,
-                     c.drift, c.max_penetration);
+                     c.drift, c.max_penetration, c.sway);
       }
     }
   }
@@ -281,10 +289,11 @@ int main(int argc, char** argv)
   if (csv != nullptr)
   {
     std::fprintf(csv, "scene,boxes,engine,variant,pipeline,default_pipeline,ms_per_frame,cpu_ms_per_frame,"
-                      "ms_over_box2d_v3,cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m\n");
+                      "ms_over_box2d_v3,cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m,sway_m\n");
   }
   std::printf("| scene | boxes | engine | ms/frame | CPU ms/frame | time / Box2D v3 | CPU time / Box2D v3 | "
-              "run (s) | drift 1 s -> run end (m) | largest penetration (m) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+              "run (s) | drift 1 s -> run end (m) | sway 1 s -> run end (m) | largest penetration (m) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
   try
   {
     for (const std::string& name : names)

@@ -171,4 +171,6 @@ def prepare_stacks(stacks):
         for key in ["ms_per_frame", "cpu_ms_per_frame", "ms_over_box2d_v3", "cpu_ms_over_box2d_v3", "seconds",
                     "drift_m", "max_penetration_m"]:
             r[key] = number(r[key])
+        # Stack benches before the sway column wrote none.
+        r["sway_m"] = number(r.get("sway_m"))
     return stacks

@@ -11,8 +11,11 @@ World's defaults, once per pipeline). Time: median of fresh runs of the first
 second, the engines taking turns (one run each per round); a ratio to
 Box2D v3 is the median over the rounds of that round's ratio, so the
 machine's drift between rounds does not skew it; drift: largest
-displacement of any dynamic body between 1 s and the checkpoint; penetration: our detection on each engine's poses at every frame
-end. All rows come from one run of `collision2d_stack_bench`.
+displacement of any dynamic body between 1 s and the checkpoint; sway: the
+largest such displacement at any frame from 1 s to the run's end (a stack
+still ringing after 1 s can end near where it was then, with little drift);
+penetration: our detection on each engine's poses at every frame end. All
+rows come from one run of `collision2d_stack_bench`.
 
 The drift targets count from 1 s, and in both engines the tall pyramids are
 still settling then. `collision2d_stack_trace --scene NAME --engine NAME`

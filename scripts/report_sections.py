@@ -240,8 +240,8 @@ def stacks_section(stacks, default):
             rows.append([scene.replace("stack_", ""), last["boxes"], name, last["ms_per_frame"],
                          last["cpu_ms_per_frame"], last["ms_over_box2d_v3"], last["cpu_ms_over_box2d_v3"]] +
                         [at[c]["drift_m"] * 1e3 if c in at else float("nan") for c in checkpoints] +
-                        [last["max_penetration_m"] * 1e3])
+                        [last["sway_m"] * 1e3, last["max_penetration_m"] * 1e3])
     out += table(["scene", "boxes", "engine", "ms/frame", "CPU ms/frame", "time / Box2D v3", "CPU time / Box2D v3"] +
                  [f"drift 1 s -> {fmt(c)} s (mm)" for c in checkpoints] +
-                 [f"largest penetration to {fmt(longest)} s (mm)"], rows)
+                 [f"sway 1 s -> {fmt(longest)} s (mm)", f"largest penetration to {fmt(longest)} s (mm)"], rows)
     return out

@@ -36,7 +36,8 @@ def stack_target_rows(stacks, default):
         o = stack_rows(stacks, scene, other_p, seconds=longest)
         t = stack_rows(stacks, scene, "soft", seconds=longest, stiff=True)
         target = STACK_DRIFT_TARGET_M.get(scene, DRIFT_TARGET_M)
-        aside = ([f"{PIPELINE_NAMES[other_p]}: {mm(o['drift_m'])}"] if o else []) + (
+        aside = ([f"sway {mm(r['sway_m'])}"] if finite(r["sway_m"]) else []) + (
+            [f"{PIPELINE_NAMES[other_p]}: {mm(o['drift_m'])}"] if o else []) + (
             [f"soft step with {STIFF_SETTING}: {mm(t['drift_m'])}"] if t else [])
         rows.append([f"{scene} stands: drift 1 s -> {fmt(STACK_TARGET_SECONDS)} s < {mm(target)}{short}",
                      f"{mm(r['drift_m'])}" + (f" ({'; '.join(aside)})" if aside else ""),

@@ -4,7 +4,7 @@
 //
 //   collision2d_stack_bench [--seconds S[,S...]] [--reps N] [--timing-seconds T]
 //                           [--scene NAME]... [--engine NAME]... [--csv FILE]
-//                           [--soft-step on|off|both] [--stiff on|off]
+//                           [--soft-step on|off|both] [--stiff on|off] [--set NAME=VALUE]...
 //
 // Each engine runs the scene with the comparison's rule (stack_scenes.h):
 // ours with the scene's settings (our defaults, 4 substeps, sleeping off) in
@@ -13,7 +13,11 @@
 // each peer with its own defaults but 4 substeps and sleeping off
 // (PeerVariant::Substepped). With --stiff on (the default) ours runs the soft
 // step once more with_stiff_contacts (sweep.h), the setting for tall stacks,
-// whose cost this shows beside the defaults' (CSV variant "stiff"). Per
+// whose cost this shows beside the defaults' (CSV variant "stiff"). Each
+// --set NAME=VALUE sets a WorldSettings field (a number, on/off/auto, true or
+// false) on every scene's settings first: ours takes them all, a peer the dt
+// and substeps it shares, the stiff row its own four over them (the table's
+// heading lists them; the CSV does not). Per
 // scene and engine it prints ms/frame (median of N fresh runs of T
 // simulated seconds, wall and thread CPU; the engines
 // take turns, one run each per round), then one run to the longest S: drift
@@ -291,6 +295,15 @@ int main(int argc, char** argv)
     std::fprintf(csv, "scene,boxes,engine,variant,pipeline,default_pipeline,ms_per_frame,cpu_ms_per_frame,"
                       "ms_over_box2d_v3,cpu_ms_over_box2d_v3,seconds,drift_m,max_penetration_m,sway_m\n");
   }
+  if (!args.settings.empty())
+  {
+    std::printf("Set on every scene (--set):");
+    for (const auto& [name, value] : args.settings)
+    {
+      std::printf(" %s=%s", name.c_str(), value.c_str());
+    }
+    std::printf("\n\n");
+  }
   std::printf("| scene | boxes | engine | ms/frame | CPU ms/frame | time / Box2D v3 | CPU time / Box2D v3 | "
               "run (s) | drift 1 s -> run end (m) | sway 1 s -> run end (m) | largest penetration (m) |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -298,7 +311,8 @@ int main(int argc, char** argv)
   {
     for (const std::string& name : names)
     {
-      const BenchScene scene = make_bench_scene(name);
+      BenchScene scene = make_bench_scene(name);
+      scene.scene.settings = with_set_fields(scene.scene.settings, args);
       print_scene(scene, measure(scene, args), csv);
     }
   }

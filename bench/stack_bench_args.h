@@ -3,7 +3,10 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "collision2d/world_settings.h"
 
 #include "engine.h"
 #include "sweep.h"
@@ -27,12 +30,18 @@ struct StackBenchArguments
   std::string csv;                    ///< empty: no CSV
   std::vector<Pipeline> pipelines{Pipeline::Soft, Pipeline::Fx2d};  ///< ours, once per pipeline
   bool stiff = true;  ///< ours also in the stiff soft step
+  /// --set NAME=VALUE, in order: WorldSettings fields set on every scene's
+  /// settings, which ours takes as they are and a peer where it shares them.
+  std::vector<std::pair<std::string, std::string>> settings;
 };
 
 /// Reads the command line; prints the usage and exits (status 2) on a bad argument.
 StackBenchArguments parse_stack_bench_arguments(int argc, char** argv);
 /// Prints `problem` and the usage, and exits with status 2.
 [[noreturn]] void stack_bench_usage(const std::string& problem);
+/// `settings` with the --set fields; exits through stack_bench_usage naming
+/// a field that does not exist or a value it does not accept.
+WorldSettings with_set_fields(WorldSettings settings, const StackBenchArguments& args);
 
 }  // namespace bench
 }  // namespace collision2d

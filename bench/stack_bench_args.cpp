@@ -5,9 +5,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
-#include <stdexcept>
 
-#include "collision2d/setting_table.h"
+#include <yaml-cpp/yaml.h>
+
+#include "collision2d/scenes/scene_file.h"
 #include "stack_scenes.h"
 
 namespace collision2d
@@ -44,64 +45,6 @@ std::vector<double> parse_seconds(const std::string& text)
   std::sort(values.begin(), values.end());
   return values;
 }
-
-/// Sets the field named `name` from `text`, as a scene file would; `found`
-/// says whether a field had that name, `read` whether the text was its kind.
-class FieldSetter
-{
-public:
-  FieldSetter(const std::string& name, const std::string& text) : name_(name), text_(text) {}
-
-  void operator()(const SettingInfo& info, double& value)
-  {
-    set(info, value, [&](std::size_t* used) { return std::stod(text_, used); });
-  }
-  void operator()(const SettingInfo& info, int& value)
-  {
-    set(info, value, [&](std::size_t* used) { return std::stoi(text_, used); });
-  }
-  void operator()(const SettingInfo& info, std::size_t& value)
-  {
-    set(info, value, [&](std::size_t* used) { return static_cast<std::size_t>(std::stoull(text_, used)); });
-  }
-  template <class Choice>
-  void operator()(const SettingInfo& info, Choice& value)
-  {
-    if (info.name == name_)
-    {
-      found = true;
-      read = from_text(text_, value);
-    }
-  }
-  void operator()(const SettingInfo& info, Vec2&) { found = found || info.name == name_; }
-
-  bool found = false;
-  bool read = false;
-
-private:
-  template <class T, class Parse>
-  void set(const SettingInfo& info, T& value, Parse parse)
-  {
-    if (info.name != name_)
-    {
-      return;
-    }
-    found = true;
-    try
-    {
-      std::size_t used = 0;
-      value = parse(&used);
-      read = used == text_.size();  // the whole text is the number
-    }
-    catch (const std::exception&)
-    {
-      read = false;
-    }
-  }
-
-  const std::string& name_;
-  const std::string& text_;
-};
 
 std::pair<std::string, std::string> parse_set(const std::string& text)
 {
@@ -202,25 +145,34 @@ StackBenchArguments parse_stack_bench_arguments(int argc, char** argv)
 
 WorldSettings with_set_fields(WorldSettings settings, const StackBenchArguments& args)
 {
-  for (const auto& [name, text] : args.settings)
+  if (args.settings.empty())
   {
-    FieldSetter setter(name, text);
-    visit_world_settings(settings, setter);
-    if (!setter.found || !setter.read)
-    {
-      stack_bench_usage(setter.found ? "--set " + name + ": cannot read '" + text + "'"
-                                     : "--set: WorldSettings has no field '" + name + "'");
-    }
+    return settings;
   }
+  // Through the scene file reader, so the names, ranges and former names are
+  // a scene file's: the settings written out, the fields set, read back.
+  Scene holder;
+  holder.settings = settings;
   try
   {
-    validate_world_settings(settings);
+    YAML::Node file = YAML::Load(scenes::scene_to_yaml(holder));
+    for (const auto& [name, text] : args.settings)
+    {
+      try
+      {
+        file["settings"][name] = YAML::Load(text);
+      }
+      catch (const YAML::Exception&)
+      {
+        stack_bench_usage("--set " + name + ": cannot read '" + text + "'");
+      }
+    }
+    return scenes::parse_scene_yaml(YAML::Dump(file), "--set").settings;
   }
-  catch (const std::invalid_argument& error)
+  catch (const std::exception& error)
   {
-    stack_bench_usage(std::string("--set: ") + error.what());
+    stack_bench_usage(error.what());  // names the field, as for a scene file
   }
-  return settings;
 }
 
 }  // namespace bench

@@ -39,7 +39,8 @@ struct StackBenchArguments
 StackBenchArguments parse_stack_bench_arguments(int argc, char** argv);
 /// Prints `problem` and the usage, and exits with status 2.
 [[noreturn]] void stack_bench_usage(const std::string& problem);
-/// `settings` with the --set fields; exits through stack_bench_usage naming
+/// `settings` with the --set fields, read as a scene file's `settings:` map
+/// (same names, ranges and former names); exits through stack_bench_usage naming
 /// a field that does not exist or a value it does not accept.
 WorldSettings with_set_fields(WorldSettings settings, const StackBenchArguments& args);
 

@@ -129,4 +129,32 @@ manifolds, one of 328) and the scaling bench's rain of 1e4 2 colours of 994.
 On the small scenes a frame of incline (soft step, 1 substep, sleeping on,
 300 fresh worlds of 30 frames) ran 6.76 thousand instructions, the pair
 finding 17% of them inclusive and no function above 4.4% on its own.
+
+A forty-fourth, on the same host (commit b5c1cd1; scratch changes to the
+core and drivers, not committed). A spring stiffened per manifold so that
+the load it carried last frame compresses it at most a target depth (its
+mass scale recomputed for that stiffness, the push-out rate kept), stack
+bench over 10 s, drift 1 s -> 10 s / largest penetration, mm, against the
+defaults' column 0.047 / 6.02 and base-60 6.59 / 10.9: a target of 5 mm
+gave the column 2.18 / 4.67 and base-60 7.04 / 8.93; 3 mm 2.95 / 4.62 and
+141 / 9.28; 1 mm 33.9 / 4.71 and 1280 / 15.2 (base-20 unchanged at 0.392 /
+2.84). As the stiffness by load in the stack notes, a stiffness that
+follows last frame's load winds up the tall stacks. Sharing the soft passes
+among workers from 256 coloured manifolds instead of 1024: the rain of 1e4
+on 2 workers took 0.994 of the time (12 alternating whole processes, 0.91
+to 1.05). Writing each body back from the four-lane rows as one 32-byte
+store of its transposed row (v.x, v.y, omega and the moved.x it was
+gathered with), so that a later colour's gather loads what one store wrote,
+and the friction flags' bytes as one read-modify-write instead of a branch
+a lane: frames 31 to 40 of base-100 on 1 worker ran 599.0 million
+instructions against 610.4 (-1.9%, the same bits), but the pyramid of 5050
+boxes on 1 worker took 1.010 of the time a frame (10 alternating runs
+pinned to one core, 0.994 to 1.037) and 0.989 as whole processes (15
+pairs, 0.95 to 1.05): not kept. Two workers against one on this host, the same
+day, in-process alternating pairs: the pyramid of 9870 boxes 1.78 to 1.88
+(5 pairs), the rain of 1e4 1.18 to 1.63 (3 pairs). A caution for any
+two-worker figure: with another process busy on the second virtual CPU
+the calling thread ran the worker's share itself in 97% of the plain jobs
+of the rain of 1e4 (the worker noticed a new job only after the caller had
+finished both shares); with the host otherwise idle, in none.
 """

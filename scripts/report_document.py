@@ -33,7 +33,7 @@ here; the guidance is written by the script from those numbers.
 Which pipeline and which settings to use, from this run's measurements
 (ms are CPU time per frame unless marked wall; details in the sections below).
 
-{guidance_section(runs, stacks, default)}
+{guidance_section(runs, stacks, default, scaling)}
 ## Targets
 
 Reported, not asserted; a target that is missed says by how much. "At the

@@ -1,10 +1,13 @@
 """The performance report's guidance: which pipeline and settings to use, per
 kind of scene, written from the measured numbers."""
 
+import math
+
 from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET, INCLINE_SLID, INCLINE_TARGET,
-                         PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, number)
+                         PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES,
+                         number)
 from report_format import finite, fmt, mm, setting
-from report_analysis import baseline, cheapest_at, find, other, ours, scene_names, stack_rows
+from report_analysis import baseline, cheapest_at, find, other, ours, scene_names, stack_rows, worker_speedups
 
 
 def both(runs, scene, default, fn):
@@ -260,7 +263,33 @@ def guidance_realtime(runs, default):
             ", well inside 16.7 ms at 60 Hz. Keep warm starting on (Auto): it is nearly free and holds stacks up.")
 
 
-def guidance_section(runs, stacks, default):
+# A second worker "pays" where the median round ran at least this much faster.
+WORKERS_PAY = 1.2
+
+
+def guidance_workers(scaling):
+    """Where `workers: 2` paid in the throughput rounds (each round's own ratio, their median)."""
+    cells, paid, unpaid = [], [], []
+    for scene in THROUGHPUT_SCENES:
+        points = worker_speedups(scaling, scene)
+        if points:
+            cells.append(f"{scene} " + ", ".join(f"{int(b)} bodies {fmt(s)}x" for b, s in points))
+            paid += [(scene, b) for b, s in points if s >= WORKERS_PAY]
+            unpaid += [(scene, b) for b, s in points if s < WORKERS_PAY]
+    if not cells:
+        return None
+    named = lambda worlds: ", ".join(f"{scene} {int(b)}" for scene, b in worlds) or "none"
+    advice = ("keep 1 worker" if not paid else
+              f"keep 1 worker below some {int(10 ** round(math.log10(min(b for _, b in paid))))} bodies "
+              "and measure a world that size before adding one")
+    return ("- **Workers.** 2 workers against 1 (wall time, median of each throughput round's own ratio): " +
+            "; ".join(cells) + f". A second worker paid ({fmt(WORKERS_PAY)}x or more) in: {named(paid)}; "
+            f"not in: {named(unpaid)}. So {advice}. Trajectories are the same for any count. A worker needs a "
+            "core no other process keeps busy: with one busy, the calling thread ran the worker's share "
+            "itself (the forty-fourth profile note).")
+
+
+def guidance_section(runs, stacks, default, scaling=()):
     lines = [guidance_pipeline(runs, stacks, default), guidance_stacks(runs, stacks, default),
              guidance_fast(runs, default),
              guidance_scene(runs, default, "bouncing_disks", "Bouncing (restitution)", "", BOUNCE_TARGET,
@@ -274,5 +303,5 @@ def guidance_section(runs, stacks, default):
                             INCLINE_TARGET, incline_substep_advice(runs)),
              guidance_scene(runs, default, "incline_slide", "Sliding down an incline", " m/s^2", INCLINE_TARGET,
                             None),
-             guidance_mass_ratio(runs, default), guidance_realtime(runs, default)]
+             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling)]
     return "\n".join(line for line in lines if line) + "\n"

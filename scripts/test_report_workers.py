@@ -1,10 +1,12 @@
 """Unit tests of the throughput part's speed-up of 2 workers over 1
-(report_analysis.worker_speedup_rounds, report_targets.throughput_target_rows):
+(report_analysis.worker_speedup_rounds, report_targets.throughput_target_rows,
+report_guidance.guidance_workers):
 run by scripts/test.sh with the other test_*.py files."""
 import unittest
 
 from report_analysis import worker_speedup_rounds
 from report_data import median_runs
+from report_guidance import guidance_workers
 from report_targets import throughput_target_rows
 
 
@@ -46,6 +48,25 @@ class WorkerSpeedupTest(unittest.TestCase):
         scaling = [r for r in self.scaling if not (r["engine"] == "box2d_v3" and r["workers"] == "2")]
         (target,) = [r for r in throughput_target_rows(scaling, [], "soft") if r[0].startswith("2 workers")]
         self.assertNotIn("Box2D v3", target[1])
+
+
+class WorkersGuidanceTest(unittest.TestCase):
+    def test_it_names_the_worlds_a_second_worker_paid_in(self):
+        rows = [row("collision2d", 1, 990, 1.0), row("collision2d", 2, 990, 1.1),
+                row("collision2d", 1, 9870, 13.0), row("collision2d", 2, 9870, 8.0)]
+        line = guidance_workers(median_runs(rows))
+        self.assertIn("pyramid 990 bodies 0.909x, 9870 bodies 1.62x", line)
+        self.assertIn("paid (1.2x or more) in: pyramid 9870; not in: pyramid 990", line)
+        self.assertIn("keep 1 worker below some 10000 bodies", line)
+
+    def test_where_none_paid_it_says_keep_one(self):
+        rows = [row("collision2d", 1, 990, 1.0), row("collision2d", 2, 990, 0.95)]
+        line = guidance_workers(median_runs(rows))
+        self.assertIn("in: none; not in: pyramid 990", line)
+        self.assertIn("So keep 1 worker.", line)
+
+    def test_without_throughput_rounds_there_is_no_line(self):
+        self.assertIsNone(guidance_workers([]))
 
 
 if __name__ == "__main__":

@@ -278,7 +278,10 @@ def guidance_workers(scaling):
             unpaid += [(scene, b) for b, s in points if s < WORKERS_PAY]
     if not cells:
         return None
-    named = lambda worlds: ", ".join(f"{scene} {int(b)}" for scene, b in worlds) or "none"
+
+    def named(worlds):
+        return ", ".join(f"{scene} {int(b)}" for scene, b in worlds) or "none"
+
     advice = ("keep 1 worker" if not paid else
               f"keep 1 worker below some {int(10 ** round(math.log10(min(b for _, b in paid))))} bodies "
               "and measure a world that size before adding one")

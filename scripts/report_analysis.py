@@ -164,6 +164,15 @@ def throughput_rows(scaling, scene, engine, workers="1"):
     return sorted(rows, key=lambda r: number(r["bodies"]))
 
 
+def peak_kib_per_body(scaling, scenes, engine, min_bodies=1e4):
+    """(scene, bodies, peak resident memory above the empty process in kB a body) of each 1-worker
+    throughput row of at least min_bodies bodies, scene by scene in size order."""
+    return [(r["scene"], r["bodies"],
+             (number(r["vmhwm_kib"]) - number(r["vmhwm_start_kib"])) / number(r["bodies"]))
+            for sc in scenes for r in throughput_rows(scaling, sc, engine)
+            if number(r["bodies"]) >= min_bodies and r.get("vmhwm_start_kib")]
+
+
 def worker_speedup_rounds(scaling, scene, engine="collision2d"):
     """(bodies, [time with 1 worker / time with 2, one per round]) for each size run both ways,
     ascending: each round's own ratio (its 1-worker run and the 2-worker run right after it), so

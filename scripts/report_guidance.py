@@ -7,7 +7,8 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES,
                          number)
 from report_format import finite, fmt, mm, setting
-from report_analysis import baseline, cheapest_at, find, other, ours, scene_names, stack_rows, worker_speedups
+from report_analysis import (baseline, cheapest_at, find, other, ours, peak_kib_per_body, scene_names, stack_rows,
+                             worker_speedups)
 
 
 def both(runs, scene, default, fn):
@@ -292,6 +293,22 @@ def guidance_workers(scaling):
             "itself (the forty-fourth profile note).")
 
 
+def guidance_memory(scaling):
+    """What a large world costs in memory a body, from the throughput rows (1 worker)."""
+    ours_kib = peak_kib_per_body(scaling, THROUGHPUT_SCENES, "collision2d")
+    if not ours_kib:
+        return None
+    peer = {(scene, b): x for scene, b, x in peak_kib_per_body(scaling, THROUGHPUT_SCENES, "box2d_v3")}
+    cells = [f"{scene} {b} {fmt(x)} kB" + (f" (Box2D v3 {fmt(peer[(scene, b)])})" if (scene, b) in peer else "")
+             for scene, b, x in ours_kib]
+    most = max(ours_kib, key=lambda x: x[2])
+    least = min(ours_kib, key=lambda x: x[2])
+    return ("- **Memory.** Peak resident memory above the empty process, a body (1 worker): " + ", ".join(cells) +
+            f". Plan on about {fmt(most[2])} kB a body where the bodies rest on one another ({most[0]} "
+            f"{most[1]}) and {fmt(least[2])} kB where most are apart ({least[0]} {least[1]}); the profile "
+            "notes break it down (the contact points hold most of it).")
+
+
 def guidance_section(runs, stacks, default, scaling=()):
     lines = [guidance_pipeline(runs, stacks, default), guidance_stacks(runs, stacks, default),
              guidance_fast(runs, default),
@@ -306,5 +323,6 @@ def guidance_section(runs, stacks, default, scaling=()):
                             INCLINE_TARGET, incline_substep_advice(runs)),
              guidance_scene(runs, default, "incline_slide", "Sliding down an incline", " m/s^2", INCLINE_TARGET,
                             None),
-             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling)]
+             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling),
+             guidance_memory(scaling)]
     return "\n".join(line for line in lines if line) + "\n"

@@ -10,8 +10,8 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          STACK_TIME_TARGET, STIFF_SETTING, THROUGHPUT_SCENES, TIME_TARGET, WORKER_SPEEDUP_MIN_BODIES,
                          WORKER_SPEEDUP_TARGET, number)
 from report_format import finite, fmt, mm, over, setting, span, table
-from report_analysis import (baseline, cheapest_at, other, ours, scaling_slope, stack_rows, throughput_rows,
-                             time_target_rows, time_target_scenes, worker_speedup_rounds)
+from report_analysis import (baseline, cheapest_at, other, ours, peak_kib_per_body, scaling_slope, stack_rows,
+                             throughput_rows, time_target_rows, time_target_scenes, worker_speedup_rounds)
 
 
 def verdict(value, target, strict=True):
@@ -226,12 +226,8 @@ def throughput_target_rows(scaling, stacks, default):
     rows.append([f"slope of log time against log bodies <= {SLOPE_TARGET} (pyramid and rain, 1 worker)",
                  f"{fmt(slope)}", "met" if finite(slope) and slope <= SLOPE_TARGET else
                  f"missed by {fmt(slope - SLOPE_TARGET)}" if finite(slope) else "not measured"])
-    def peak_per_body(engine):
-        return [(r["scene"], r["bodies"], (number(r["vmhwm_kib"]) - number(r["vmhwm_start_kib"])) / number(r["bodies"]))
-                for sc in THROUGHPUT_SCENES for r in throughput_rows(scaling, sc, engine)
-                if number(r["bodies"]) >= 1e4 and r.get("vmhwm_start_kib")]
-    mem = peak_per_body("collision2d")
-    peer = {(sc, b): x for sc, b, x in peak_per_body("box2d_v3")}
+    mem = peak_kib_per_body(scaling, THROUGHPUT_SCENES, "collision2d")
+    peer = {(sc, b): x for sc, b, x in peak_kib_per_body(scaling, THROUGHPUT_SCENES, "box2d_v3")}
     if mem:
         worst = max(mem, key=lambda x: x[2])
         rows.append([f"peak memory above the empty process <= {fmt(MEMORY_TARGET_KIB_PER_BODY)} kB per body "

@@ -1,12 +1,12 @@
 """Unit tests of the throughput part's speed-up of 2 workers over 1
 (report_analysis.worker_speedup_rounds, report_targets.throughput_target_rows,
-report_guidance.guidance_workers):
+report_guidance.guidance_workers and guidance_memory):
 run by scripts/test.sh with the other test_*.py files."""
 import unittest
 
 from report_analysis import worker_speedup_rounds
 from report_data import median_runs
-from report_guidance import guidance_workers
+from report_guidance import guidance_memory, guidance_workers
 from report_targets import throughput_target_rows
 
 
@@ -67,6 +67,23 @@ class WorkersGuidanceTest(unittest.TestCase):
 
     def test_without_throughput_rounds_there_is_no_line(self):
         self.assertIsNone(guidance_workers([]))
+
+
+class MemoryGuidanceTest(unittest.TestCase):
+    def test_it_spans_the_densest_and_sparsest_large_worlds(self):
+        def peak(engine, scene, bodies, kib):
+            return dict(row(engine, 1, bodies, 1.0), scene=scene, vmhwm_kib=str(100 + kib * bodies))
+        rows = [peak("collision2d", "pyramid", 9870, 5.0), peak("collision2d", "pyramid", 99681, 4.5),
+                peak("collision2d", "rain", 100000, 1.5), peak("box2d_v3", "rain", 100000, 1.0),
+                peak("collision2d", "rain", 1000, 9.0)]  # under 1e4 bodies: not counted
+        line = guidance_memory(median_runs(rows))
+        self.assertIn("pyramid 99681 4.5 kB, rain 100000 1.5 kB (Box2D v3 1)", line)
+        self.assertIn("about 4.5 kB a body where the bodies rest on one another (pyramid 99681)", line)
+        self.assertIn("1.5 kB where most are apart (rain 100000)", line)
+        self.assertNotIn("9870", line)
+
+    def test_without_large_worlds_there_is_no_line(self):
+        self.assertIsNone(guidance_memory(median_runs([row("collision2d", 1, 990, 1.0)])))
 
 
 if __name__ == "__main__":

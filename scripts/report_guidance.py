@@ -304,9 +304,9 @@ def guidance_memory(scaling):
     most = max(ours_kib, key=lambda x: x[2])
     least = min(ours_kib, key=lambda x: x[2])
     return ("- **Memory.** Peak resident memory above the empty process, a body (1 worker): " + ", ".join(cells) +
-            f". Plan on about {fmt(most[2])} kB a body where the bodies rest on one another ({most[0]} "
-            f"{most[1]}) and {fmt(least[2])} kB where most are apart ({least[0]} {least[1]}); the profile "
-            "notes break it down (the contact points hold most of it).")
+            f". Plan on {fmt(least[2])} to {fmt(most[2])} kB a body ({least[0]} {least[1]} to {most[0]} "
+            f"{most[1]}): what a body costs grows with its contacts, which hold most of it (the profile notes "
+            "break it down).")
 
 
 def guidance_section(runs, stacks, default, scaling=()):

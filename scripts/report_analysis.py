@@ -173,6 +173,13 @@ def peak_kib_per_body(scaling, scenes, engine, min_bodies=1e4):
             if number(r["bodies"]) >= min_bodies and r.get("vmhwm_start_kib")]
 
 
+def peak_kib_beside_peer(scaling, scenes, peer="box2d_v3"):
+    """peak_kib_per_body of ours, each with the peer's kB a body at the same scene and size (None
+    where the peer did not run it): (scene, bodies, ours, peer)."""
+    theirs = {(scene, b): x for scene, b, x in peak_kib_per_body(scaling, scenes, peer)}
+    return [(scene, b, x, theirs.get((scene, b))) for scene, b, x in peak_kib_per_body(scaling, scenes, "collision2d")]
+
+
 def worker_speedup_rounds(scaling, scene, engine="collision2d"):
     """(bodies, [time with 1 worker / time with 2, one per round]) for each size run both ways,
     ascending: each round's own ratio (its 1-worker run and the 2-worker run right after it), so

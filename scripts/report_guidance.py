@@ -7,7 +7,7 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES,
                          number)
 from report_format import finite, fmt, mm, setting
-from report_analysis import (baseline, cheapest_at, find, other, ours, peak_kib_per_body, scene_names, stack_rows,
+from report_analysis import (baseline, cheapest_at, find, other, ours, peak_kib_beside_peer, scene_names, stack_rows,
                              worker_speedups)
 
 
@@ -295,21 +295,20 @@ def guidance_workers(scaling):
 
 def guidance_memory(scaling):
     """What a large world costs in memory a body, from the throughput rows (1 worker)."""
-    ours_kib = peak_kib_per_body(scaling, THROUGHPUT_SCENES, "collision2d")
-    if not ours_kib:
+    mem = peak_kib_beside_peer(scaling, THROUGHPUT_SCENES)
+    if not mem:
         return None
-    peer = {(scene, b): x for scene, b, x in peak_kib_per_body(scaling, THROUGHPUT_SCENES, "box2d_v3")}
-    cells = [f"{scene} {b} {fmt(x)} kB" + (f" (Box2D v3 {fmt(peer[(scene, b)])})" if (scene, b) in peer else "")
-             for scene, b, x in ours_kib]
-    most = max(ours_kib, key=lambda x: x[2])
-    least = min(ours_kib, key=lambda x: x[2])
+    cells = [f"{scene} {b} {fmt(x)} kB" + (f" (Box2D v3 {fmt(p)})" if p is not None else "")
+             for scene, b, x, p in mem]
+    most = max(mem, key=lambda x: x[2])
+    least = min(mem, key=lambda x: x[2])
     return ("- **Memory.** Peak resident memory above the empty process, a body (1 worker): " + ", ".join(cells) +
             f". Plan on {fmt(least[2])} to {fmt(most[2])} kB a body ({least[0]} {least[1]} to {most[0]} "
             f"{most[1]}): what a body costs grows with its contacts, which hold most of it (the profile notes "
             "break it down).")
 
 
-def guidance_section(runs, stacks, default, scaling=()):
+def guidance_section(runs, stacks, default, scaling):
     lines = [guidance_pipeline(runs, stacks, default), guidance_stacks(runs, stacks, default),
              guidance_fast(runs, default),
              guidance_scene(runs, default, "bouncing_disks", "Bouncing (restitution)", "", BOUNCE_TARGET,

@@ -10,7 +10,7 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          STACK_TIME_TARGET, STIFF_SETTING, THROUGHPUT_SCENES, TIME_TARGET, WORKER_SPEEDUP_MIN_BODIES,
                          WORKER_SPEEDUP_TARGET, number)
 from report_format import finite, fmt, mm, over, setting, span, table
-from report_analysis import (baseline, cheapest_at, other, ours, peak_kib_per_body, scaling_slope, stack_rows,
+from report_analysis import (baseline, cheapest_at, other, ours, peak_kib_beside_peer, scaling_slope, stack_rows,
                              throughput_rows, time_target_rows, time_target_scenes, worker_speedup_rounds)
 
 
@@ -226,14 +226,13 @@ def throughput_target_rows(scaling, stacks, default):
     rows.append([f"slope of log time against log bodies <= {SLOPE_TARGET} (pyramid and rain, 1 worker)",
                  f"{fmt(slope)}", "met" if finite(slope) and slope <= SLOPE_TARGET else
                  f"missed by {fmt(slope - SLOPE_TARGET)}" if finite(slope) else "not measured"])
-    mem = peak_kib_per_body(scaling, THROUGHPUT_SCENES, "collision2d")
-    peer = {(sc, b): x for sc, b, x in peak_kib_per_body(scaling, THROUGHPUT_SCENES, "box2d_v3")}
+    mem = peak_kib_beside_peer(scaling, THROUGHPUT_SCENES)
     if mem:
         worst = max(mem, key=lambda x: x[2])
         rows.append([f"peak memory above the empty process <= {fmt(MEMORY_TARGET_KIB_PER_BODY)} kB per body "
                      "(1e4 bodies and up)",
-                     ", ".join(f"{sc} {b}: {fmt(x)} kB" + (f" (Box2D v3 {fmt(peer[(sc, b)])} kB)" if (sc, b) in peer
-                                                            else "") for sc, b, x in mem),
+                     ", ".join(f"{sc} {b}: {fmt(x)} kB" + (f" (Box2D v3 {fmt(p)} kB)" if p is not None else "")
+                               for sc, b, x, p in mem),
                      "met" if worst[2] <= MEMORY_TARGET_KIB_PER_BODY else
                      f"missed by {over(worst[2] / MEMORY_TARGET_KIB_PER_BODY)}x ({worst[0]} {worst[1]})"])
     rows.extend(resting_target_rows(scaling))

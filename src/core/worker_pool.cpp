@@ -3,6 +3,9 @@
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
 #endif
+#if defined(__linux__)
+#include <sched.h>
+#endif
 
 namespace collision2d
 {
@@ -70,6 +73,16 @@ constexpr std::uint64_t kShareMask = (std::uint64_t{1} << kShareBits) - 1;
 struct TeamStopped
 {
 };
+
+/// The CPU this thread runs on, or -1 where that cannot be asked.
+int current_cpu()
+{
+#if defined(__linux__)
+  return sched_getcpu();
+#else
+  return -1;
+#endif
+}
 
 void pause()
 {
@@ -156,12 +169,19 @@ void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
     count_ = count;
     failed_.store(false, std::memory_order_relaxed);
     failure_ = nullptr;
+    caller_cpu_.store(current_cpu(), std::memory_order_relaxed);
     arrived_.store(0, std::memory_order_relaxed);  // a stopped team may have left some counted
     shares_done_.store(0, std::memory_order_relaxed);
     claims_.store(team ? 0 : static_cast<std::uint64_t>(number) << kShareBits | others, std::memory_order_release);
     generation_.store(2 * number + (team ? 1 : 0), std::memory_order_release);
   }
   start_.notify_all();
+  if (sleepers_.load(std::memory_order_acquire) > 0)
+  {
+    // A woken worker may be queued behind this thread: let it run, so it
+    // can move to another CPU before the shares start.
+    std::this_thread::yield();
+  }
   run_share(0);
   if (!team)
   {
@@ -237,21 +257,54 @@ void WorkerPool::run_share(std::size_t index)
   }
 }
 
+void WorkerPool::leave_caller_cpu() const
+{
+#if defined(__linux__)
+  const int here = current_cpu();
+  if (here < 0 || here >= CPU_SETSIZE || here != caller_cpu_.load(std::memory_order_relaxed))
+  {
+    return;
+  }
+  cpu_set_t allowed;
+  if (sched_getaffinity(0, sizeof allowed, &allowed) != 0)
+  {
+    return;
+  }
+  cpu_set_t elsewhere = allowed;
+  CPU_CLR(here, &elsewhere);
+  // Narrowing the mask moves the thread now; widening it again lets the
+  // scheduler place it freely from there on.
+  if (CPU_COUNT(&elsewhere) > 0 && sched_setaffinity(0, sizeof elsewhere, &elsewhere) == 0)
+  {
+    sched_setaffinity(0, sizeof allowed, &allowed);
+  }
+#endif
+}
+
 void WorkerPool::serve(std::size_t index, std::size_t seen)
 {
   for (;;)
   {
     // A new job is seen without the lock first; the lock is then taken only
     // to read it (and to sleep when none comes soon).
-    spin_until([&] { return generation_.load(std::memory_order_acquire) != seen; });
+    const bool spun = spin_until([&] { return generation_.load(std::memory_order_acquire) != seen; });
     std::unique_lock<std::mutex> lock(mutex_);
-    start_.wait(lock, [&] { return quitting_ || generation_.load(std::memory_order_relaxed) != seen; });
+    if (!spun)
+    {
+      sleepers_.fetch_add(1, std::memory_order_relaxed);
+      start_.wait(lock, [&] { return quitting_ || generation_.load(std::memory_order_relaxed) != seen; });
+      sleepers_.fetch_sub(1, std::memory_order_relaxed);
+    }
     if (quitting_)
     {
       return;
     }
     seen = generation_.load(std::memory_order_relaxed);
     lock.unlock();
+    if (!spun)
+    {
+      leave_caller_cpu();
+    }
     if (seen % 2 == 0)
     {
       take_shares(seen / 2);

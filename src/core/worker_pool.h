@@ -7,6 +7,9 @@
 // on which thread ran which share.
 // An exception a job throws on any thread (running out of memory) comes out
 // of run() on the calling thread once every share taken has finished.
+// A worker woken from sleep can be queued on the calling thread's CPU while
+// another CPU idles (seen on virtual machines), and would then only run
+// when the caller pauses; it moves itself off that CPU first.
 #pragma once
 
 #include <atomic>
@@ -86,6 +89,9 @@ private:
   void stop();
   /// A thread's loop: waits for a job newer than `seen`, takes its share.
   void serve(std::size_t index, std::size_t seen);
+  /// After a sleep: if this thread shares the calling thread's CPU and the
+  /// process may run elsewhere, moves it to another allowed CPU (Linux).
+  void leave_caller_cpu() const;
   /// Spins briefly until done() holds; returns whether it did (else the caller sleeps).
   template <class Done>
   static bool spin_until(Done done);
@@ -118,6 +124,8 @@ private:
   std::size_t count_ = 0;
   std::atomic<std::size_t> arrived_{0};  ///< workers at the current sync()
   std::atomic<std::size_t> phase_{0};    ///< bumped when the last one arrives
+  std::atomic<int> caller_cpu_{-1};      ///< the CPU the calling thread started the current job on
+  std::atomic<std::size_t> sleepers_{0}; ///< workers asleep waiting for a job
   std::atomic<bool> failed_{false};      ///< a share of the current job threw ...
   std::exception_ptr failure_;           ///< ... this first (under the mutex)
 };

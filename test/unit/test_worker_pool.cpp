@@ -1,6 +1,7 @@
 // The World's worker threads (worker_pool.h): every item of a job runs
 // exactly once whether the workers are awake, asleep or late; a team job
-// still runs one share on each thread; an exception comes out of run().
+// still runs one share on each thread; an exception comes out of run(); a
+// worker that moves off the calling thread's CPU keeps every CPU it may use.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,10 @@
 #include <vector>
 
 #include "worker_pool.h"
+
+#if defined(__linux__)
+#include <sched.h>
+#endif
 
 namespace collision2d
 {
@@ -110,6 +115,75 @@ TEST(WorkerPool, AnExceptionInAnyShareComesOutOfRunAndThePoolGoesOn)
     EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), static_cast<long>(count)) << "round " << round;
   }
 }
+
+#if defined(__linux__)
+/// The CPUs the calling thread may run on.
+std::set<int> allowed_cpus()
+{
+  cpu_set_t mask;
+  std::set<int> cpus;
+  if (sched_getaffinity(0, sizeof mask, &mask) == 0)
+  {
+    for (int cpu = 0; cpu < CPU_SETSIZE; ++cpu)
+    {
+      if (CPU_ISSET(cpu, &mask))
+      {
+        cpus.insert(cpu);
+      }
+    }
+  }
+  return cpus;
+}
+
+/// The worker's mask, read inside a team job that wakes it from sleep,
+/// in each of `rounds` rounds.
+std::vector<std::set<int>> worker_masks_after_sleeps(WorkerPool& pool, int rounds)
+{
+  std::vector<std::set<int>> masks;
+  for (int round = 0; round < rounds; ++round)
+  {
+    std::this_thread::sleep_for(kLongEnoughToSleep);
+    std::set<int> worker_mask;
+    pool.run_team([&](std::size_t worker) {
+      if (worker == 1)
+      {
+        worker_mask = allowed_cpus();
+      }
+      pool.sync();
+    });
+    masks.push_back(worker_mask);
+  }
+  return masks;
+}
+
+TEST(WorkerPool, AWorkerWokenFromSleepKeepsEveryCpuItMayUse)
+{
+  cpu_set_t original;
+  ASSERT_EQ(sched_getaffinity(0, sizeof original, &original), 0);
+  // With the CPUs this process may use, and confined to the one this thread
+  // is on, where the worker has nowhere else to go.
+  for (const bool confined : {false, true})
+  {
+    if (confined)
+    {
+      cpu_set_t one;
+      CPU_ZERO(&one);
+      CPU_SET(sched_getcpu(), &one);
+      ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+    }
+    const std::set<int> expected = allowed_cpus();  // the worker inherits this thread's mask
+    {
+      WorkerPool pool;
+      pool.resize(2);
+      for (const std::set<int>& mask : worker_masks_after_sleeps(pool, 5))
+      {
+        EXPECT_EQ(mask, expected) << (confined ? "confined to one CPU" : "every CPU");
+      }
+    }
+    ASSERT_EQ(sched_setaffinity(0, sizeof original, &original), 0);
+  }
+}
+#endif
 
 }  // namespace
 }  // namespace detail

@@ -8,10 +8,13 @@
 // it, what a world costs when almost all of it sleeps.
 //
 //   collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting|stirred] [--workers W]
-//                             [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]
+//                             [--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R]
+//                             [--period-ms P] [--header]
 //
+// --period-ms steps the timed frames one per P ms, as a timer in a ROS node
+// would, and times the steps alone (0, the default: back to back).
 // Prints one CSV row: engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,
-// vmhwm_start_kib (the peak before the scene was built). vmhwm_kib is the peak
+// vmhwm_start_kib (the peak before the scene was built),period_ms. vmhwm_kib is the peak
 // from the moment the engine's world is built and the bench's own copy of the
 // scene freed (Linux resets the mark on request; elsewhere the copy counts
 // too). --workers sets ours
@@ -57,13 +60,14 @@ struct Arguments
   bool header = false;
   std::string scene = "gas";
   int workers = 1;
+  double period_ms = 0.0;
 };
 
 [[noreturn]] void usage(const std::string& problem)
 {
   std::fprintf(stderr,
                "%s\nusage: collision2d_scaling_bench --bodies N [--scene gas|pyramid|rain|resting|stirred] [--workers W] "
-               "[--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--header]\n",
+               "[--engine collision2d|box2d|chipmunk|box2d_v3] [--reps R] [--period-ms P] [--header]\n",
                problem.c_str());
   std::exit(2);
 }
@@ -105,6 +109,10 @@ Arguments parse_arguments(int argc, char** argv)
     {
       args.repetitions = std::atoi(argv[++i]);
     }
+    else if (flag == "--period-ms" && has_value)
+    {
+      args.period_ms = std::atof(argv[++i]);
+    }
     else if (flag == "--header")
     {
       args.header = true;
@@ -121,6 +129,10 @@ Arguments parse_arguments(int argc, char** argv)
   if (args.bodies < 1 || args.repetitions < 1 || args.workers < 1)
   {
     usage("--bodies, --reps and --workers must be positive");
+  }
+  if (!(args.period_ms >= 0.0))
+  {
+    usage("--period-ms must be 0 or more");
   }
   if (args.workers > 1 && args.engine != EngineKind::Collision2d && args.engine != EngineKind::Box2dV3)
   {
@@ -186,7 +198,7 @@ int main(int argc, char** argv)
   const Arguments args = parse_arguments(argc, argv);
   if (args.header)
   {
-    std::printf("engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,vmhwm_start_kib\n");
+    std::printf("engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,vmhwm_start_kib,period_ms\n");
     return 0;
   }
   try
@@ -226,12 +238,13 @@ int main(int argc, char** argv)
     std::vector<double> cpu;
     for (int r = 0; r < args.repetitions; ++r)
     {
-      const FrameTime t = time_frames(*engine, frames);
+      const FrameTime t = args.period_ms > 0.0 ? time_paced_frames(*engine, frames, args.period_ms)
+                                               : time_frames(*engine, frames);
       wall.push_back(t.wall_ms);
       cpu.push_back(t.cpu_ms);
     }
-    std::printf("%s,%s,%ld,%d,%d,%.6g,%.6g,%ld,%ld\n", engine_name(args.engine).c_str(), args.scene.c_str(), bodies,
-                args.workers, frames, median(wall), median(cpu), peak_resident_kib(), start_kib);
+    std::printf("%s,%s,%ld,%d,%d,%.6g,%.6g,%ld,%ld,%.6g\n", engine_name(args.engine).c_str(), args.scene.c_str(),
+                bodies, args.workers, frames, median(wall), median(cpu), peak_resident_kib(), start_kib, args.period_ms);
   }
   catch (const std::exception& error)
   {

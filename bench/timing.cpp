@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <ctime>
+#include <thread>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -56,6 +57,26 @@ FrameTime time_frames(Engine& engine, int frames)
   const double cpu_stop = thread_cpu_seconds();
   const double wall = std::chrono::duration<double>(stop - start).count();
   return FrameTime{wall * kMillisecondsPerSecond / frames, (cpu_stop - cpu_start) * kMillisecondsPerSecond / frames};
+}
+
+FrameTime time_paced_frames(Engine& engine, int frames, double period_ms)
+{
+  const auto period = std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+      std::chrono::duration<double, std::milli>(period_ms));
+  double wall = 0.0;
+  double cpu = 0.0;
+  auto tick = std::chrono::steady_clock::now();
+  for (int f = 0; f < frames; ++f)
+  {
+    tick += period;
+    std::this_thread::sleep_until(tick);
+    const double cpu_start = thread_cpu_seconds();
+    const auto start = std::chrono::steady_clock::now();
+    engine.step_frame();
+    wall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    cpu += thread_cpu_seconds() - cpu_start;
+  }
+  return FrameTime{wall * kMillisecondsPerSecond / frames, cpu * kMillisecondsPerSecond / frames};
 }
 
 void fix_allocator_thresholds()

@@ -24,6 +24,11 @@ struct FrameTime
 };
 
 FrameTime time_frames(Engine& engine, int frames);
+/// As time_frames, but each frame starts at the next tick of a clock of
+/// `period_ms`, the way a ROS timer steps a world: only the steps are timed,
+/// not the waits between them (a step longer than the period starts the
+/// next at once). Threads that sleep between frames are timed waking up.
+FrameTime time_paced_frames(Engine& engine, int frames, double period_ms);
 
 /// Fixes the C library's thresholds for returning memory to the system, for
 /// the whole process. By default they move with what the process has freed

@@ -2,8 +2,8 @@
 """Writes docs/performance.md and the PNG plots from the benchmark CSVs.
 
 Called by scripts/performance_report.sh after the measurements; reads
-runs.csv, paired.csv, solver.csv, scaling.csv and stacks.csv from
---perf-dir. Only the standard library and gnuplot are used. Every number in the report comes from those
+runs.csv, paired.csv, solver.csv, scaling.csv, stacks.csv and, when the
+run made it, paced.csv from --perf-dir. Only the standard library and gnuplot are used. Every number in the report comes from those
 CSVs: nothing here is typed in by hand.
 
 Ours runs in two pipelines (the `pipeline` column: soft = the soft step,
@@ -40,6 +40,7 @@ def main():
     solver = read_csv(os.path.join(args.perf_dir, "solver.csv"))
     scaling = median_runs(read_csv(os.path.join(args.perf_dir, "scaling.csv")))
     stacks = prepare_stacks(read_csv(os.path.join(args.perf_dir, "stacks.csv")))
+    paced = read_csv(os.path.join(args.perf_dir, "paced.csv"))  # [] for a run before it was measured
     world_has_exact = any(r["solver_mode"] == "exact" for r in runs)
     default = default_pipeline(runs, stacks)
 
@@ -57,7 +58,8 @@ def main():
         if plot_workers(scaling, os.path.join(args.perf_dir, "workers.png"), work):
             plots_extra.append("![workers](perf/workers.png)")
 
-    doc = render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra)
+    doc = render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra,
+                 paced)
     with open(args.doc, "w") as f:
         f.write(doc)
 

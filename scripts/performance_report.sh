@@ -4,7 +4,8 @@
 # times the runs its time target compares again, in paired rounds), the
 # solver residual sweep, the stack scenes against every peer and the
 # scaling runs and the throughput runs (pyramid and rain, 1 and 2 workers;
-# one process per size, for the peak memory), then writes
+# one process per size, for the peak memory; then stepped on a clock, as a
+# ROS timer steps a world), then writes
 # docs/perf/*.csv, docs/perf/*.png (gnuplot) and docs/performance.md.
 # Ours runs in both pipelines (soft step and Fx2D, each set explicitly) in
 # the sweep and the stacks; the report follows whichever is the default.
@@ -41,10 +42,13 @@ BOX2D_V3_DIR="${COLLISION2D_BOX2D_V3_DIR:-}"
 BOX2D_V3_LIBRARY="${COLLISION2D_BOX2D_V3_LIBRARY:-}"
 STACK_SECONDS=10,60
 STACK_REPS=5
+# Worlds stepped on a clock: one frame every 1/60, 1/30 and 1/10 s.
+PACED_PERIODS_MS=(16.667 33.333 100)
+PACED_ROUNDS=3
 
 for arg in "$@"; do
   case "$arg" in
-    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3; THROUGHPUT_SIZES=(100 1000 10000) ;;
+    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3; THROUGHPUT_SIZES=(100 1000 10000); PACED_ROUNDS=1 ;;
     --no-build) BUILD_FIRST=0 ;;
     *) echo "usage: $0 [--quick] [--no-build]" >&2; exit 2 ;;
   esac
@@ -194,6 +198,21 @@ for n in "${RESTING_SIZES[@]}"; do
   done
 done
 part_done throughput
+
+log "paced: ours with 1 and 2 workers at 1e4 bodies, one frame every ${PACED_PERIODS_MS[*]} ms"
+"$SCALING" --header > "$OUT/paced.csv"
+for (( round = 0; round < PACED_ROUNDS; round++ )); do
+  for period in "${PACED_PERIODS_MS[@]}"; do
+    for scene in pyramid rain; do
+      for workers in 1 2; do
+        on_workers "$workers" "$SCALING" --scene "$scene" --bodies 10000 --workers "$workers" --period-ms "$period" \
+          2>> "$BUILD/scaling.log" | grep "^collision2d," >> "$OUT/paced.csv" ||
+          log "paced: $scene, $workers workers, every $period ms, not measured"
+      done
+    done
+  done
+done
+part_done paced
 
 ELAPSED=$(( $(date +%s) - START ))
 log "measured in ${ELAPSED} s; writing plots and docs/performance.md"

@@ -204,6 +204,23 @@ def worker_speedups(scaling, scene, engine="collision2d"):
     return [(b, statistics.median(ratios)) for b, ratios in worker_speedup_rounds(scaling, scene, engine)]
 
 
+def paced_speedups(paced, engine="collision2d"):
+    """For each world stepped on a clock (scaling bench --period-ms), in scene, size and period order:
+    (scene, bodies, period in ms, median ms a frame on 1 worker, on 2, [each round's speed-up]),
+    a round being a 1-worker run and the 2-worker run after it."""
+    times = {}
+    for r in paced:
+        if r["engine"] == engine and r.get("workers") in ("1", "2"):
+            key = (r["scene"], number(r["bodies"]), number(r["period_ms"]))
+            times.setdefault(key, {"1": [], "2": []})[r["workers"]].append(number(r["ms_per_step"]))
+    out = []
+    for (scene, bodies, period), t in sorted(times.items()):
+        ratios = [x / y for x, y in zip(t["1"], t["2"]) if y > 0]
+        if ratios:
+            out.append((scene, bodies, period, statistics.median(t["1"]), statistics.median(t["2"]), ratios))
+    return out
+
+
 def stack_rows(stacks, scene, pipeline=None, engine="collision2d", seconds=None, stiff=False):
     """The stack bench's row of an engine at a checkpoint (the longest by default); ours at the
     defaults, or with stiff=True the stiff soft-step row (CSV variant "stiff")."""

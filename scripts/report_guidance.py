@@ -2,13 +2,14 @@
 kind of scene, written from the measured numbers."""
 
 import math
+import statistics
 
 from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET, INCLINE_SLID, INCLINE_TARGET,
                          PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES,
                          number)
 from report_format import finite, fmt, mm, setting
-from report_analysis import (baseline, cheapest_at, find, other, ours, peak_kib_beside_peer, scene_names, stack_rows,
-                             worker_speedups)
+from report_analysis import (baseline, cheapest_at, find, other, ours, paced_speedups, peak_kib_beside_peer,
+                             scene_names, stack_rows, worker_speedups)
 
 
 def both(runs, scene, default, fn):
@@ -268,8 +269,23 @@ def guidance_realtime(runs, default):
 WORKERS_PAY = 1.2
 
 
-def guidance_workers(scaling):
-    """Where `workers: 2` paid in the throughput rounds (each round's own ratio, their median)."""
+def paced_sentence(paced):
+    """What 2 workers gave a world stepped on a clock, or "" where none was."""
+    points = paced_speedups(paced)
+    if not points:
+        return ""
+    periods = sorted({period for _, _, period, _, _, _ in points})
+    cells = {}
+    for scene, bodies, period, _, _, ratios in points:
+        cells.setdefault((scene, bodies), []).append(f"{fmt(statistics.median(ratios))}x")
+    return (" Stepped on a clock, one frame every " + ", ".join(fmt(p) for p in periods) + " ms (a ROS timer; the "
+            "workers sleep between frames): " + "; ".join(f"{scene} {int(b)} " + ", ".join(c)
+                                                           for (scene, b), c in cells.items()) + ".")
+
+
+def guidance_workers(scaling, paced=()):
+    """Where `workers: 2` paid in the throughput rounds (each round's own ratio, their median), and
+    on a clock where the report stepped worlds that way."""
     cells, paid, unpaid = [], [], []
     for scene in THROUGHPUT_SCENES:
         points = worker_speedups(scaling, scene)
@@ -288,9 +304,9 @@ def guidance_workers(scaling):
               "and measure a world that size before adding one")
     return ("- **Workers.** 2 workers against 1 (wall time, median of each throughput round's own ratio): " +
             "; ".join(cells) + f". A second worker paid ({fmt(WORKERS_PAY)}x or more) in: {named(paid)}; "
-            f"not in: {named(unpaid)}. So {advice}. Trajectories are the same for any count. A worker needs a "
-            "core no other process keeps busy: with one busy, the calling thread ran the worker's share "
-            "itself (the forty-fourth profile note).")
+            f"not in: {named(unpaid)}.{paced_sentence(paced)} So {advice}. Trajectories are the same for any "
+            "count. A worker needs a core no other process keeps busy: with one busy, the calling thread ran the "
+            "worker's share itself (the forty-fourth profile note).")
 
 
 def guidance_memory(scaling):
@@ -308,7 +324,7 @@ def guidance_memory(scaling):
             "break it down).")
 
 
-def guidance_section(runs, stacks, default, scaling):
+def guidance_section(runs, stacks, default, scaling, paced=()):
     lines = [guidance_pipeline(runs, stacks, default), guidance_stacks(runs, stacks, default),
              guidance_fast(runs, default),
              guidance_scene(runs, default, "bouncing_disks", "Bouncing (restitution)", "", BOUNCE_TARGET,
@@ -322,6 +338,6 @@ def guidance_section(runs, stacks, default, scaling):
                             INCLINE_TARGET, incline_substep_advice(runs)),
              guidance_scene(runs, default, "incline_slide", "Sliding down an incline", " m/s^2", INCLINE_TARGET,
                             None),
-             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling),
+             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling, paced),
              guidance_memory(scaling)]
     return "\n".join(line for line in lines if line) + "\n"

@@ -169,4 +169,41 @@ to the narrow phase 9.7, the grid's pairs up to their sort 9.4, the sort up
 to the movers' pairs 7.6, and the rest under 6 each. The pyramid of 9870
 boxes spends 113 of 835 million cycles between jobs on 2 workers, about 8%
 of a 1-worker run.
+
+A forty-fifth, on the same host (commits 2822c83 and e98ef61, and a trial
+not kept; scratch drivers, not committed). A node steps its world from a
+timer, so its workers sleep between frames; every bench here stepped frames
+back to back and never saw what that costs. Stepping the pyramid of 9870
+boxes one frame every 30 ms, 2 workers took 11.1 to 11.4 ms a frame and 1
+worker 11.0 to 11.4: a worker woken from its sleep was queued on the CPU
+of the thread that called the step (`ps` showed both on one CPU, the other
+idle) and ran only when that thread paused. Pinned to different CPUs by
+the driver, the same two threads took 6.4 ms. Since 2822c83 a woken worker
+that finds itself on the caller's CPU narrows its CPU mask to the others,
+which moves it at once, and widens it again; the caller yields once after
+waking a sleeping worker, so that the worker can run and move before the
+shares start: 6.6 to 6.9 ms. The rain of 1e4 on a 16.7 ms clock: the
+worker woke on the caller's CPU and moved in 56 to 78% of frames.
+`collision2d_scaling_bench --period-ms` (e98ef61) now measures this;
+the pyramid of 9870 boxes, 2 workers over 1 at a 30 ms period, 4
+alternating pairs, before 1.26, 1.13, 1.18, 1.25, after 1.71, 1.71, 1.77,
+1.77; at 100 ms before 1.15, 1.01, 1.40, 1.40, after 1.21, 1.59, 1.38, 1.79;
+the rain of 1e4 at 16.7 ms before 0.82, 0.75, 0.74, 1.04, after 0.87, 0.85,
+0.88, 1.24. The rain gains little on 2 workers stepped back to back as
+well: in-process alternating pairs today 1.02 to 1.09 (pyramid of 9870
+boxes 1.44 to 1.62, rain of 1e5 1.66 and 1.80). This host's two virtual
+CPUs also differ in speed: pinned, one worker took 12.1 and 11.9 ms a
+frame of the pyramid of 9870 boxes on CPU 0 against 10.2 and 10.2 on CPU
+1, and 4.6 against 3.9 ms on the rain of 1e4. Time stamps around the
+pool's shares (the rain of 1e4 on 2 workers, frames 62 to 111) found 39 jobs
+a frame, 10 of them team jobs, 0.55 to 0.60 ms a frame between jobs and
+0.33 to 0.56 ms of the caller waiting for the worker's share, and the
+worker's share of a plain job ran longer than the caller's (the narrow
+phase 0.50 against 0.29 ms a frame, the movers' boxes 0.39 against 0.26,
+publishing 0.15 against 0.07). Tried and not kept: cutting each plain
+job's shares in proportion to how fast each worker ran that job's shares
+before (a fraction per job, moved a quarter of the way toward the speeds
+measured after each run; the same bits): 2 workers took 0.973 of the time
+on the pyramid of 9870 boxes and 0.990 on the rain of 1e4 (9 alternating
+whole processes each), within the spread.
 """

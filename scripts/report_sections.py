@@ -4,13 +4,14 @@ scaling, throughput, stacks)."""
 import datetime
 import os
 import platform
+import statistics
 import subprocess
 
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
                          STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number, v3_on_two_workers)
 from report_format import fmt, label, setting, span, table
-from report_analysis import (baseline, gas_rows, other, ours, ratio, scaling_slope, scene_names, time_target_rows,
-                             time_target_scenes)
+from report_analysis import (baseline, gas_rows, other, ours, paced_speedups, ratio, scaling_slope, scene_names,
+                             time_target_rows, time_target_scenes)
 from report_targets import throughput_target_rows
 
 
@@ -99,7 +100,20 @@ def machine_section(args, runs, stacks, scaling, default):
             f"**{PIPELINE_PHRASES[default].replace('the ', '', 1)}**.\n")
 
 
-def throughput_section(scaling, stacks, default):
+def paced_table(paced):
+    """Ours on 1 and 2 workers with a frame every period, as a ROS timer steps a world."""
+    rows = [[scene, str(int(bodies)), period, one, two, f"{fmt(statistics.median(r))}x ({fmt(min(r))} - {fmt(max(r))})"]
+            for scene, bodies, period, one, two, r in paced_speedups(paced)]
+    if not rows:
+        return ""
+    return ("\nStepped on a clock (`collision2d_scaling_bench --period-ms`): one frame every period, as a timer "
+            "in a ROS node steps a world, so the workers sleep between frames; only the steps are timed (wall). "
+            "The speed-up is the median of each round's own ratio, with its range.\n\n" +
+            table(["scene", "bodies", "period (ms)", "1 worker (ms/frame)", "2 workers (ms/frame)",
+                   "2 workers over 1"], rows))
+
+
+def throughput_section(scaling, stacks, default, paced=()):
     runs = [r for r in scaling if r.get("scene") in THROUGHPUT_SCENES + ["resting", "stirred"]]
     if not runs:
         return "Not measured in this run.\n"
@@ -109,7 +123,7 @@ def throughput_section(scaling, stacks, default):
             for r in sorted(runs, key=lambda r: (r["scene"], r["engine"], r["workers"], number(r["bodies"])))]
     return (table(["target", "measured", "verdict"], throughput_target_rows(scaling, stacks, default)) + "\n" +
             table(["scene", "engine", "workers", "bodies", "timed frames", "ms/frame (wall)", "us per body",
-                   "peak memory above start (kB/body)"], rows))
+                   "peak memory above start (kB/body)"], rows) + paced_table(paced))
 
 
 # -- Detail sections ----------------------------------------------------------

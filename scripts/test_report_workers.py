@@ -1,12 +1,14 @@
 """Unit tests of the throughput part's speed-up of 2 workers over 1
 (report_analysis.worker_speedup_rounds, report_targets.throughput_target_rows,
-report_guidance.guidance_workers and guidance_memory):
+report_guidance.guidance_workers and guidance_memory) and on a clock
+(report_analysis.paced_speedups, report_sections.paced_table):
 run by scripts/test.sh with the other test_*.py files."""
 import unittest
 
-from report_analysis import worker_speedup_rounds
+from report_analysis import paced_speedups, worker_speedup_rounds
 from report_data import median_runs
 from report_guidance import guidance_memory, guidance_workers
+from report_sections import paced_table
 from report_targets import throughput_target_rows
 
 
@@ -83,6 +85,37 @@ class MemoryGuidanceTest(unittest.TestCase):
 
     def test_without_large_worlds_there_is_no_line(self):
         self.assertIsNone(guidance_memory(median_runs([row("collision2d", 1, 990, 1.0)])))
+
+
+
+def paced_row(scene, workers, period, ms):
+    return dict(row("collision2d", workers, 9870, ms), scene=scene, period_ms=str(period))
+
+
+class PacedTest(unittest.TestCase):
+    def setUp(self):
+        # Two rounds, each 1 worker then 2, at two periods, as the script runs them.
+        self.paced = []
+        for one, two in [(12.0, 6.0), (11.0, 8.0)]:
+            for period in (16.667, 100):
+                self.paced += [paced_row("pyramid", 1, period, one), paced_row("pyramid", 2, period, two)]
+
+    def test_each_round_is_paired_with_its_own_two_worker_run(self):
+        self.assertEqual(paced_speedups(self.paced),
+                         [("pyramid", 9870, 16.667, 11.5, 7.0, [2.0, 11.0 / 8.0]),
+                          ("pyramid", 9870, 100, 11.5, 7.0, [2.0, 11.0 / 8.0])])
+
+    def test_the_table_and_the_guidance_give_the_median_speed_up(self):
+        self.assertIn("| pyramid | 9870 | 100 | 11.5 | 7 | 1.69x (1.38 - 2) |", paced_table(self.paced))
+        line = guidance_workers(median_runs([row("collision2d", 1, 9870, 13.0), row("collision2d", 2, 9870, 8.0)]),
+                                self.paced)
+        self.assertIn("one frame every 16.7, 100 ms", line)
+        self.assertIn("pyramid 9870 1.69x, 1.69x", line)
+
+    def test_without_paced_runs_nothing_is_said(self):
+        self.assertEqual(paced_table([]), "")
+        line = guidance_workers(median_runs([row("collision2d", 1, 9870, 13.0), row("collision2d", 2, 9870, 8.0)]))
+        self.assertNotIn("clock", line)
 
 
 if __name__ == "__main__":

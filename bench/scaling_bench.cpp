@@ -14,7 +14,7 @@
 // --period-ms steps the timed frames one per P ms, as a timer in a ROS node
 // would, and times the steps alone (0, the default: back to back).
 // Prints one CSV row: engine,scene,bodies,workers,frames,ms_per_step,cpu_ms_per_step,vmhwm_kib,
-// vmhwm_start_kib (the peak before the scene was built),period_ms. vmhwm_kib is the peak
+// vmhwm_start_kib,period_ms; vmhwm_start_kib is the peak before the scene was built, vmhwm_kib the peak
 // from the moment the engine's world is built and the bench's own copy of the
 // scene freed (Linux resets the mark on request; elsewhere the copy counts
 // too). --workers sets ours

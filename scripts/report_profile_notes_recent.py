@@ -174,16 +174,21 @@ A forty-fifth, on the same host (commits 2822c83 and e98ef61, and a trial
 not kept; scratch drivers, not committed). A node steps its world from a
 timer, so its workers sleep between frames; every bench here stepped frames
 back to back and never saw what that costs. Stepping the pyramid of 9870
-boxes one frame every 30 ms, 2 workers took 11.1 to 11.4 ms a frame and 1
-worker 11.0 to 11.4: a worker woken from its sleep was queued on the CPU
-of the thread that called the step (`ps` showed both on one CPU, the other
-idle) and ran only when that thread paused. Pinned to different CPUs by
-the driver, the same two threads took 6.4 ms. Since 2822c83 a woken worker
+boxes one frame every 30 ms, 2 workers took 11.3 to 11.4 ms a frame and 1
+worker 11.0 to 11.7: a worker woken from its sleep was queued on the CPU
+of the thread that called the step and ran only when that thread paused
+(in a test of the pool alone, jobs of 0.2 ms after a sleep, `ps` showed the
+worker and the caller on one CPU and the other idle, and the caller ran
+every share). Pinned to different CPUs by the driver, the same two threads
+took 6.4 to 6.7 ms. Since 2822c83 a woken worker
 that finds itself on the caller's CPU narrows its CPU mask to the others,
 which moves it at once, and widens it again; the caller yields once after
 waking a sleeping worker, so that the worker can run and move before the
 shares start: 6.6 to 6.9 ms. The rain of 1e4 on a 16.7 ms clock: the
-worker woke on the caller's CPU and moved in 56 to 78% of frames.
+worker woke on the caller's CPU and moved in 56 to 78% of frames. Back to
+back, where the workers stay awake, it changes nothing (6 alternating
+rounds, 2 workers over 1, before and after: the pyramid of 9870 boxes 1.66
+to 1.74 and 1.64 to 1.75, the rain of 1e4 1.06 to 1.19 and 1.07 to 1.16).
 `collision2d_scaling_bench --period-ms` (e98ef61) now measures this;
 the pyramid of 9870 boxes, 2 workers over 1 at a 30 ms period, 4
 alternating pairs, before 1.26, 1.13, 1.18, 1.25, after 1.71, 1.71, 1.77,

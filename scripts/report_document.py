@@ -12,8 +12,7 @@ from report_sections import (knob_section, machine_section, mass_ratio_section, 
                              solver_section, stacks_section, stand_section, throughput_section, time_target_section)
 
 
-def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra=(),
-           paced=()):
+def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra, paced):
     mode_note = ("The World's exact solver mode is swept in both pipelines on every scene but the "
                  "pyramid: its one island of 210 boxes (about 2400 complementarity rows) did not finish 30 frames "
                  "in exact mode within several minutes, so it is not measured there." if world_has_exact else

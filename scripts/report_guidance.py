@@ -324,7 +324,7 @@ def guidance_memory(scaling):
             "break it down).")
 
 
-def guidance_section(runs, stacks, default, scaling, paced=()):
+def guidance_section(runs, stacks, default, scaling, paced):
     lines = [guidance_pipeline(runs, stacks, default), guidance_stacks(runs, stacks, default),
              guidance_fast(runs, default),
              guidance_scene(runs, default, "bouncing_disks", "Bouncing (restitution)", "", BOUNCE_TARGET,

@@ -113,7 +113,7 @@ def paced_table(paced):
                    "2 workers over 1"], rows))
 
 
-def throughput_section(scaling, stacks, default, paced=()):
+def throughput_section(scaling, stacks, default, paced):
     runs = [r for r in scaling if r.get("scene") in THROUGHPUT_SCENES + ["resting", "stirred"]]
     if not runs:
         return "Not measured in this run.\n"

@@ -75,13 +75,20 @@ void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state)
   }
 }
 
-bool solve_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
+double update_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double& change)
 {
   const double vn = dot(relative_velocity(p, state), p.normal);
   const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass());
-  const double change = total - p.lambda_n;
+  change = total - p.lambda_n;
   p.lambda_n = total;
   apply_impulse(p, change * p.normal, state);
+  return vn;
+}
+
+bool solve_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
+{
+  double change = 0.0;
+  update_normal(p, state, change);
   return change != 0.0;
 }
 

@@ -232,7 +232,10 @@ void prepare_pair(ContactPoint& first, const ContactPoint& second);
 void warm_start(ContactPoint& p, std::vector<BodyVelocity>& state);
 
 /// One Gauss-Seidel update of the normal impulse toward the target, kept
-/// >= 0 (a contact pushes, never pulls). Returns whether the impulse changed.
+/// >= 0 (a contact pushes, never pulls): sets `change` to the impulse
+/// applied and returns the normal speed before it (m/s).
+double update_normal(ContactPoint& p, std::vector<BodyVelocity>& state, double& change);
+/// update_normal, returning whether the impulse changed.
 bool solve_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// One update of the tangential impulse toward sticking, clamped to the cone.
 /// `bias` (m/s) is added to the slip speed the update removes (the soft

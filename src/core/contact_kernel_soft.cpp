@@ -119,11 +119,8 @@ void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
 
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
-  const double vn = dot(relative_velocity(p, state), p.normal);
-  const double total = std::max(0.0, p.lambda_n + (p.target - vn) * p.normal_mass());
-  const double applied = total - p.lambda_n;
-  p.lambda_n = total;
-  apply_impulse(p, applied * p.normal, state);
+  double change = 0.0;
+  const double vn = update_normal(p, state, change);
   return p.lambda_n > 0.0 ? std::abs(vn - p.target) : std::max(0.0, p.target - vn);
 }
 

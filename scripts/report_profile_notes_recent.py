@@ -254,7 +254,8 @@ worker, each taken by whichever thread was free, took 2.82, 2.74 and 2.70
 against 2.17, 2.15 and 2.17, and with the soft passes' colours cut the
 same way 3.42, 3.26 and 3.12. A thread no longer kept to the same items
 from job to job, and the stages that stream the points and the bodies
-grew (the narrow phase's manifolds from 4.1% to 8.0% of perf's samples).
+grew (adding the manifolds and preparing their points from 4.1% to 8.0%
+of perf's samples over the whole process).
 Keeping each worker's own run of four shares first, and taking the
 other's only once its own were done, took 2.16, 2.26, 2.19 and 2.13
 against 2.24, 2.13, 2.10 and 2.19: no gain, like the balance by measured

@@ -29,8 +29,10 @@ def main():
     parser.add_argument("--doc", required=True)
     parser.add_argument("--elapsed", default="?")
     parser.add_argument("--quick", action="store_true")
-    # Re-rendering saved CSVs: the commit and load average of the run that measured them.
+    # Re-rendering saved CSVs: the commit, date, kernel and load average of the run that measured them.
     parser.add_argument("--commit", default="")
+    parser.add_argument("--date", default="", help="YYYY-MM-DD the CSVs were measured (default: today)")
+    parser.add_argument("--kernel", default="", help="the kernel release they were measured on (default: this one)")
     parser.add_argument("--load", default="")
     parser.add_argument("--pinned-cpu", default="", help="the core the single-threaded runs were pinned to")
     args = parser.parse_args()

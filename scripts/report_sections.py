@@ -83,16 +83,17 @@ def machine_section(args, runs, stacks, scaling, default):
     except (OSError, subprocess.CalledProcessError):
         commit = "unknown"
     load = args.load or ", ".join(f"{x:.1f}" for x in os.getloadavg())
-    today = datetime.date.today().isoformat()
+    measured = args.date or datetime.date.today().isoformat()
+    kernel = args.kernel or platform.release()
     grid = "quick (--quick: thinned grids, stacks to 10 s, stands to 20 s)" if args.quick else "full"
     v3 = ("**Box2D v3 was included** in this run as a third peer (built from a checkout outside this repository, "
           "given through `COLLISION2D_BOX2D_V3_DIR`)" if has_v3(runs, stacks, scaling) else
           "**Box2D v3 was not included** in this run (the script was not given `COLLISION2D_BOX2D_V3_DIR`), so "
           "there are no ratios to it")
-    return (f"- Machine: {model}, {os.cpu_count()} logical cores, {platform.system()} {platform.release()}; "
+    return (f"- Machine: {model}, {os.cpu_count()} logical cores, {platform.system()} {kernel}; "
             f"load average at report time {load} (the cores were shared with other work, see *Timing*).\n"
             f"{pinned_line(args, scaling)}"
-            f"- Measured {today} at commit `{commit}` (plus any uncommitted changes in the tree), {grid} grids, "
+            f"- Measured {measured} at commit `{commit}` (plus any uncommitted changes in the tree), {grid} grids, "
             f"all measurements in one run of `scripts/performance_report.sh` taking {args.elapsed} s.\n"
             f"- Peers: Box2D 2.4.1 and Chipmunk 7 in every part; {v3}.\n"
             f"- Ours in both pipelines, each run naming its own: the **soft step** (`soft_step: true`) and the "

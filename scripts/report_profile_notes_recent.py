@@ -287,9 +287,9 @@ medians, Off over Auto): bouncing_disks 0.953 (0.908 to 0.981),
 incline_slide 0.966 (0.939 to 0.985). The report's sweep does not vary
 `time_of_impact` on these scenes, and the peer its targets miss against,
 Chipmunk 7, has no continuous collision: with the time of impact off, the
-paired rounds of bouncing_disks would come to about 0.70 of Chipmunk's
-time (0.751 times the instruction ratio, an estimate, not a timed round)
-and incline_slide to about 0.76. A user whose bodies never cross half
+paired rounds of bouncing_disks in the report at fcccc0f would have come
+to about 0.70 of Chipmunk's time (its 0.751 times the instruction ratio,
+an estimate, not a timed round) and incline_slide to about 0.76. A user whose bodies never cross half
 their thinnest width in a substep can turn it off for that; the soft step
 also stopped the bullets of the report at 500 and 1e4 m/s with it off
 (its contacts are found within the frame's reach), but a body knocked fast

@@ -236,12 +236,16 @@ void SoftRows::place_rows(const ContactPoints& points, bool friction, WorkerPool
   part_others_.resize(parts);
   if (parts == 1)
   {
-    place_rows_part(0, 1, points, friction, workers);
+    place_rows_part(0, 1, points, friction);
   }
   else
   {
+    // Each part counts its rows of each colour and kind; its first place of
+    // each then follows the parts' before it.
     resize_to_overwrite(part_counts_, parts * kPartCounts);
-    workers.run_team([&](std::size_t part) { place_rows_part(part, parts, points, friction, workers); });
+    workers.run_stages(2, [&](std::size_t stage, std::size_t part, std::size_t n) {
+      stage == 0 ? count_rows_part(part, n) : place_rows_part(part, n, points, friction);
+    });
   }
   // The rows past a colour's batches, after the manifolds colouring left to
   // the point verbs, in point order as the parts found them.
@@ -254,49 +258,42 @@ void SoftRows::place_rows(const ContactPoints& points, bool friction, WorkerPool
   }
 }
 
-void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const ContactPoints& points,
-                               bool friction, WorkerPool& workers)
+void SoftRows::count_rows_part(std::size_t part, std::size_t parts)
+{
+  std::uint32_t* own = &part_counts_[part * kPartCounts];
+  std::fill(own, own + 2 * kMaxColours, 0U);
+  for (std::size_t k = notes_.size() * part / parts; k < notes_.size() * (part + 1) / parts; ++k)
+  {
+    if (is_row(notes_[k]))
+    {
+      ++own[row_index(notes_[k])];
+    }
+  }
+}
+
+void SoftRows::place_rows_part(std::size_t part, std::size_t parts, const ContactPoints& points, bool friction)
 {
   // Within a colour the rows share no body, so their places are free: in
-  // point order, as the points lie in memory. Each part counts its rows of
-  // each colour and kind; its first place of each follows the parts' before it.
-  const auto index = [](const Note& m) { return 2 * std::size_t{m.colour} + (m.kind == Kind::Single ? 1 : 0); };
-  const auto is_row = [](const Note& m) { return m.first && m.kind != Kind::Other; };
-  const std::size_t n = notes_.size();
-  const std::size_t begin = n * part / parts;
-  const std::size_t end = n * (part + 1) / parts;
+  // point order, as the points lie in memory, after the earlier parts' rows.
   std::array<std::uint32_t, 2 * kMaxColours> next{};
   static_assert(2 * kMaxColours <= kPartCounts, "a part's counts hold every colour and kind");
-  if (parts > 1)
+  for (std::size_t p = 0; p < part; ++p)
   {
-    std::uint32_t* own = &part_counts_[part * kPartCounts];
-    std::fill(own, own + next.size(), 0U);
-    for (std::size_t k = begin; k < end; ++k)
+    for (std::size_t i = 0; i < next.size(); ++i)
     {
-      if (is_row(notes_[k]))
-      {
-        ++own[index(notes_[k])];
-      }
-    }
-    workers.sync();
-    for (std::size_t p = 0; p < part; ++p)
-    {
-      for (std::size_t i = 0; i < next.size(); ++i)
-      {
-        next[i] += part_counts_[p * kPartCounts + i];
-      }
+      next[i] += part_counts_[p * kPartCounts + i];
     }
   }
   auto& others = part_others_[part];
   others.clear();
-  for (std::size_t k = begin; k < end; ++k)
+  for (std::size_t k = notes_.size() * part / parts; k < notes_.size() * (part + 1) / parts; ++k)
   {
     Note& m = notes_[k];
     if (!is_row(m))
     {
       continue;
     }
-    const std::uint32_t slot = next[index(m)]++;
+    const std::uint32_t slot = next[row_index(m)]++;
     if (slot >= range_of(m.colour, m.kind).lanes)
     {
       m.kind = Kind::Other;

@@ -230,10 +230,10 @@ private:
   /// The noted manifolds' keys in order_, from the highest down
   /// (soft_rows_order.cpp), in parts on the workers for a large frame.
   void order_manifolds(WorkerPool& workers);
-  /// Part `part` of `parts` of order_manifolds: the keys of its notes, sorted,
-  /// then its share of every part's keys merged into sort_scratch_ (the
-  /// parts meet at `workers`).
-  void order_part(std::size_t part, std::size_t parts, WorkerPool& workers);
+  /// Part `part` of `parts` of order_manifolds' stage `stage`: 0 counts its
+  /// notes' manifolds, 1 writes their keys after the earlier parts' and sorts
+  /// them, 2 merges its share of every part's keys into sort_scratch_.
+  void order_part(std::size_t stage, std::size_t part, std::size_t parts);
   /// No colours and no rows: every ordered manifold to the overflow.
   void order_without_colours();
   /// Empties the colours (the last frame's only) and the overflow.
@@ -244,9 +244,14 @@ private:
   /// Gives each row manifold its place in its colour's batches, in point
   /// order, and fills its lane; in parts on the workers for a large frame.
   void place_rows(const ContactPoints& points, bool friction, WorkerPool& workers);
-  /// Part `part` of `parts` of place_rows, over its share of the points.
-  void place_rows_part(std::size_t part, std::size_t parts, const ContactPoints& points, bool friction,
-                       WorkerPool& workers);
+  /// Part `part` of `parts` of place_rows: its share of the points' rows
+  /// counted by colour and kind into part_counts_ ...
+  void count_rows_part(std::size_t part, std::size_t parts);
+  /// ... and placed (with one part, part_counts_ is not read).
+  void place_rows_part(std::size_t part, std::size_t parts, const ContactPoints& points, bool friction);
+  /// Whether a note is a row manifold's first point, and its counts' index.
+  static bool is_row(const Note& m) { return m.first && m.kind != Kind::Other; }
+  static std::size_t row_index(const Note& m) { return 2 * std::size_t{m.colour} + (m.kind == Kind::Single ? 1 : 0); }
   /// A row manifold's lane: `slot` among its colour's rows of its kind.
   void fill_lane(const ContactPoints& points, std::size_t first, const Note& m, std::size_t slot,
                  bool friction);
@@ -305,7 +310,7 @@ private:
   FrameBuffer<std::uint64_t> order_;
   FrameBuffer<std::uint64_t> sort_scratch_;
   /// Scratch of the work in parts: each part's count of whatever it counts
-  /// before the parts meet (its manifolds, or its rows by colour and kind),
+  /// in its first stage (its manifolds, or its rows by colour and kind),
   /// kPartCounts entries a part (apart, so no two parts write one cache line).
   std::vector<std::uint32_t> part_counts_;
   static constexpr std::size_t kPartCounts = 256;

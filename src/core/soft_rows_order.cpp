@@ -193,12 +193,12 @@ void SoftRows::order_manifolds(WorkerPool& workers)
   resize_to_overwrite(order_, notes_.size());  // the parts write the first `total` keys
   resize_to_overwrite(sort_scratch_, notes_.size());
   resize_to_overwrite(part_counts_, parts * kPartCounts);
-  workers.run_team([&](std::size_t part) { order_part(part, parts, workers); });
+  workers.run_stages(3, [&](std::size_t stage, std::size_t part, std::size_t n) { order_part(stage, part, n); });
   order_.swap(sort_scratch_);  // the parts merged into sort_scratch_
   order_.resize(SortedRuns{order_.data(), part_counts_.data(), kPartCounts, parts}.total());
 }
 
-void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& workers)
+void SoftRows::order_part(std::size_t stage, std::size_t part, std::size_t parts)
 {
   // Each part's manifolds go, in point order, after those of the parts
   // before it; each part sorts its own where it wrote them (in its core's
@@ -207,16 +207,24 @@ void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& worke
   // the cores' caches on every pass, and took as long on two workers as on one.
   std::uint32_t* counts = part_counts_.data();
   const std::size_t n = notes_.size();
-  std::uint32_t mine = 0;
-  for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+  if (stage == 0)
   {
-    mine += notes_[k].first ? 1 : 0;
+    std::uint32_t mine = 0;
+    for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+    {
+      mine += notes_[k].first ? 1 : 0;
+    }
+    counts[part * kPartCounts] = mine;
+    return;
   }
-  counts[part * kPartCounts] = mine;
-  workers.sync();
   const SortedRuns runs{order_.data(), counts, kPartCounts, parts};
+  if (stage == 2)
+  {
+    const std::size_t total = runs.total();
+    merge_share(runs, total * part / parts, total * (part + 1) / parts, sort_scratch_.data());
+    return;
+  }
   const std::size_t at = runs.begin(part);
-  const std::size_t total = runs.total();
   std::size_t next = at;
   for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
   {
@@ -225,14 +233,13 @@ void SoftRows::order_part(std::size_t part, std::size_t parts, WorkerPool& worke
       order_[next++] = std::uint64_t{notes_[k].key} << 32 | k;
     }
   }
+  const std::size_t mine = counts[part * kPartCounts];
   std::uint64_t* own = order_.data() + at;
   const std::uint64_t* sorted = sort_keys(own, sort_scratch_.data() + at, mine);
   if (sorted != own)
   {
     std::copy(sorted, sorted + mine, own);
   }
-  workers.sync();
-  merge_share(runs, total * part / parts, total * (part + 1) / parts, sort_scratch_.data());
 }
 
 }  // namespace detail

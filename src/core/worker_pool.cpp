@@ -36,7 +36,7 @@ void WorkerPool::resize(int workers)
   threads_.reserve(threads);
   for (std::size_t t = 0; t < threads; ++t)
   {
-    threads_.emplace_back(&WorkerPool::serve, this, t + 1, generation_.load());
+    threads_.emplace_back(&WorkerPool::serve, this, generation_.load());
   }
 }
 
@@ -56,8 +56,9 @@ void WorkerPool::stop()
 
 namespace
 {
-/// Spins between yields at a sync(): long enough to catch a worker that is
-/// a few microseconds behind, short enough not to starve a busy machine.
+/// Spins between yields while a stage finishes: long enough to catch a
+/// worker that is a few microseconds behind, short enough not to starve a
+/// busy machine.
 constexpr int kSpinsBeforeYield = 64;
 /// Yields before a thread waiting for a job (or for the workers to finish
 /// one) sleeps: enough to stay awake through a frame's serial stages (about
@@ -68,9 +69,9 @@ constexpr int kYieldsBeforeSleep = 1024;
 constexpr unsigned kShareBits = 16;
 constexpr std::uint64_t kShareMask = (std::uint64_t{1} << kShareBits) - 1;
 
-/// Thrown at a sync() whose team lost a member to an exception: it ends the
-/// other members' shares; run() passes on the member's exception instead.
-struct TeamStopped
+/// Thrown while waiting for a stage whose share threw: it ends the other
+/// members' walks; run() passes on the share's exception instead.
+struct StagesStopped
 {
 };
 
@@ -113,25 +114,38 @@ bool WorkerPool::spin_until(Done done)
   return false;
 }
 
-void WorkerPool::sync()
+void WorkerPool::begin_stages(std::size_t stages)
 {
-  const std::size_t workers = threads_.size() + 1;
-  if (workers == 1)
+  const std::size_t claims = stages * static_cast<std::size_t>(workers());
+  if (claims > stage_capacity_)
   {
-    return;
+    stage_claims_.reset(new StageClaim[claims]);
+    stage_capacity_ = claims;
   }
-  const std::size_t phase = phase_.load(std::memory_order_acquire);
-  if (arrived_.fetch_add(1, std::memory_order_acq_rel) + 1 == workers)
+  for (std::size_t k = 0; k < claims; ++k)
   {
-    arrived_.store(0, std::memory_order_relaxed);
-    phase_.fetch_add(1, std::memory_order_release);
-    return;
+    stage_claims_[k].taken.store(false, std::memory_order_relaxed);
+    stage_claims_[k].done.store(0, std::memory_order_relaxed);
   }
-  for (int spins = 0; phase_.load(std::memory_order_acquire) == phase; ++spins)
+}
+
+void WorkerPool::await_stage(std::size_t stage)
+{
+  const std::size_t shares = static_cast<std::size_t>(workers());
+  const StageClaim* row = stage_row(stage);
+  const auto finished = [&] {
+    std::size_t done = 0;
+    for (std::size_t m = 0; m < shares; ++m)
+    {
+      done += row[m].done.load(std::memory_order_acquire);
+    }
+    return done == shares;
+  };
+  for (int spins = 0; !finished(); ++spins)
   {
     if (failed_.load(std::memory_order_acquire))
     {
-      throw TeamStopped{};
+      throw StagesStopped{};
     }
     if (spins < kSpinsBeforeYield)
     {
@@ -151,9 +165,9 @@ void WorkerPool::range(std::size_t index, std::size_t& begin, std::size_t& end) 
   end = count_ * (index + 1) / parts;
 }
 
-void WorkerPool::run(std::size_t count, Job job, void* context) { start(count, job, context, false); }
+void WorkerPool::run(std::size_t count, Job job, void* context) { start(count, job, context); }
 
-void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
+void WorkerPool::start(std::size_t count, Job job, void* context)
 {
   if (threads_.empty() || count < 2)
   {
@@ -161,7 +175,7 @@ void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
     return;
   }
   const std::size_t others = threads_.size();
-  const std::size_t number = generation_.load(std::memory_order_relaxed) / 2 + 1;
+  const std::size_t number = generation_.load(std::memory_order_relaxed) + 1;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     job_ = job;
@@ -170,10 +184,9 @@ void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
     failed_.store(false, std::memory_order_relaxed);
     failure_ = nullptr;
     caller_cpu_.store(current_cpu(), std::memory_order_relaxed);
-    arrived_.store(0, std::memory_order_relaxed);  // a stopped team may have left some counted
     shares_done_.store(0, std::memory_order_relaxed);
-    claims_.store(team ? 0 : static_cast<std::uint64_t>(number) << kShareBits | others, std::memory_order_release);
-    generation_.store(2 * number + (team ? 1 : 0), std::memory_order_release);
+    claims_.store(static_cast<std::uint64_t>(number) << kShareBits | others, std::memory_order_release);
+    generation_.store(number, std::memory_order_release);
   }
   start_.notify_all();
   if (sleepers_.load(std::memory_order_acquire) > 0)
@@ -183,10 +196,7 @@ void WorkerPool::start(std::size_t count, Job job, void* context, bool team)
     std::this_thread::yield();
   }
   run_share(0);
-  if (!team)
-  {
-    take_shares(number);
-  }
+  take_shares(number);
   const auto finished = [&] { return shares_done_.load(std::memory_order_acquire) == others; };
   if (!spin_until(finished))
   {
@@ -242,7 +252,7 @@ void WorkerPool::run_share(std::size_t index)
   {
     job_(context_, begin, end);
   }
-  catch (const TeamStopped&)
+  catch (const StagesStopped&)
   {
     // Another share threw first; its exception is the one run() passes on.
   }
@@ -281,7 +291,7 @@ void WorkerPool::leave_caller_cpu() const
 #endif
 }
 
-void WorkerPool::serve(std::size_t index, std::size_t seen)
+void WorkerPool::serve(std::size_t seen)
 {
   for (;;)
   {
@@ -305,13 +315,7 @@ void WorkerPool::serve(std::size_t index, std::size_t seen)
     {
       leave_caller_cpu();
     }
-    if (seen % 2 == 0)
-    {
-      take_shares(seen / 2);
-      continue;
-    }
-    run_share(index);
-    finish_share();
+    take_shares(seen);
   }
 }
 

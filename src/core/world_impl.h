@@ -129,8 +129,6 @@ struct WorldImpl : WorldState
   void soft_pass(const StepContext& ctx, bool use_bias, bool warm);
   /// Whether the soft step solves on its rows (the exact mode keeps the points).
   bool rows_on() const { return settings_.solver_mode != SolverMode::Exact; }
-  static void soft_pass_part(void* pass, std::size_t worker, std::size_t end);
-  void soft_colours(const SoftPass& pass, std::size_t part, std::size_t parts);
   void warm_start_manifold(std::size_t first);
   void solve_soft_manifold(std::size_t first, const StepContext& ctx, bool use_bias);
   /// A sticking point's slip from its anchor now (m), at its anchor offset; 0 for a sliding one.

@@ -2,9 +2,9 @@
 // calls them each substep): a warm start and a biased pass, or the relax.
 // In the iterative mode they walk the colours of the soft rows (soft_rows.h);
 // a colour's manifolds share no moving body, so its rows go four at a time
-// and, with several workers, its manifolds are shared out among them, all
-// meeting before the next colour. Any split gives the same bits. The exact
-// mode keeps the point order.
+// and, with several workers, each colour is a stage whose shares any of them
+// may take (worker_pool.h). Any split gives the same bits. The exact mode
+// keeps the point order.
 #include "world_impl.h"
 
 namespace collision2d
@@ -14,22 +14,14 @@ namespace detail
 namespace
 {
 /// Coloured manifolds below which a pass is too short to share among workers:
-/// they meet once a colour, which costs more than a short colour's work
-/// (measured in docs/performance.md, profile notes).
-constexpr std::size_t kMinTeamManifolds = 1024;
+/// they wait for each other once a colour, which costs more than a short
+/// colour's work (measured in docs/performance.md, profile notes).
+constexpr std::size_t kMinSharedManifolds = 1024;
 
 /// Part `part` of `parts` of [0, n).
 std::size_t part_begin(std::size_t n, std::size_t part, std::size_t parts) { return n * part / parts; }
 
 }  // namespace
-
-struct SoftPass
-{
-  WorldImpl* world = nullptr;
-  const StepContext* ctx = nullptr;
-  bool use_bias = false;
-  bool warm = false;
-};
 
 void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
 {
@@ -45,66 +37,50 @@ void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
     }
     return;
   }
-  SoftPass pass{this, &ctx, use_bias, warm};
-  if (workers_.workers() > 1 && soft_rows_.coloured() >= kMinTeamManifolds)
-  {
-    workers_.run_team(&WorldImpl::soft_pass_part, &pass);
-    return;
-  }
-  soft_colours(pass, 0, 1);
-}
-
-void WorldImpl::soft_pass_part(void* pass, std::size_t worker, std::size_t)
-{
-  SoftPass& p = *static_cast<SoftPass*>(pass);
-  p.world->soft_colours(p, worker, static_cast<std::size_t>(p.world->workers_.workers()));
-}
-
-void WorldImpl::soft_colours(const SoftPass& pass, std::size_t part, std::size_t parts)
-{
-  const auto meet = [&] {
-    if (parts > 1)
-    {
-      workers_.sync();
-    }
-  };
-  const auto others = [&](std::size_t c, auto verb) {
+  // A stage a colour, then one for the overflow: the warm start's, then the solve's.
+  const std::size_t colours = soft_rows_.colour_count();
+  const std::size_t warm_stages = warm ? colours + 1 : 0;
+  const RowPass rows{ctx.inv_h, settings_.contact_push_speed, use_bias};
+  const auto others = [&](std::size_t c, std::size_t part, std::size_t parts, auto verb) {
     const std::vector<std::size_t>& list = soft_rows_.others(c);
     for (std::size_t k = part_begin(list.size(), part, parts); k < part_begin(list.size(), part + 1, parts); ++k)
     {
       verb(list[k]);
     }
   };
-  const auto overflow = [&](auto verb) {
-    if (part == 0)
+  const auto warm_one = [&](std::size_t first) { warm_start_manifold(first); };
+  const auto solve_one = [&](std::size_t first) { solve_soft_manifold(first, ctx, use_bias); };
+  const auto stage = [&](std::size_t s, std::size_t part, std::size_t parts) {
+    const bool warming = s < warm_stages;
+    const std::size_t c = warming ? s : s - warm_stages;
+    if (c == colours)
     {
-      for (std::size_t first : soft_rows_.overflow())
+      // The overflow's manifolds share bodies: one thread, in order.
+      for (std::size_t k = 0; part == 0 && k < soft_rows_.overflow().size(); ++k)
       {
-        verb(first);
+        warming ? warm_one(soft_rows_.overflow()[k]) : solve_one(soft_rows_.overflow()[k]);
       }
+      return;
     }
-  };
-  const auto warm = [&](std::size_t first) { warm_start_manifold(first); };
-  const auto solve = [&](std::size_t first) { solve_soft_manifold(first, *pass.ctx, pass.use_bias); };
-  if (pass.warm)
-  {
-    for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
+    if (warming)
     {
       soft_rows_.warm_start_rows(c, velocity_, part, parts);
-      others(c, warm);
-      meet();
+      others(c, part, parts, warm_one);
+      return;
     }
-    overflow(warm);
-    meet();
-  }
-  const RowPass rows{pass.ctx->inv_h, settings_.contact_push_speed, pass.use_bias};
-  for (std::size_t c = 0; c < soft_rows_.colour_count(); ++c)
-  {
     soft_rows_.solve_rows(c, velocity_, rows, part, parts);
-    others(c, solve);
-    meet();
+    others(c, part, parts, solve_one);
+  };
+  const std::size_t stages = warm_stages + colours + 1;
+  if (workers_.workers() > 1 && soft_rows_.coloured() >= kMinSharedManifolds)
+  {
+    workers_.run_stages(stages, stage);
+    return;
   }
-  overflow(solve);
+  for (std::size_t s = 0; s < stages; ++s)
+  {
+    stage(s, 0, 1);
+  }
 }
 
 void WorldImpl::warm_start_manifold(std::size_t first)

@@ -1,10 +1,12 @@
 // The World's worker threads (worker_pool.h): every item of a job runs
-// exactly once whether the workers are awake, asleep or late; a team job
-// still runs one share on each thread; an exception comes out of run(); a
-// worker that moves off the calling thread's CPU keeps every CPU it may use.
+// exactly once whether the workers are awake, asleep or late; a staged job
+// runs every share of every stage once, each stage after the one before; an
+// exception comes out of run() and run_stages(); a worker that moves off the
+// calling thread's CPU keeps every CPU it may use.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <mutex>
@@ -65,29 +67,71 @@ TEST(WorkerPool, EveryItemRunsOnceWhetherTheWorkersAreAwakeOrAsleep)
   }
 }
 
-TEST(WorkerPool, ATeamJobRunsOneShareOnEachThreadEvenAfterTheySlept)
+TEST(WorkerPool, AStagedJobRunsEachShareOnceAndEachStageAfterTheOneBefore)
 {
-  for (const int workers : {2, 4})
+  constexpr std::size_t kStages = 7;
+  for (const int workers : {1, 2, 4})
   {
     WorkerPool pool;
     pool.resize(workers);
-    std::this_thread::sleep_for(kLongEnoughToSleep);
-    std::mutex mutex;
-    std::set<std::thread::id> threads;
-    std::vector<int> shares(static_cast<std::size_t>(workers), 0);
-    pool.run_team([&](std::size_t worker) {
-      {
-        std::lock_guard<std::mutex> lock(mutex);
-        threads.insert(std::this_thread::get_id());
-        ++shares[worker];
-      }
-      pool.sync();  // every member must be there: none may run two shares
-    });
-    EXPECT_EQ(threads.size(), static_cast<std::size_t>(workers));
-    for (int w = 0; w < workers; ++w)
+    const std::size_t shares = static_cast<std::size_t>(workers);
+    for (int round = 0; round < 40; ++round)
     {
-      EXPECT_EQ(shares[static_cast<std::size_t>(w)], 1) << "worker " << w;
+      if (round % 8 == 0)
+      {
+        std::this_thread::sleep_for(kLongEnoughToSleep);
+      }
+      // Each share writes its own slot of its stage; a share of the next
+      // stage adds up every slot of this one, which must all be written.
+      std::vector<std::atomic<int>> runs(kStages * shares);
+      std::vector<long> slot(kStages * shares, 0);
+      std::atomic<int> early{0};
+      pool.run_stages(kStages, [&](std::size_t stage, std::size_t share, std::size_t n) {
+        ASSERT_EQ(n, shares);
+        runs[stage * n + share].fetch_add(1);
+        long sum = 1;
+        for (std::size_t p = 0; stage > 0 && p < n; ++p)
+        {
+          early += slot[(stage - 1) * n + p] == 0 ? 1 : 0;
+          sum += slot[(stage - 1) * n + p];
+        }
+        slot[stage * n + share] = sum;
+      });
+      EXPECT_EQ(early.load(), 0) << workers << " workers, round " << round;
+      for (std::size_t k = 0; k < runs.size(); ++k)
+      {
+        ASSERT_EQ(runs[k].load(), 1) << workers << " workers, round " << round << ", stage " << k / shares;
+      }
+      // Stage s's slots each hold 1 + shares * (stage s - 1's), from 1.
+      long expected = 1;
+      for (std::size_t stage = 0; stage < kStages; ++stage)
+      {
+        EXPECT_EQ(slot[stage * shares + shares - 1], expected) << workers << " workers, stage " << stage;
+        expected = 1 + static_cast<long>(shares) * expected;
+      }
     }
+  }
+}
+
+TEST(WorkerPool, AnExceptionInAnyStageComesOutOfRunStagesAndThePoolGoesOn)
+{
+  WorkerPool pool;
+  pool.resize(2);
+  for (std::size_t throwing_stage = 0; throwing_stage < 3; ++throwing_stage)
+  {
+    std::atomic<int> after{0};
+    EXPECT_THROW(pool.run_stages(4,
+                                 [&](std::size_t stage, std::size_t share, std::size_t) {
+                                   if (stage == throwing_stage && share == 1)
+                                   {
+                                     throw std::runtime_error("stage share");
+                                   }
+                                   after += stage > throwing_stage ? 1 : 0;
+                                 }),
+                 std::runtime_error);
+    EXPECT_EQ(after.load(), 0) << "a stage after the one that threw ran";
+    const std::vector<int> hits = hits_of_one_job(pool, 1000);
+    EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), 1000L) << "stage " << throwing_stage;
   }
 }
 
@@ -135,21 +179,34 @@ std::set<int> allowed_cpus()
   return cpus;
 }
 
-/// The worker's mask, read inside a team job that wakes it from sleep,
-/// in each of `rounds` rounds.
+/// The worker's mask, read in the second share of a job that wakes it from
+/// sleep, in each of `rounds` rounds: the first share, which the calling
+/// thread runs, waits until another thread has run the second (a failed
+/// test rather than a hang if none does within a few seconds).
 std::vector<std::set<int>> worker_masks_after_sleeps(WorkerPool& pool, int rounds)
 {
+  const std::thread::id caller = std::this_thread::get_id();
   std::vector<std::set<int>> masks;
   for (int round = 0; round < rounds; ++round)
   {
     std::this_thread::sleep_for(kLongEnoughToSleep);
     std::set<int> worker_mask;
-    pool.run_team([&](std::size_t worker) {
-      if (worker == 1)
+    std::atomic<bool> second_ran{false};
+    pool.parallel_for(2, 2, [&](std::size_t begin, std::size_t) {
+      if (begin == 1)
       {
-        worker_mask = allowed_cpus();
+        if (std::this_thread::get_id() != caller)
+        {
+          worker_mask = allowed_cpus();
+        }
+        second_ran.store(true);
+        return;
       }
-      pool.sync();
+      const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+      while (!second_ran.load() && std::chrono::steady_clock::now() < give_up)
+      {
+        std::this_thread::yield();
+      }
     });
     masks.push_back(worker_mask);
   }

@@ -314,4 +314,28 @@ this small a change is judged by its instructions, and none saved enough.
 The report run right after, on the same core code, timed bouncing_disks at
 0.806 and incline at 0.774 (0.73 in the report before): the host's spells
 add to the layout's spread.
+
+A forty-ninth, on the same host (commit ffeb066; the scaling bench, and
+trials not kept). What a core another process keeps busy does to two
+workers: with `taskset -c 0 sh -c 'while :; do :; done'` running, 5 rounds
+of `collision2d_scaling_bench --workers 2` for the build before and after,
+and 1 worker pinned to CPU 1, ms a frame. Before, the soft passes, the
+rows' placing and the manifolds' ordering were team jobs whose members all
+met after each colour; a worker waiting behind the busy loop stalled every
+meeting. Two workers then took 1.77 times one worker's time on the pyramid
+of 9870 boxes (median of the rounds' ratios; 1.42 to 2.10), 1.80 on the
+rain of 1e4 (0.94 to 4.57) and 1.37 on the rain of 1e5 (1.31 to 1.58).
+Since ffeb066 those jobs run in stages whose untaken shares any thread may
+run: 1.10 (1.06 to 1.15), 1.05 (0.92 to 1.20) and 1.03 (1.01 to 1.22).
+Box2D v3 in the same rounds, 2 workers over 1: 0.95, 1.01 and 0.90. On an
+idle host the staged jobs cost nothing measurable (alternating runs, after
+over before: pyramid of 9870 1.005, rain of 1e4 1.003, rain of 1e5 1.01,
+the base-100 pyramid on 1 worker 1.0), and every body's pose and velocity
+over 90 frames hashed the same before and after, on 1, 2 and 4 workers and
+with the busy loop. Not kept: four shares a worker in each stage, taken the
+same way, cost 2 to 8% on an idle host (a thread that finishes first takes
+the other's last share and, with it, bodies that sit in the other core's
+cache) and gained nothing with the busy loop; and the soft passes' file
+built for AVX-512 (32 vector registers instead of 16, the same four lanes)
+took 1.37 times as long on the base-100 pyramid.
 """

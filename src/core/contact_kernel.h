@@ -176,23 +176,30 @@ inline double newton_target(double normal_speed, double restitution, double thre
   return restitution > 0.0 && approach > threshold ? restitution * approach : 0.0;
 }
 
+// The point verbs' innermost steps (the relative velocity, an impulse) are
+// always inlined: a call costs more than their bodies, and left to the
+// inliner a change elsewhere once made them calls (4% more instructions on a
+// two-body frame).
+
 /// Relative velocity of b with respect to a at lever arms r_a, r_b.
-inline Vec2 relative_velocity_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b, const std::vector<BodyVelocity>& state)
+__attribute__((always_inline)) inline Vec2 relative_velocity_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b,
+                                                                const std::vector<BodyVelocity>& state)
 {
   const BodyVelocity& a = state[p.a];
   const BodyVelocity& b = state[p.b];
   return b.v + cross(b.omega, r_b) - a.v - cross(a.omega, r_a);
 }
 
-inline Vec2 relative_velocity(const ContactPoint& p, const std::vector<BodyVelocity>& state)
+__attribute__((always_inline)) inline Vec2 relative_velocity(const ContactPoint& p,
+                                                             const std::vector<BodyVelocity>& state)
 {
   return relative_velocity_at(p, p.r_a, p.r_b, state);
 }
 
 /// Applies `impulse` to b and its opposite to a at lever arms r_a, r_b, so
 /// linear and angular momentum are unchanged.
-inline void apply_impulse_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b, Vec2 impulse,
-                             std::vector<BodyVelocity>& state)
+__attribute__((always_inline)) inline void apply_impulse_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b,
+                                                            Vec2 impulse, std::vector<BodyVelocity>& state)
 {
   BodyVelocity& a = state[p.a];
   BodyVelocity& b = state[p.b];
@@ -208,7 +215,8 @@ inline void apply_impulse_at(const ContactPoint& p, Vec2 r_a, Vec2 r_b, Vec2 imp
   }
 }
 
-inline void apply_impulse(const ContactPoint& p, Vec2 impulse, std::vector<BodyVelocity>& state)
+__attribute__((always_inline)) inline void apply_impulse(const ContactPoint& p, Vec2 impulse,
+                                                        std::vector<BodyVelocity>& state)
 {
   apply_impulse_at(p, p.r_a, p.r_b, impulse, state);
 }

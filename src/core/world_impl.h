@@ -127,6 +127,9 @@ struct WorldImpl : WorldState
   /// by colour on the rows (iterative mode, shared among the workers), else
   /// in point order.
   void soft_pass(const StepContext& ctx, bool use_bias, bool warm);
+  /// Stage `stage` of a soft pass (a colour, or the overflow after the
+  /// colours; the warm start's stages first), part `part` of `parts` of it.
+  void soft_stage(const SoftPass& pass, std::size_t stage, std::size_t part, std::size_t parts);
   /// Whether the soft step solves on its rows (the exact mode keeps the points).
   bool rows_on() const { return settings_.solver_mode != SolverMode::Exact; }
   void warm_start_manifold(std::size_t first);

@@ -23,6 +23,15 @@ std::size_t part_begin(std::size_t n, std::size_t part, std::size_t parts) { ret
 
 }  // namespace
 
+/// One soft pass: the frame's context, the rows' parameters, and how many of
+/// its stages warm start (0 without).
+struct SoftPass
+{
+  const StepContext* ctx = nullptr;
+  RowPass rows;
+  std::size_t warm_stages = 0;
+};
+
 void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
 {
   if (!rows_on())
@@ -39,47 +48,52 @@ void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
   }
   // A stage a colour, then one for the overflow: the warm start's, then the solve's.
   const std::size_t colours = soft_rows_.colour_count();
-  const std::size_t warm_stages = warm ? colours + 1 : 0;
-  const RowPass rows{ctx.inv_h, settings_.contact_push_speed, use_bias};
-  const auto others = [&](std::size_t c, std::size_t part, std::size_t parts, auto verb) {
-    const std::vector<std::size_t>& list = soft_rows_.others(c);
-    for (std::size_t k = part_begin(list.size(), part, parts); k < part_begin(list.size(), part + 1, parts); ++k)
-    {
-      verb(list[k]);
-    }
-  };
-  const auto warm_one = [&](std::size_t first) { warm_start_manifold(first); };
-  const auto solve_one = [&](std::size_t first) { solve_soft_manifold(first, ctx, use_bias); };
-  const auto stage = [&](std::size_t s, std::size_t part, std::size_t parts) {
-    const bool warming = s < warm_stages;
-    const std::size_t c = warming ? s : s - warm_stages;
-    if (c == colours)
-    {
-      // The overflow's manifolds share bodies: one thread, in order.
-      for (std::size_t k = 0; part == 0 && k < soft_rows_.overflow().size(); ++k)
-      {
-        warming ? warm_one(soft_rows_.overflow()[k]) : solve_one(soft_rows_.overflow()[k]);
-      }
-      return;
-    }
-    if (warming)
-    {
-      soft_rows_.warm_start_rows(c, velocity_, part, parts);
-      others(c, part, parts, warm_one);
-      return;
-    }
-    soft_rows_.solve_rows(c, velocity_, rows, part, parts);
-    others(c, part, parts, solve_one);
-  };
-  const std::size_t stages = warm_stages + colours + 1;
+  const SoftPass pass{&ctx, RowPass{ctx.inv_h, settings_.contact_push_speed, use_bias}, warm ? colours + 1 : 0};
+  const std::size_t stages = pass.warm_stages + colours + 1;
   if (workers_.workers() > 1 && soft_rows_.coloured() >= kMinSharedManifolds)
   {
-    workers_.run_stages(stages, stage);
+    workers_.run_stages(stages, [&](std::size_t s, std::size_t part, std::size_t parts) {
+      soft_stage(pass, s, part, parts);
+    });
     return;
   }
   for (std::size_t s = 0; s < stages; ++s)
   {
-    stage(s, 0, 1);
+    soft_stage(pass, s, 0, 1);
+  }
+}
+
+void WorldImpl::soft_stage(const SoftPass& pass, std::size_t stage, std::size_t part, std::size_t parts)
+{
+  const bool warming = stage < pass.warm_stages;
+  const std::size_t c = warming ? stage : stage - pass.warm_stages;
+  if (c == soft_rows_.colour_count())
+  {
+    // The overflow's manifolds share bodies: one thread, in order.
+    if (part == 0)
+    {
+      for (std::size_t first : soft_rows_.overflow())
+      {
+        warming ? warm_start_manifold(first) : solve_soft_manifold(first, *pass.ctx, pass.rows.use_bias);
+      }
+    }
+    return;
+  }
+  const std::vector<std::size_t>& others = soft_rows_.others(c);
+  const std::size_t end = part_begin(others.size(), part + 1, parts);
+  if (warming)
+  {
+    soft_rows_.warm_start_rows(c, velocity_, part, parts);
+    for (std::size_t k = part_begin(others.size(), part, parts); k < end; ++k)
+    {
+      warm_start_manifold(others[k]);
+    }
+    return;
+  }
+  soft_rows_.solve_rows(c, velocity_, pass.rows, part, parts);
+  for (std::size_t k = part_begin(others.size(), part, parts); k < end; ++k)
+  {
+    solve_soft_manifold(others[k], *pass.ctx, pass.rows.use_bias);
   }
 }
 

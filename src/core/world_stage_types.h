@@ -35,6 +35,9 @@ struct CarriedSlip
   double anchor_drift = 0.0;  ///< m: slip since the point last stuck
 };
 
+/// One soft pass's parameters (world_soft_solve.cpp).
+struct SoftPass;
+
 /// Soft step: the fastest a body no contact touches can move in a frame,
 /// held against its sweep reach (WorldImpl::may_turn_fast).
 struct FreeSpeedBound

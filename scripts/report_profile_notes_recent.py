@@ -332,7 +332,12 @@ idle host the staged jobs cost nothing measurable (alternating runs, after
 over before: pyramid of 9870 1.005, rain of 1e4 1.003, rain of 1e5 1.01,
 the base-100 pyramid on 1 worker 1.0), and every body's pose and velocity
 over 90 frames hashed the same before and after, on 1, 2 and 4 workers and
-with the busy loop. Not kept: four shares a worker in each stage, taken the
+with the busy loop. The change moved what the link-time inliner kept
+inline elsewhere: in a two-body frame three of the point verbs' innermost
+steps became calls (+3.9% instructions on incline_slide); since 017e7d4
+they are always inlined, and 100 fresh worlds of 30 frames at 1 substep
+ran +1.4% on incline_slide, +1.2% on bouncing_disks and +0.1% on
+bullet_wall (Fx2D) against 0862752. Not kept: four shares a worker in each stage, taken the
 same way, cost 2 to 8% on an idle host (a thread that finishes first takes
 the other's last share and, with it, bodies that sit in the other core's
 cache) and gained nothing with the busy loop; and the soft passes' file

@@ -56,14 +56,14 @@ void WorkerPool::stop()
 
 namespace
 {
-/// Spins between yields while a stage finishes: long enough to catch a
-/// worker that is a few microseconds behind, short enough not to starve a
-/// busy machine.
+/// Spins before a waiting thread (for a job, a job's end or a stage's end)
+/// starts to yield: long enough to catch a worker that is a few
+/// microseconds behind, short enough not to starve a busy machine.
 constexpr int kSpinsBeforeYield = 64;
 /// Yields before a thread waiting for a job (or for the workers to finish
 /// one) sleeps: enough to stay awake through a frame's serial stages (about
-/// a millisecond), since a worker woken from sleep starts its share late and
-/// the others wait for it at the next sync. Between frames it sleeps.
+/// a millisecond), since a worker woken from sleep joins a job late and
+/// leaves its shares to the others. Between frames it sleeps.
 constexpr int kYieldsBeforeSleep = 1024;
 /// claims_' low bits: shares left to take (fewer than there are workers).
 constexpr unsigned kShareBits = 16;

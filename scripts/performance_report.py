@@ -3,7 +3,7 @@
 
 Called by scripts/performance_report.sh after the measurements; reads
 runs.csv, paired.csv, solver.csv, scaling.csv, stacks.csv and, when the
-run made it, paced.csv from --perf-dir. Only the standard library and gnuplot are used. Every number in the report comes from those
+run made them, paced.csv and busy.csv from --perf-dir. Only the standard library and gnuplot are used. Every number in the report comes from those
 CSVs: nothing here is typed in by hand.
 
 Ours runs in two pipelines (the `pipeline` column: soft = the soft step,
@@ -43,6 +43,7 @@ def main():
     scaling = median_runs(read_csv(os.path.join(args.perf_dir, "scaling.csv")))
     stacks = prepare_stacks(read_csv(os.path.join(args.perf_dir, "stacks.csv")))
     paced = read_csv(os.path.join(args.perf_dir, "paced.csv"))  # [] for a run before it was measured
+    busy = read_csv(os.path.join(args.perf_dir, "busy.csv"))  # [] likewise, or with one core
     world_has_exact = any(r["solver_mode"] == "exact" for r in runs)
     default = default_pipeline(runs, stacks)
 
@@ -61,7 +62,7 @@ def main():
             plots_extra.append("![workers](perf/workers.png)")
 
     doc = render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra,
-                 paced)
+                 paced, busy)
     with open(args.doc, "w") as f:
         f.write(doc)
 

@@ -5,7 +5,8 @@
 # solver residual sweep, the stack scenes against every peer and the
 # scaling runs and the throughput runs (pyramid and rain, 1 and 2 workers;
 # one process per size, for the peak memory; then stepped on a clock, as a
-# ROS timer steps a world), then writes
+# ROS timer steps a world, and beside a process that keeps a core busy),
+# then writes
 # docs/perf/*.csv, docs/perf/*.png (gnuplot) and docs/performance.md.
 # Ours runs in both pipelines (soft step and Fx2D, each set explicitly) in
 # the sweep and the stacks; the report follows whichever is the default.
@@ -45,10 +46,12 @@ STACK_REPS=5
 # Worlds stepped on a clock: one frame every 1/60, 1/30 and 1/10 s.
 PACED_PERIODS_MS=(16.667 33.333 100)
 PACED_ROUNDS=3
+# Worlds stepped beside another process that keeps a core busy (a shell loop).
+BUSY_ROUNDS=3
 
 for arg in "$@"; do
   case "$arg" in
-    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3; THROUGHPUT_SIZES=(100 1000 10000); PACED_ROUNDS=1 ;;
+    --quick) QUICK=(--quick); STACK_SECONDS=10; STACK_REPS=3; THROUGHPUT_SIZES=(100 1000 10000); PACED_ROUNDS=1; BUSY_ROUNDS=1 ;;
     --no-build) BUILD_FIRST=0 ;;
     *) echo "usage: $0 [--quick] [--no-build]" >&2; exit 2 ;;
   esac
@@ -213,6 +216,40 @@ for (( round = 0; round < PACED_ROUNDS; round++ )); do
   done
 done
 part_done paced
+
+# Another process keeping the core the pinned runs do not use busy, as
+# another node on the robot's computer would: 1 worker on the pinned core
+# (untouched by it), 2 workers on both. The busy core is a column of the rows.
+BUSY_CPU=""
+if [[ -n $PERF_CPU ]]; then
+  for (( cpu = 0; cpu < $(nproc); cpu++ )); do
+    if (( cpu != PERF_CPU )); then BUSY_CPU=$cpu; break; fi
+  done
+fi
+if [[ -n $BUSY_CPU ]]; then
+  log "busy core: pyramid and rain at 1e4 bodies, 1 and 2 workers, a shell loop busy on core $BUSY_CPU"
+  echo "$("$SCALING" --header),busy_cpu" > "$OUT/busy.csv"
+  taskset -c "$BUSY_CPU" sh -c 'while :; do :; done' &
+  BUSY_PID=$!
+  trap 'kill "$BUSY_PID" 2> /dev/null || true' EXIT
+  for (( round = 0; round < BUSY_ROUNDS; round++ )); do
+    for scene in pyramid rain; do
+      for engine in "${THROUGHPUT_ENGINES[@]}"; do
+        for workers in 1 2; do
+          on_workers "$workers" "$SCALING" --scene "$scene" --bodies 10000 --engine "$engine" --workers "$workers" \
+            2>> "$BUILD/scaling.log" | grep "^$engine," | sed "s/\$/,$BUSY_CPU/" >> "$OUT/busy.csv" ||
+            log "busy core: $engine $scene, $workers workers, not measured"
+        done
+      done
+    done
+  done
+  kill "$BUSY_PID" 2> /dev/null || true
+  wait "$BUSY_PID" 2> /dev/null || true
+  trap - EXIT
+  part_done "busy core"
+else
+  rm -f "$OUT/busy.csv"  # no second core: no rows from an earlier run either
+fi
 
 ELAPSED=$(( $(date +%s) - START ))
 log "measured in ${ELAPSED} s; writing plots and docs/performance.md"

@@ -204,12 +204,12 @@ def worker_speedups(scaling, scene, engine="collision2d"):
     return [(b, statistics.median(ratios)) for b, ratios in worker_speedup_rounds(scaling, scene, engine)]
 
 
-def paced_speedups(paced, engine="collision2d"):
-    """For each world stepped on a clock (scaling bench --period-ms), in scene, size and period order:
-    (scene, bodies, period in ms, median ms a frame on 1 worker, on 2, [each round's speed-up]),
-    a round being a 1-worker run and the 2-worker run after it."""
+def round_speedups(rows, engine="collision2d"):
+    """For worlds run in rounds of a 1-worker run and the 2-worker run after it (paced.csv: stepped
+    on a clock; busy.csv: beside a busy core), in scene, size and period order: (scene, bodies,
+    period in ms (0: back to back), median ms a frame on 1 worker, on 2, [each round's speed-up])."""
     times = {}
-    for r in paced:
+    for r in rows:
         if r["engine"] == engine and r.get("workers") in ("1", "2"):
             key = (r["scene"], number(r["bodies"]), number(r["period_ms"]))
             times.setdefault(key, {"1": [], "2": []})[r["workers"]].append(number(r["ms_per_step"]))

@@ -12,7 +12,8 @@ from report_sections import (knob_section, machine_section, mass_ratio_section, 
                              solver_section, stacks_section, stand_section, throughput_section, time_target_section)
 
 
-def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra, paced):
+def render(args, runs, solver, scaling, stacks, world_has_exact, plots, scaling_png, default, plots_extra, paced,
+           busy=()):
     mode_note = ("The World's exact solver mode is swept in both pipelines on every scene but the "
                  "pyramid: its one island of 210 boxes (about 2400 complementarity rows) did not finish 30 frames "
                  "in exact mode within several minutes, so it is not measured there." if world_has_exact else
@@ -33,7 +34,7 @@ here; the guidance is written by the script from those numbers.
 Which pipeline and which settings to use, from this run's measurements
 (ms are CPU time per frame unless marked wall; details in the sections below).
 
-{guidance_section(runs, stacks, default, scaling, paced)}
+{guidance_section(runs, stacks, default, scaling, paced, busy)}
 ## Targets
 
 Reported, not asserted; a target that is missed says by how much. "At the
@@ -213,7 +214,7 @@ of the world sleeps.
 
 {chr(10).join(plots_extra)}
 
-{throughput_section(scaling, stacks, default, paced)}
+{throughput_section(scaling, stacks, default, paced, busy)}
 ## Knob sweeps, scene by scene
 {knob_section(runs)}
 ## Where the World's time goes (profile notes)

@@ -8,7 +8,7 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES,
                          number)
 from report_format import finite, fmt, mm, setting
-from report_analysis import (baseline, cheapest_at, find, other, ours, paced_speedups, peak_kib_beside_peer,
+from report_analysis import (baseline, cheapest_at, find, other, ours, round_speedups, peak_kib_beside_peer,
                              scene_names, stack_rows, worker_speedups)
 
 
@@ -271,7 +271,7 @@ WORKERS_PAY = 1.2
 
 def paced_sentence(paced):
     """What 2 workers gave a world stepped on a clock, or "" where none was."""
-    points = paced_speedups(paced)
+    points = round_speedups(paced)
     if not points:
         return ""
     periods = sorted({period for _, _, period, _, _, _ in points})
@@ -283,7 +283,22 @@ def paced_sentence(paced):
                                                            for (scene, b), c in cells.items()) + ".")
 
 
-def guidance_workers(scaling, paced=()):
+def busy_sentence(busy):
+    """What 2 workers gave beside a core another process kept busy, or "" where not measured."""
+    cells = {engine: [f"{scene} {int(bodies)} {fmt(statistics.median(r))}x"
+                      for scene, bodies, _, _, _, r in round_speedups(busy, engine)]
+             for engine in ("collision2d", "box2d_v3")}
+    if not cells["collision2d"]:
+        return ""
+    peer = f" (Box2D v3: {', '.join(cells['box2d_v3'])})" if cells["box2d_v3"] else ""
+    ours = [statistics.median(r) for _, _, _, _, _, r in round_speedups(busy)]
+    verdict = ("a second worker pays only on a core of its own" if max(ours) < WORKERS_PAY else
+               "a second worker still paid on some of them, but less than on an idle machine")
+    return (f" With another process keeping one of the cores busy (a shell loop on core {busy[0]['busy_cpu']}): "
+            f"{', '.join(cells['collision2d'])}{peer}; {verdict}.")
+
+
+def guidance_workers(scaling, paced=(), busy=()):
     """Where `workers: 2` paid in the throughput rounds (each round's own ratio, their median), and
     on a clock where the report stepped worlds that way."""
     cells, paid, unpaid = [], [], []
@@ -304,9 +319,8 @@ def guidance_workers(scaling, paced=()):
               "and measure a world that size before adding one")
     return ("- **Workers.** 2 workers against 1 (wall time, median of each throughput round's own ratio): " +
             "; ".join(cells) + f". A second worker paid ({fmt(WORKERS_PAY)}x or more) in: {named(paid)}; "
-            f"not in: {named(unpaid)}.{paced_sentence(paced)} So {advice}. Trajectories are the same for any "
-            "count. With another process keeping one of the two cores busy, 2 workers took 1.03 to 1.10 times one "
-            "worker's time (medians; the forty-ninth profile note): a second worker pays only on a core of its own.")
+            f"not in: {named(unpaid)}.{paced_sentence(paced)}{busy_sentence(busy)} So {advice}. Trajectories are "
+            "the same for any count.")
 
 
 def guidance_memory(scaling):
@@ -324,7 +338,7 @@ def guidance_memory(scaling):
             "break it down).")
 
 
-def guidance_section(runs, stacks, default, scaling, paced):
+def guidance_section(runs, stacks, default, scaling, paced, busy=()):
     lines = [guidance_pipeline(runs, stacks, default), guidance_stacks(runs, stacks, default),
              guidance_fast(runs, default),
              guidance_scene(runs, default, "bouncing_disks", "Bouncing (restitution)", "", BOUNCE_TARGET,
@@ -338,6 +352,6 @@ def guidance_section(runs, stacks, default, scaling, paced):
                             INCLINE_TARGET, incline_substep_advice(runs)),
              guidance_scene(runs, default, "incline_slide", "Sliding down an incline", " m/s^2", INCLINE_TARGET,
                             None),
-             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling, paced),
+             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling, paced, busy),
              guidance_memory(scaling)]
     return "\n".join(line for line in lines if line) + "\n"

@@ -10,7 +10,7 @@ import subprocess
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
                          STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number, v3_on_two_workers)
 from report_format import fmt, label, setting, span, table
-from report_analysis import (baseline, gas_rows, other, ours, paced_speedups, ratio, scaling_slope, scene_names,
+from report_analysis import (baseline, gas_rows, other, ours, round_speedups, ratio, scaling_slope, scene_names,
                              time_target_rows, time_target_scenes)
 from report_targets import throughput_target_rows
 
@@ -104,7 +104,7 @@ def machine_section(args, runs, stacks, scaling, default):
 def paced_table(paced):
     """Ours on 1 and 2 workers with a frame every period, as a ROS timer steps a world."""
     rows = [[scene, str(int(bodies)), period, one, two, f"{fmt(statistics.median(r))}x ({fmt(min(r))} - {fmt(max(r))})"]
-            for scene, bodies, period, one, two, r in paced_speedups(paced)]
+            for scene, bodies, period, one, two, r in round_speedups(paced)]
     if not rows:
         return ""
     return ("\nStepped on a clock (`collision2d_scaling_bench --period-ms`): one frame every period, as a timer "
@@ -114,7 +114,24 @@ def paced_table(paced):
                    "2 workers over 1"], rows))
 
 
-def throughput_section(scaling, stacks, default, paced):
+def busy_table(busy):
+    """Each engine on 1 and 2 workers beside another process that keeps a core busy."""
+    points = [(engine, p) for engine in ("collision2d", "box2d_v3") for p in round_speedups(busy, engine)]
+    if not points:
+        return ""
+    rows = [[scene, str(int(bodies)), PEER_NAMES.get(engine, "ours"), one, two,
+             f"{fmt(statistics.median(r))}x ({fmt(min(r))} - {fmt(max(r))})"]
+            for engine, (scene, bodies, _, one, two, r) in points]
+    rounds = max(len(r) for _, (_, _, _, _, _, r) in points)
+    return (f"\nBeside a busy core: a shell loop (`while :; do :; done`) kept core {busy[0]['busy_cpu']} busy, as "
+            "another process on a robot's computer may, while 1 worker ran on the pinned core and 2 workers on "
+            f"both; {rounds} round{'s' if rounds != 1 else ''}, each a 1-worker run and the 2-worker run after it (wall). A speed-up under 1 "
+            "means the second worker cost time.\n\n" +
+            table(["scene", "bodies", "engine", "1 worker (ms/frame)", "2 workers (ms/frame)", "2 workers over 1"],
+                  rows))
+
+
+def throughput_section(scaling, stacks, default, paced, busy=()):
     runs = [r for r in scaling if r.get("scene") in THROUGHPUT_SCENES + ["resting", "stirred"]]
     if not runs:
         return "Not measured in this run.\n"
@@ -124,7 +141,7 @@ def throughput_section(scaling, stacks, default, paced):
             for r in sorted(runs, key=lambda r: (r["scene"], r["engine"], r["workers"], number(r["bodies"])))]
     return (table(["target", "measured", "verdict"], throughput_target_rows(scaling, stacks, default)) + "\n" +
             table(["scene", "engine", "workers", "bodies", "timed frames", "ms/frame (wall)", "us per body",
-                   "peak memory above start (kB/body)"], rows) + paced_table(paced))
+                   "peak memory above start (kB/body)"], rows) + paced_table(paced) + busy_table(busy))
 
 
 # -- Detail sections ----------------------------------------------------------

@@ -1,14 +1,15 @@
 """Unit tests of the throughput part's speed-up of 2 workers over 1
 (report_analysis.worker_speedup_rounds, report_targets.throughput_target_rows,
-report_guidance.guidance_workers and guidance_memory) and on a clock
-(report_analysis.paced_speedups, report_sections.paced_table):
+report_guidance.guidance_workers and guidance_memory), on a clock and
+beside a busy core (report_analysis.round_speedups, report_sections.paced_table
+and busy_table):
 run by scripts/test.sh with the other test_*.py files."""
 import unittest
 
-from report_analysis import paced_speedups, worker_speedup_rounds
+from report_analysis import round_speedups, worker_speedup_rounds
 from report_data import median_runs
 from report_guidance import guidance_memory, guidance_workers
-from report_sections import paced_table
+from report_sections import busy_table, paced_table
 from report_targets import throughput_target_rows
 
 
@@ -101,7 +102,7 @@ class PacedTest(unittest.TestCase):
                 self.paced += [paced_row("pyramid", 1, period, one), paced_row("pyramid", 2, period, two)]
 
     def test_each_round_is_paired_with_its_own_two_worker_run(self):
-        self.assertEqual(paced_speedups(self.paced),
+        self.assertEqual(round_speedups(self.paced),
                          [("pyramid", 9870, 16.667, 11.5, 7.0, [2.0, 11.0 / 8.0]),
                           ("pyramid", 9870, 100, 11.5, 7.0, [2.0, 11.0 / 8.0])])
 
@@ -116,6 +117,46 @@ class PacedTest(unittest.TestCase):
         self.assertEqual(paced_table([]), "")
         line = guidance_workers(median_runs([row("collision2d", 1, 9870, 13.0), row("collision2d", 2, 9870, 8.0)]))
         self.assertNotIn("clock", line)
+
+
+def busy_row(engine, scene, workers, ms):
+    return dict(row(engine, workers, 9870, ms), scene=scene, period_ms="0", busy_cpu="0")
+
+
+class BusyTest(unittest.TestCase):
+    def setUp(self):
+        # Three rounds, each engine 1 worker then 2, as the script runs them beside the busy loop.
+        self.busy = []
+        for ours, v3 in [((10.0, 11.0), (5.0, 5.0)), ((10.0, 10.5), (5.0, 6.0)), ((12.0, 10.0), (5.0, 4.0))]:
+            self.busy += [busy_row("collision2d", "pyramid", 1, ours[0]), busy_row("collision2d", "pyramid", 2, ours[1]),
+                          busy_row("box2d_v3", "pyramid", 1, v3[0]), busy_row("box2d_v3", "pyramid", 2, v3[1])]
+        self.scaling = median_runs([row("collision2d", 1, 9870, 13.0), row("collision2d", 2, 9870, 8.0)])
+
+    def test_each_engine_pairs_its_own_rounds(self):
+        (ours,) = round_speedups(self.busy)
+        self.assertEqual(ours[:3], ("pyramid", 9870, 0))
+        self.assertEqual(ours[5], [10.0 / 11.0, 10.0 / 10.5, 1.2])
+        (v3,) = round_speedups(self.busy, "box2d_v3")
+        self.assertEqual(v3[5], [1.0, 5.0 / 6.0, 1.25])
+
+    def test_the_table_names_the_busy_core_and_both_engines(self):
+        text = busy_table(self.busy)
+        self.assertIn("kept core 0 busy", text)
+        self.assertIn("3 rounds", text)
+        self.assertIn("| pyramid | 9870 | ours | 10 | 10.5 | 0.952x (0.909 - 1.2) |", text)
+        self.assertIn("| pyramid | 9870 | Box2D v3 | 5 | 5 | 1x (0.833 - 1.25) |", text)
+
+    def test_the_guidance_gives_the_measured_medians_and_their_verdict(self):
+        line = guidance_workers(self.scaling, (), self.busy)
+        self.assertIn("a shell loop on core 0): pyramid 9870 0.952x (Box2D v3: pyramid 9870 1x)", line)
+        self.assertIn("a second worker pays only on a core of its own", line)
+        faster = [dict(r, ms_per_step="5") if r["engine"] == "collision2d" and r["workers"] == "2" else r
+                  for r in self.busy]
+        self.assertIn("still paid on some of them", guidance_workers(self.scaling, (), faster))
+
+    def test_without_busy_runs_nothing_is_said(self):
+        self.assertEqual(busy_table([]), "")
+        self.assertNotIn("busy", guidance_workers(self.scaling))
 
 
 if __name__ == "__main__":

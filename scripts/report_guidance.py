@@ -8,7 +8,7 @@ from report_data import (BOUNCE_TARGET, DRIFT_TARGET_M, FAST_BULLET, GAS_TARGET,
                          PIPELINES, PIPELINE_NAMES, PIPELINE_PHRASES, STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES,
                          number)
 from report_format import finite, fmt, mm, setting
-from report_analysis import (baseline, cheapest_at, find, other, ours, round_speedups, peak_kib_beside_peer,
+from report_analysis import (baseline, cheapest_at, find, other, ours, peak_kib_beside_peer, round_speedups,
                              scene_names, stack_rows, worker_speedups)
 
 
@@ -291,16 +291,17 @@ def busy_sentence(busy):
     if not cells["collision2d"]:
         return ""
     peer = f" (Box2D v3: {', '.join(cells['box2d_v3'])})" if cells["box2d_v3"] else ""
-    ours = [statistics.median(r) for _, _, _, _, _, r in round_speedups(busy)]
-    verdict = ("a second worker pays only on a core of its own" if max(ours) < WORKERS_PAY else
-               "a second worker still paid on some of them, but less than on an idle machine")
+    paid = [f"{scene} {int(bodies)}" for scene, bodies, _, _, _, r in round_speedups(busy)
+            if statistics.median(r) >= WORKERS_PAY]
+    verdict = (f"a second worker still paid ({fmt(WORKERS_PAY)}x or more) in: {', '.join(paid)}" if paid else
+               "a second worker pays only on a core of its own")
     return (f" With another process keeping one of the cores busy (a shell loop on core {busy[0]['busy_cpu']}): "
             f"{', '.join(cells['collision2d'])}{peer}; {verdict}.")
 
 
 def guidance_workers(scaling, paced=(), busy=()):
     """Where `workers: 2` paid in the throughput rounds (each round's own ratio, their median), and
-    on a clock where the report stepped worlds that way."""
+    on a clock and beside a busy core where the report stepped worlds those ways."""
     cells, paid, unpaid = [], [], []
     for scene in THROUGHPUT_SCENES:
         points = worker_speedups(scaling, scene)

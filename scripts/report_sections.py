@@ -10,7 +10,7 @@ import subprocess
 from report_data import (ERROR_UNITS, OPTIONAL_PEERS, PEERS, PEER_NAMES, PIPELINE_NAMES, PIPELINE_PHRASES,
                          STACK_SCENES, STIFF_SETTING, THROUGHPUT_SCENES, is_ours, is_stiff, number, v3_on_two_workers)
 from report_format import fmt, label, setting, span, table
-from report_analysis import (baseline, gas_rows, other, ours, round_speedups, ratio, scaling_slope, scene_names,
+from report_analysis import (baseline, gas_rows, other, ours, ratio, round_speedups, scaling_slope, scene_names,
                              time_target_rows, time_target_scenes)
 from report_targets import throughput_target_rows
 

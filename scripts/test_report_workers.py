@@ -152,7 +152,7 @@ class BusyTest(unittest.TestCase):
         self.assertIn("a second worker pays only on a core of its own", line)
         faster = [dict(r, ms_per_step="5") if r["engine"] == "collision2d" and r["workers"] == "2" else r
                   for r in self.busy]
-        self.assertIn("still paid on some of them", guidance_workers(self.scaling, (), faster))
+        self.assertIn("still paid (1.2x or more) in: pyramid 9870", guidance_workers(self.scaling, (), faster))
 
     def test_without_busy_runs_nothing_is_said(self):
         self.assertEqual(busy_table([]), "")

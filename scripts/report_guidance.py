@@ -353,6 +353,7 @@ def guidance_section(runs, stacks, default, scaling, paced, busy=()):
                             INCLINE_TARGET, incline_substep_advice(runs)),
              guidance_scene(runs, default, "incline_slide", "Sliding down an incline", " m/s^2", INCLINE_TARGET,
                             None),
-             guidance_mass_ratio(runs, default), guidance_realtime(runs, default), guidance_workers(scaling, paced, busy),
+             guidance_mass_ratio(runs, default), guidance_realtime(runs, default),
+             guidance_workers(scaling, paced, busy),
              guidance_memory(scaling)]
     return "\n".join(line for line in lines if line) + "\n"

@@ -123,10 +123,11 @@ def busy_table(busy):
              f"{fmt(statistics.median(r))}x ({fmt(min(r))} - {fmt(max(r))})"]
             for engine, (scene, bodies, _, one, two, r) in points]
     rounds = max(len(r) for _, (_, _, _, _, _, r) in points)
+    plural = "s" if rounds != 1 else ""
     return (f"\nBeside a busy core: a shell loop (`while :; do :; done`) kept core {busy[0]['busy_cpu']} busy, as "
             "another process on a robot's computer may, while 1 worker ran on the pinned core and 2 workers on "
-            f"both; {rounds} round{'s' if rounds != 1 else ''}, each a 1-worker run and the 2-worker run after it (wall). A speed-up under 1 "
-            "means the second worker cost time.\n\n" +
+            f"both; {rounds} round{plural}, each a 1-worker run and the 2-worker run after it (wall). A speed-up "
+            "under 1 means the second worker cost time.\n\n" +
             table(["scene", "bodies", "engine", "1 worker (ms/frame)", "2 workers (ms/frame)", "2 workers over 1"],
                   rows))
 

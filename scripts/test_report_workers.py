@@ -128,7 +128,8 @@ class BusyTest(unittest.TestCase):
         # Three rounds, each engine 1 worker then 2, as the script runs them beside the busy loop.
         self.busy = []
         for ours, v3 in [((10.0, 11.0), (5.0, 5.0)), ((10.0, 10.5), (5.0, 6.0)), ((12.0, 10.0), (5.0, 4.0))]:
-            self.busy += [busy_row("collision2d", "pyramid", 1, ours[0]), busy_row("collision2d", "pyramid", 2, ours[1]),
+            self.busy += [busy_row("collision2d", "pyramid", 1, ours[0]),
+                          busy_row("collision2d", "pyramid", 2, ours[1]),
                           busy_row("box2d_v3", "pyramid", 1, v3[0]), busy_row("box2d_v3", "pyramid", 2, v3[1])]
         self.scaling = median_runs([row("collision2d", 1, 9870, 13.0), row("collision2d", 2, 9870, 8.0)])
 

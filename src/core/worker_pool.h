@@ -72,12 +72,13 @@ public:
   /// before has finished, and what those wrote is then seen. Each thread runs
   /// its own share of a stage first, then any share no thread has started.
   /// The shares of one stage must not depend on one another; which thread
-  /// runs which then changes no result.
+  /// runs which then changes no result. With `shared` false (too little work
+  /// to pay for the waits between stages) every stage runs whole on the
+  /// calling thread, as with one worker.
   template <class Work>
-  void run_stages(std::size_t stages, Work&& work)
+  void run_stages(std::size_t stages, Work&& work, bool shared = true)
   {
-    const std::size_t shares = static_cast<std::size_t>(workers());
-    if (shares == 1)
+    if (!shared || threads_.empty())
     {
       for (std::size_t stage = 0; stage < stages; ++stage)
       {
@@ -89,7 +90,7 @@ public:
     using Callable = std::remove_reference_t<Work>;
     Staged<Callable> job{this, stages, &work};
     // A share of this job is a member's walk through the stages.
-    run(shares, &Staged<Callable>::walk, &job);
+    run(static_cast<std::size_t>(workers()), &Staged<Callable>::walk, &job);
   }
 
 private:

@@ -50,17 +50,9 @@ void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
   const std::size_t colours = soft_rows_.colour_count();
   const SoftPass pass{&ctx, RowPass{ctx.inv_h, settings_.contact_push_speed, use_bias}, warm ? colours + 1 : 0};
   const std::size_t stages = pass.warm_stages + colours + 1;
-  if (workers_.workers() > 1 && soft_rows_.coloured() >= kMinSharedManifolds)
-  {
-    workers_.run_stages(stages, [&](std::size_t s, std::size_t part, std::size_t parts) {
-      soft_stage(pass, s, part, parts);
-    });
-    return;
-  }
-  for (std::size_t s = 0; s < stages; ++s)
-  {
-    soft_stage(pass, s, 0, 1);
-  }
+  workers_.run_stages(
+      stages, [&](std::size_t s, std::size_t part, std::size_t parts) { soft_stage(pass, s, part, parts); },
+      soft_rows_.coloured() >= kMinSharedManifolds);
 }
 
 void WorldImpl::soft_stage(const SoftPass& pass, std::size_t stage, std::size_t part, std::size_t parts)

@@ -101,9 +101,14 @@ def machine_section(args, runs, stacks, scaling, default):
             f"**{PIPELINE_PHRASES[default].replace('the ', '', 1)}**.\n")
 
 
+def speedup_cell(ratios):
+    """Rounds' speed-ups as their median and range: "1.69x (1.38 - 2)"."""
+    return f"{fmt(statistics.median(ratios))}x ({span((min(ratios), max(ratios)))})"
+
+
 def paced_table(paced):
     """Ours on 1 and 2 workers with a frame every period, as a ROS timer steps a world."""
-    rows = [[scene, str(int(bodies)), period, one, two, f"{fmt(statistics.median(r))}x ({fmt(min(r))} - {fmt(max(r))})"]
+    rows = [[scene, str(int(bodies)), period, one, two, speedup_cell(r)]
             for scene, bodies, period, one, two, r in round_speedups(paced)]
     if not rows:
         return ""
@@ -119,8 +124,7 @@ def busy_table(busy):
     points = [(engine, p) for engine in ("collision2d", "box2d_v3") for p in round_speedups(busy, engine)]
     if not points:
         return ""
-    rows = [[scene, str(int(bodies)), PEER_NAMES.get(engine, "ours"), one, two,
-             f"{fmt(statistics.median(r))}x ({fmt(min(r))} - {fmt(max(r))})"]
+    rows = [[scene, str(int(bodies)), PEER_NAMES.get(engine, "ours"), one, two, speedup_cell(r)]
             for engine, (scene, bodies, _, one, two, r) in points]
     rounds = max(len(r) for _, (_, _, _, _, _, r) in points)
     plural = "s" if rounds != 1 else ""

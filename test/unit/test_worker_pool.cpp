@@ -1,8 +1,9 @@
 // The World's worker threads (worker_pool.h): every item of a job runs
 // exactly once whether the workers are awake, asleep or late; a staged job
-// runs every share of every stage once, each stage after the one before; an
-// exception comes out of run() and run_stages(); a worker that moves off the
-// calling thread's CPU keeps every CPU it may use.
+// runs every share of every stage once, each stage after the one before (on
+// the calling thread alone when too small to share); an exception comes out
+// of run() and run_stages(); a worker that moves off the calling thread's
+// CPU keeps every CPU it may use.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,6 +112,26 @@ TEST(WorkerPool, AStagedJobRunsEachShareOnceAndEachStageAfterTheOneBefore)
       }
     }
   }
+}
+
+TEST(WorkerPool, AStagedJobTooSmallToShareRunsWholeOnTheCallingThread)
+{
+  WorkerPool pool;
+  pool.resize(2);
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<int> runs(3, 0);
+  bool elsewhere = false;
+  pool.run_stages(
+      3,
+      [&](std::size_t stage, std::size_t share, std::size_t n) {
+        EXPECT_EQ(share, 0U);
+        EXPECT_EQ(n, 1U);
+        ++runs[stage];
+        elsewhere = elsewhere || std::this_thread::get_id() != caller;
+      },
+      false);
+  EXPECT_EQ(runs, std::vector<int>(3, 1));
+  EXPECT_FALSE(elsewhere);
 }
 
 TEST(WorkerPool, AnExceptionInAnyStageComesOutOfRunStagesAndThePoolGoesOn)

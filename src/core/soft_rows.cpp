@@ -23,6 +23,7 @@ struct ScalarOps
   double load(const double* f) const { return f[j]; }
   void store(double* f, double v) const { f[j] = v; }
   bool flag(const std::uint8_t* f) const { return f[j] != 0; }
+  bool any(const std::uint8_t* f) const { return rows::any_lane(f); }  // the whole batch, as the wider paths
   void set_flag(std::uint8_t* f, bool where, bool value) const
   {
     if (where)
@@ -331,12 +332,20 @@ double* SoftRows::normal_impulse_of(std::size_t k)
 
 namespace
 {
-/// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches of one kind.
-template <class Batch, class F>
-void each_batch(const RowRange& c, FrameSpan<Batch>& rows, std::size_t part, std::size_t parts, F f)
+/// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches of
+/// one kind; with `twos`, f2(first) on each two neighbours first (the eight-lane path).
+template <class Batch, class F, class F2>
+void each_batch(const RowRange& c, FrameSpan<Batch>& rows, std::size_t part, std::size_t parts, bool twos, F f,
+                F2 f2)
 {
   const std::size_t n = c.end - c.begin;
-  for (std::size_t r = c.begin + n * part / parts; r < c.begin + n * (part + 1) / parts; ++r)
+  std::size_t r = c.begin + n * part / parts;
+  const std::size_t end = c.begin + n * (part + 1) / parts;
+  for (; twos && r + 1 < end; r += 2)
+  {
+    f2(rows[r]);
+  }
+  for (; r < end; ++r)
   {
     f(rows[r], static_cast<int>(std::min<std::size_t>(kRowLanes, c.lanes - (r - c.begin) * kRowLanes)));
   }
@@ -351,9 +360,11 @@ void SoftRows::warm_start_rows(std::size_t colour, std::vector<BodyVelocity>& ve
     return;
   }
   const RowLanes path = row_lanes();
+  const bool twos = path == RowLanes::Eight;
   const auto warm = [&](auto& batch, int lanes) { warm_start_batch(path, batch, lanes, velocity); };
-  each_batch(colours_[colour].pairs, rows_, part, parts, warm);
-  each_batch(colours_[colour].singles, singles_, part, parts, warm);
+  const auto warm2 = [&](auto& first) { warm_start_batches_eight(first, velocity); };
+  each_batch(colours_[colour].pairs, rows_, part, parts, twos, warm, warm2);
+  each_batch(colours_[colour].singles, singles_, part, parts, twos, warm, warm2);
 }
 
 void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass,
@@ -364,9 +375,11 @@ void SoftRows::solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocit
     return;
   }
   const RowLanes path = row_lanes();
+  const bool twos = path == RowLanes::Eight;
   const auto solve = [&](auto& batch, int lanes) { solve_batch(path, batch, lanes, velocity, pass); };
-  each_batch(colours_[colour].pairs, rows_, part, parts, solve);
-  each_batch(colours_[colour].singles, singles_, part, parts, solve);
+  const auto solve2 = [&](auto& first) { solve_batches_eight(first, velocity, pass); };
+  each_batch(colours_[colour].pairs, rows_, part, parts, twos, solve, solve2);
+  each_batch(colours_[colour].singles, singles_, part, parts, twos, solve, solve2);
 }
 
 void SoftRows::drop_spare_body(std::vector<BodyVelocity>& velocity) const { velocity.pop_back(); }

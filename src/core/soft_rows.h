@@ -2,9 +2,9 @@
 // the two-point manifolds whose normal block is solvable, and the one-point
 // manifolds, are packed four to a batch (struct of arrays, a batch type for
 // each) and coloured so that no two manifolds of one colour move the same
-// body; a colour's batches can then be solved four or two lanes at a time
-// (chosen at run time) with exactly the bits of the scalar path, since lanes
-// never share a body. Nearly dependent two-point manifolds, the few of a
+// body; a colour's batches can then be solved eight (two batches at once),
+// four or two lanes at a time (chosen at run time) with exactly the bits of
+// the scalar path, since lanes never share a body. Nearly dependent two-point manifolds, the few of a
 // colour that a batch would mostly pad, and any that find no colour stay on
 // the kernel's point verbs.
 #pragma once
@@ -323,12 +323,14 @@ private:
 };
 
 /// The lane paths of the rows, all giving the same bits: one lane at a time,
-/// two (SSE2 on x86-64, NEON on aarch64) or four (AVX2).
+/// two (SSE2 on x86-64, NEON on aarch64), four (AVX2) or eight (AVX-512: two
+/// batches at once).
 enum class RowLanes
 {
   Scalar,
   Two,
-  Four
+  Four,
+  Eight
 };
 /// Whether a path is compiled in and this CPU runs it (Scalar always).
 bool row_lanes_available(RowLanes lanes);
@@ -347,9 +349,10 @@ template <class Batch>
 void solve_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 
 /// The kernel entry points over one batch of either kind (soft_rows_kernel.h),
-/// each instantiated for both. The four-lane ones live in soft_rows_avx2.cpp,
-/// the two-lane ones in soft_rows_lanes2.cpp; a build without their
-/// instructions makes them the scalar path, never chosen.
+/// each instantiated for both. The eight-lane ones (over two batches) live in
+/// soft_rows_avx512.cpp, the four-lane ones in soft_rows_avx2.cpp, the
+/// two-lane ones in soft_rows_lanes2.cpp; a build without their instructions
+/// makes them a narrower path, never chosen.
 template <class Batch>
 void warm_start_batch_scalar(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity);
 template <class Batch>
@@ -359,6 +362,12 @@ template <class Batch>
 void warm_start_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity);
 template <class Batch>
 void solve_batch_four(Batch& batch, std::vector<BodyVelocity>& velocity, const RowPass& pass);
+bool eight_lanes_compiled();
+/// Two neighbouring batches of one colour: `first` and the one after it.
+template <class Batch>
+void warm_start_batches_eight(Batch& first, std::vector<BodyVelocity>& velocity);
+template <class Batch>
+void solve_batches_eight(Batch& first, std::vector<BodyVelocity>& velocity, const RowPass& pass);
 bool two_lanes_compiled();
 template <class Batch>
 void warm_start_batch_two(Batch& batch, int lanes, std::vector<BodyVelocity>& velocity);

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "soft_rows_gather4.h"
 #include "soft_rows_kernel.h"
 
 namespace collision2d
@@ -20,13 +21,6 @@ namespace detail
 {
 namespace
 {
-// gather's two loads of four doubles per body.
-static_assert(offsetof(BodyVelocity, v) == 0 && offsetof(BodyVelocity, omega) == 2 * sizeof(double) &&
-                  offsetof(BodyVelocity, moved) == 3 * sizeof(double) &&
-                  offsetof(BodyVelocity, turned_cos) == 5 * sizeof(double) &&
-                  offsetof(BodyVelocity, turned_sin) == 6 * sizeof(double) && sizeof(BodyVelocity) >= 8 * sizeof(double),
-              "BodyVelocity's layout is what WideOps::gather loads");
-
 struct W4
 {
   __m256d v;
@@ -65,37 +59,16 @@ struct WideOps
   {
     rows::write_flag_bits(f, kRowLanes, _mm256_movemask_pd(where.v), _mm256_movemask_pd(value.v));
   }
+  bool any(const std::uint8_t* f) const { return rows::any_lane(f); }
   void gather(const std::vector<BodyVelocity>& state, const std::uint32_t* index, rows::Side<W4>& side) const
   {
-    // Each body's first eight doubles as two loads of four, transposed into
-    // lanes: v.x v.y omega moved.x, then moved.y cos sin (and one unused).
-    const double* b[kRowLanes];
-    for (int j = 0; j < kRowLanes; ++j)
-    {
-      b[j] = &state[body_of(index[j])].v.x;
-    }
-    __m256d first[4];
-    __m256d second[4];
-    transpose(_mm256_loadu_pd(b[0]), _mm256_loadu_pd(b[1]), _mm256_loadu_pd(b[2]), _mm256_loadu_pd(b[3]), first);
-    transpose(_mm256_loadu_pd(b[0] + 4), _mm256_loadu_pd(b[1] + 4), _mm256_loadu_pd(b[2] + 4),
-              _mm256_loadu_pd(b[3] + 4), second);
-    side.v = {W4(first[0]), W4(first[1])};
-    side.w = W4(first[2]);
-    side.moved = {W4(first[3]), W4(second[0])};
-    side.c = W4(second[1]);
-    side.s = W4(second[2]);
-  }
-  /// Rows r0..r3 of a 4x4 matrix into its columns.
-  static void transpose(__m256d r0, __m256d r1, __m256d r2, __m256d r3, __m256d column[4])
-  {
-    const __m256d t0 = _mm256_unpacklo_pd(r0, r1);  // r0[0] r1[0] r0[2] r1[2]
-    const __m256d t1 = _mm256_unpackhi_pd(r0, r1);  // r0[1] r1[1] r0[3] r1[3]
-    const __m256d t2 = _mm256_unpacklo_pd(r2, r3);
-    const __m256d t3 = _mm256_unpackhi_pd(r2, r3);
-    column[0] = _mm256_permute2f128_pd(t0, t2, 0x20);
-    column[1] = _mm256_permute2f128_pd(t1, t3, 0x20);
-    column[2] = _mm256_permute2f128_pd(t0, t2, 0x31);
-    column[3] = _mm256_permute2f128_pd(t1, t3, 0x31);
+    __m256d column[8];
+    gather_four_bodies(state, index, column);
+    side.v = {W4(column[0]), W4(column[1])};
+    side.w = W4(column[2]);
+    side.moved = {W4(column[3]), W4(column[4])};
+    side.c = W4(column[5]);
+    side.s = W4(column[6]);
   }
   void scatter(std::vector<BodyVelocity>& state, const std::uint32_t* index, const rows::Side<W4>& side) const
   {

@@ -23,11 +23,22 @@ bool cpu_has_avx2()
 #endif
 }
 
+bool cpu_has_avx512()
+{
+#if defined(__x86_64__) || defined(__i386__)
+  static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+  return has;
+#else
+  return false;
+#endif
+}
+
 RowLanes widest_available()
 {
-  static const RowLanes widest = row_lanes_available(RowLanes::Four)  ? RowLanes::Four
-                                 : row_lanes_available(RowLanes::Two) ? RowLanes::Two
-                                                                      : RowLanes::Scalar;
+  static const RowLanes widest = row_lanes_available(RowLanes::Eight)  ? RowLanes::Eight
+                                 : row_lanes_available(RowLanes::Four) ? RowLanes::Four
+                                 : row_lanes_available(RowLanes::Two)  ? RowLanes::Two
+                                                                       : RowLanes::Scalar;
   return widest;
 }
 }  // namespace
@@ -36,6 +47,9 @@ bool row_lanes_available(RowLanes lanes)
 {
   switch (lanes)
   {
+    case RowLanes::Eight:
+      // A colour's last odd batch goes on the four-lane path.
+      return eight_lanes_compiled() && cpu_has_avx512() && row_lanes_available(RowLanes::Four);
     case RowLanes::Four:
       return four_lanes_compiled() && cpu_has_avx2();
     case RowLanes::Two:
@@ -70,6 +84,7 @@ void warm_start_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVe
 {
   switch (path)
   {
+    case RowLanes::Eight:
     case RowLanes::Four:
       return warm_start_batch_four(batch, velocity);
     case RowLanes::Two:
@@ -85,6 +100,7 @@ void solve_batch(RowLanes path, Batch& batch, int lanes, std::vector<BodyVelocit
 {
   switch (path)
   {
+    case RowLanes::Eight:
     case RowLanes::Four:
       return solve_batch_four(batch, velocity, pass);
     case RowLanes::Two:

@@ -1,13 +1,14 @@
 // Internal to soft_rows*.cpp: the soft step's verbs on a batch of two-point
 // or of one-point manifolds, written once for a lane type V: double (one
-// lane, the scalar path), a two-wide vector (soft_rows_lanes2.cpp) or a
-// four-wide one (soft_rows_avx2.cpp). Every branch of the point verbs
+// lane, the scalar path), a two-wide vector (soft_rows_lanes2.cpp), a
+// four-wide one (soft_rows_avx2.cpp) or an eight-wide one over two batches
+// (soft_rows_avx512.cpp). Every branch of the point verbs
 // (contact_kernel_soft.cpp, contact_kernel.cpp) is computed and selected, in
 // every type, so the vector paths have exactly the scalar path's bits. The
 // lane type provides + - * /, comparisons giving a mask M, mask and/or,
 // sel(mask, if_true, if_false), neg, abs, and Ops<V> to load, store, gather
-// and scatter, and to read a batch's byte flags as a mask (flag) and write
-// them where a mask is set (set_flag).
+// and scatter, to read a batch's byte flags as a mask (flag), to write them
+// where a mask is set (set_flag) and to ask whether any is set (any).
 #pragma once
 
 #include <cstdint>
@@ -74,7 +75,7 @@ V2<V> relative_velocity(const L& l, V2<V> ra, V2<V> rb)
 
 /// apply_impulse_at: p on b, -p on a; a body with no inverse mass is untouched.
 template <class V, class L>
-void apply(L& l, V2<V> ra, V2<V> rb, V2<V> p)
+__attribute__((always_inline)) inline void apply(L& l, V2<V> ra, V2<V> rb, V2<V> p)
 {
   const V zero = V(0.0);
   const auto moves_a = l.inv_ma() != zero;
@@ -197,19 +198,26 @@ void solve_normals(const Ops& ops, L& l, RowBatch& r, const RowPass& pass, V s1,
   set_normal(ops, l, l.ra2(), l.rb2(), r.point[1], scale2 * y2);
 }
 
-/// Whether friction acts in any lane of the batch: a frictionless batch
-/// skips its friction rows, which would leave every lane as it is.
-template <class Batch>
-bool any_rough(const Batch& r)
+/// Whether any of a batch's kRowLanes byte flags is set (the lane types'
+/// Ops::any over one batch).
+inline bool any_lane(const std::uint8_t* f)
 {
-  for (const std::uint8_t rough : r.flags.rough)
+  for (int j = 0; j < kRowLanes; ++j)
   {
-    if (rough != 0)
+    if (f[j] != 0)
     {
       return true;
     }
   }
   return false;
+}
+
+/// Whether friction acts in any lane the Ops reads: a frictionless batch
+/// skips its friction rows, which would leave every lane as it is.
+template <class Ops, class Batch>
+bool any_rough(const Ops& ops, const Batch& r)
+{
+  return ops.any(r.flags.rough);
 }
 
 /// Coulomb's cone on the `needed` tangential impulse (coulomb): its first
@@ -286,7 +294,7 @@ void solve_rows(const Ops& ops, RowBatch& r, std::vector<BodyVelocity>& state, c
   const V2<V> d1 = anchor_offset(l, l.ra1(), l.rb1());
   const V2<V> d2 = anchor_offset(l, l.ra2(), l.rb2());
   solve_normals(ops, l, r, pass, ops.load(r.point[0].base) + dot(d1, l.n()), ops.load(r.point[1].base) + dot(d2, l.n()));
-  if (any_rough(r))
+  if (any_rough(ops, r))
   {
     const V pull = pass.use_bias ? anchor_pull(ops, l, r, d1, d2, pass) : V(0.0);
     solve_friction(ops, l, r, pull);
@@ -327,7 +335,7 @@ void solve_rows(const Ops& ops, RowSingle& r, std::vector<BodyVelocity>& state, 
   auto l = load_lane<V>(ops, r, state);
   const V2<V> d = anchor_offset(l, l.ra1(), l.rb1());
   solve_single_normal(ops, l, r, pass, ops.load(r.point[0].base) + dot(d, l.n()));
-  if (any_rough(r))
+  if (any_rough(ops, r))
   {
     // The relax pass has no pull, and no drift to compute.
     const V pull =

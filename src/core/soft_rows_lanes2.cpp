@@ -107,6 +107,7 @@ struct HalfOps
   W2 load(const double* f) const { return load2(f + offset); }
   void store(double* f, W2 v) const { store2(f + offset, v); }
   M2 flag(const std::uint8_t* f) const { return mask2(f[offset] != 0, f[offset + 1] != 0); }
+  bool any(const std::uint8_t* f) const { return rows::any_lane(f); }  // the whole batch, as the other paths
   void set_flag(std::uint8_t* f, M2 where, M2 value) const
   {
     rows::write_flag_bits(f + offset, 2, bits2(where), bits2(value));

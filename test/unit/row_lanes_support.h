@@ -11,13 +11,14 @@ namespace collision2d
 namespace test
 {
 /// Forces each lane path of the soft rows that is available here (scalar,
-/// two lanes on SSE2 or NEON, four on AVX2), calls f(label) with it, and
-/// restores the default path.
+/// two lanes on SSE2 or NEON, four on AVX2, eight on AVX-512), calls
+/// f(label) with it, and restores the default path.
 template <class F>
 void for_each_row_lanes(F f)
 {
   const std::pair<detail::RowLanes, const char*> paths[] = {
-      {detail::RowLanes::Scalar, "scalar"}, {detail::RowLanes::Two, "two-lane"}, {detail::RowLanes::Four, "four-lane"}};
+      {detail::RowLanes::Scalar, "scalar"}, {detail::RowLanes::Two, "two-lane"}, {detail::RowLanes::Four, "four-lane"},
+      {detail::RowLanes::Eight, "eight-lane"}};
   for (const auto& [path, label] : paths)
   {
     if (!detail::set_row_lanes(path))

@@ -338,7 +338,7 @@ TEST(WorldGoldenRuns, WideRowsMatchTheScalarPath)
 {
   // The scalar rows are the reference the soft-step pins were made with;
   // every lane path this build and CPU have (two lanes on SSE2 or NEON, four
-  // on AVX2) must give every bit of them.
+  // on AVX2, eight on AVX-512) must give every bit of them.
   test::for_each_row_lanes([](const char* label) {
     std::printf("%s rows: checked\n", label);
     for (const Golden& g : kGolden)

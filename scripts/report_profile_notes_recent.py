@@ -343,4 +343,23 @@ the other's last share and, with it, bodies that sit in the other core's
 cache) and gained nothing with the busy loop; and the soft passes' file
 built for AVX-512 (32 vector registers instead of 16, the same four lanes)
 took 1.37 times as long on the base-100 pyramid.
+
+A fiftieth, on the same host (commit f240943; scratch drivers forcing a
+lane path, whole processes timed in alternating pairs). The forty-ninth's
+AVX-512 trial kept four lanes a vector and only gained registers; the
+eight-lane path solves two neighbouring batches of one colour in one
+512-bit vector, which a colour allows (its batches share no body), so the
+bits stay those of every other path. As first written it ran about 1.2 times the
+four-lane path's time on the base-100 pyramid: `rows::apply` was left out of
+line, every field's second address was worked out from two pointers, and
+each field was loaded by two masked broadcasts. Inlined, with the second
+batch a constant stride on, and loaded by one load and one insert, its
+solve of eight manifolds is 1087 instructions (148 touching the stack)
+against 764 (218) for four on the four-lane path. Eight over four lanes,
+the base-100 pyramid stepped 60 + 150 frames on 1 worker: 0.835 (9 pairs,
+0.81 to 0.86), the top box's height the same to the bit; the pyramid of
+9870 boxes, 60 frames with set-up: 0.878 on 1 worker (7 pairs) and 0.92
+on 2. Outside the eight-lane rows no function of the optimised benchmarks
+holds an AVX-512 instruction (their disassembly), so the run-time choice
+guards them as it does the four-lane rows.
 """

@@ -57,6 +57,16 @@ def cache_sizes():
         return []
 
 
+def row_lanes(flags):
+    """How many lanes the soft step's rows run on a CPU with these flags, as
+    the core chooses (src/core/soft_rows_dispatch.cpp)."""
+    if {"avx512f", "avx512dq"} <= flags:
+        return "AVX-512: the soft step's rows run eight lanes"
+    if "avx2" in flags:
+        return "AVX2: the soft step's rows run four lanes"
+    return "no AVX2: the soft step's rows run two lanes"
+
+
 def cpu_description():
     """The CPU as the report names it. The model name alone ("AMD EPYC" on this
     host) hides the generation, and the same build's ratios to the peers moved
@@ -67,9 +77,7 @@ def cpu_description():
     if "cpu family" in cpu and "model" in cpu:
         detail.append(f"family {cpu['cpu family']} model {cpu['model']}")
     if "flags" in cpu:
-        wide = "avx2" in cpu["flags"].split()
-        detail.append("AVX2: the soft step's rows run four lanes" if wide else
-                      "no AVX2: the soft step's rows run two lanes")
+        detail.append(row_lanes(set(cpu["flags"].split())))
     detail += cache_sizes()
     return f"{text} ({', '.join(detail)})" if detail else text
 

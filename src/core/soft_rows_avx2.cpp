@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "soft_rows_gather4.h"
+#include "soft_rows_four_bodies.h"
 #include "soft_rows_kernel.h"
 
 namespace collision2d
@@ -78,13 +78,7 @@ struct WideOps
     _mm256_store_pd(vx, side.v.x.v);
     _mm256_store_pd(vy, side.v.y.v);
     _mm256_store_pd(w, side.w.v);
-    BodyVelocity discard;
-    for (int j = 0; j < kRowLanes; ++j)
-    {
-      BodyVelocity& s = written_body(state, index[j], discard);
-      s.v = Vec2{vx[j], vy[j]};
-      s.omega = w[j];
-    }
+    scatter_four_bodies(state, index, vx, vy, w);
   }
 };
 

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "soft_rows_gather4.h"
+#include "soft_rows_four_bodies.h"
 #include "soft_rows_kernel.h"
 
 namespace collision2d
@@ -121,14 +121,8 @@ struct PairOps
     _mm512_store_pd(vx, side.v.x.v);
     _mm512_store_pd(vy, side.v.y.v);
     _mm512_store_pd(w, side.w.v);
-    BodyVelocity discard;
-    for (int j = 0; j < kLanes; ++j)
-    {
-      const std::uint32_t body = j < kRowLanes ? index[j] : next(index)[j - kRowLanes];
-      BodyVelocity& s = written_body(state, body, discard);
-      s.v = Vec2{vx[j], vy[j]};
-      s.omega = w[j];
-    }
+    scatter_four_bodies(state, index, vx, vy, w);
+    scatter_four_bodies(state, next(index), vx + kRowLanes, vy + kRowLanes, w + kRowLanes);
   }
 };
 

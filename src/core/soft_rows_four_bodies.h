@@ -1,7 +1,8 @@
 // Internal to the vector paths of the soft rows (soft_rows_avx2.cpp,
-// soft_rows_avx512.cpp): one batch's four bodies gathered into lanes. Each
-// file builds it with its own instructions, so it has internal linkage: no
-// copy built for AVX-512 can stand in for the AVX2 file's.
+// soft_rows_avx512.cpp): one batch's four bodies gathered into lanes, and
+// their velocities written back. Each file builds these with its own
+// instructions, so they have internal linkage: no copy built for AVX-512
+// can stand in for the AVX2 file's.
 #pragma once
 
 #if defined(__AVX2__)
@@ -54,6 +55,20 @@ inline void gather_four_bodies(const std::vector<BodyVelocity>& state, const std
                  column);
   transpose_four(_mm256_loadu_pd(b[0] + 4), _mm256_loadu_pd(b[1] + 4), _mm256_loadu_pd(b[2] + 4),
                  _mm256_loadu_pd(b[3] + 4), column + 4);
+}
+
+/// Writes the velocities of lanes [0, 4) of vx, vy and w back to the four
+/// bodies `index` names (not to a fixed body: written_body).
+inline void scatter_four_bodies(std::vector<BodyVelocity>& state, const std::uint32_t* index, const double* vx,
+                                const double* vy, const double* w)
+{
+  BodyVelocity discard;
+  for (int j = 0; j < kRowLanes; ++j)
+  {
+    BodyVelocity& s = written_body(state, index[j], discard);
+    s.v = Vec2{vx[j], vy[j]};
+    s.omega = w[j];
+  }
 }
 
 }  // namespace

@@ -165,8 +165,10 @@ void lcp2(V k11, V k12, V k22, V q1, V q2, V& y1, V& y2)
 }
 
 /// set_soft_impulse: the new accumulated normal impulse and its change applied.
+/// Always inlined, as apply: left out of line, its lanes went through the stack.
 template <class V, class Ops, class L>
-void set_normal(const Ops& ops, L& l, V2<V> ra, V2<V> rb, RowPoint& point, V total)
+__attribute__((always_inline)) inline void set_normal(const Ops& ops, L& l, V2<V> ra, V2<V> rb, RowPoint& point,
+                                                      V total)
 {
   const V applied = total - ops.load(point.normal);
   ops.store(point.normal, total);

@@ -4,9 +4,9 @@
 // each) and coloured so that no two manifolds of one colour move the same
 // body; a colour's batches can then be solved eight (two batches at once),
 // four or two lanes at a time (chosen at run time) with exactly the bits of
-// the scalar path, since lanes never share a body. Nearly dependent two-point manifolds, the few of a
-// colour that a batch would mostly pad, and any that find no colour stay on
-// the kernel's point verbs.
+// the scalar path, since lanes never share a body. Nearly dependent
+// two-point manifolds, the few of a colour that a batch would mostly pad,
+// and any that find no colour stay on the kernel's point verbs.
 #pragma once
 
 #include <cstddef>

@@ -46,22 +46,28 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
   }
   if (still_inside(boxes, runner))
   {
+    if (!built_)
+    {
+      broad_phase.find_pairs(fat_, fat_pairs_, runner);
+      built_ = true;
+      ++built_count_;
+    }
     ++reused_;
     wait_ = kFirstWait;
+    keep_overlapping(boxes, pairs, runner);
+    return;
   }
-  else if (frames_to_wait_ > 0)
+  if (frames_to_wait_ > 0)
   {
     --frames_to_wait_;
-    broad_phase.find_pairs(boxes, pairs, runner);
-    return;
   }
   else
   {
-    rebuild(boxes, broad_phase, runner);
+    enlarge(boxes);
     frames_to_wait_ = wait_;
     wait_ = std::min(2 * wait_, kMaxWait);
   }
-  keep_overlapping(boxes, pairs, runner);
+  broad_phase.find_pairs(boxes, pairs, runner);
 }
 
 void FatBoxPairs::keep_overlapping(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs,
@@ -97,7 +103,7 @@ void FatBoxPairs::keep_overlapping(const std::vector<Aabb>& boxes, std::vector<B
 
 bool FatBoxPairs::still_inside(const std::vector<Aabb>& boxes, RangeRunner& runner)
 {
-  if (!built_ || boxes.size() != fat_.size())
+  if (!enlarged_ || boxes.size() != fat_.size())
   {
     return false;
   }
@@ -125,15 +131,16 @@ bool FatBoxPairs::still_inside(const std::vector<Aabb>& boxes, RangeRunner& runn
   return std::find(part_inside_.begin(), part_inside_.end(), 0) == part_inside_.end();
 }
 
-void FatBoxPairs::rebuild(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, RangeRunner& runner)
+void FatBoxPairs::enlarge(const std::vector<Aabb>& boxes)
 {
+  enlarged_ = false;  // until every box is written
+  built_ = false;
   fat_.resize(boxes.size());
   for (std::size_t k = 0; k < boxes.size(); ++k)
   {
     fat_[k] = enlarged(boxes[k]);
   }
-  broad_phase.find_pairs(fat_, fat_pairs_, runner);
-  built_ = true;
+  enlarged_ = true;
 }
 
 }  // namespace detail

@@ -2,10 +2,13 @@
 // Pairs are found on boxes enlarged by a fraction of their size; while every
 // box stays inside its enlarged one, the pairs of the boxes now are exactly
 // the kept pairs whose boxes overlap now, so no grid is built. A stack at
-// rest keeps its pairs for as long as it rests. Where boxes keep leaving
-// their enlarged ones, the exact boxes are paired and enlarging is tried
-// again after a wait that doubles. A few boxes (BroadPhase::kAllPairsBoxes)
-// are always paired directly.
+// rest keeps its pairs for as long as it rests. Enlarged boxes are paired
+// only once every box has stayed inside them for a frame: where bodies crowd
+// (a rain) they overlap many more neighbours than the exact boxes, a cost
+// wasted where the boxes leave them at once.
+// Where boxes keep leaving their enlarged ones, the exact boxes are paired
+// and enlarging is tried again after a wait that doubles. A few boxes
+// (BroadPhase::kAllPairsBoxes) are always paired directly.
 #pragma once
 
 #include <cstddef>
@@ -27,21 +30,31 @@ public:
                   RangeRunner& runner);
   /// Frames whose pairs came from the kept ones (tests).
   std::size_t reused() const { return reused_; }
-  /// Drops the kept pairs: the next call pairs the boxes afresh. For a step
-  /// that failed partway, which may have left them half rebuilt.
-  void forget() { built_ = false; }
+  /// Times the enlarged boxes were paired (tests).
+  std::size_t built() const { return built_count_; }
+  /// Drops the enlarged boxes and their pairs: the next call pairs the boxes
+  /// afresh. For a step that failed partway, which may have left them half
+  /// written.
+  void forget()
+  {
+    enlarged_ = false;
+    built_ = false;
+  }
 
 private:
   /// Whether every box lies inside its enlarged one (in parts on the runner).
   bool still_inside(const std::vector<Aabb>& boxes, RangeRunner& runner);
-  void rebuild(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, RangeRunner& runner);
+  /// The boxes enlarged, their pairs left until a frame shows they hold.
+  void enlarge(const std::vector<Aabb>& boxes);
   /// `pairs`: the kept pairs whose boxes overlap now, in order (in parts on the runner).
   void keep_overlapping(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
 
-  std::vector<Aabb> fat_;            ///< the enlarged boxes the kept pairs were found on
+  std::vector<Aabb> fat_;            ///< the enlarged boxes
   std::vector<BodyPair> fat_pairs_;  ///< every pair of overlapping enlarged boxes, in (i, j) order
-  bool built_ = false;
+  bool enlarged_ = false;            ///< fat_ holds a frame's boxes enlarged
+  bool built_ = false;               ///< fat_pairs_ are fat_'s pairs
   std::size_t reused_ = 0;
+  std::size_t built_count_ = 0;
   int wait_ = 1;            ///< frames the next failed reuse waits before enlarging again
   int frames_to_wait_ = 0;  ///< frames left that pair the exact boxes
   // Scratch of the work in parts.

@@ -2,8 +2,9 @@
 // every frame's pairs must be exactly BroadPhase's for the boxes of that
 // frame, whether the kept pairs were reused or found again, for boxes that
 // jitter in place, jump, turn unusable (non-finite, inverted) or huge, and
-// when the list of bodies changes; and on a runner's parts as on one. A few
-// boxes are paired directly.
+// when the list of bodies changes; and on a runner's parts as on one. Boxes
+// that keep moving never pair their enlarged ones. A few boxes are paired
+// directly.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -85,6 +86,32 @@ TEST(FatBoxPairs, JitteringAndJumpingBoxesGiveTheBroadPhasesPairs)
   }
   EXPECT_GT(kept.reused(), 100u) << "the kept pairs were never reused";
   EXPECT_LT(kept.reused(), 200u - jumps + 1) << "a jump must find the pairs again";
+}
+
+TEST(FatBoxPairs, BoxesThatKeepMovingNeverPairTheirEnlargedBoxes)
+{
+  // A rain: every box moves further than its enlargement each frame, so
+  // pairing the enlarged boxes would buy nothing. They are paired only once
+  // every box has stayed inside them for a frame: here when the boxes land.
+  std::vector<Aabb> boxes = grid_boxes(20, 10);
+  detail::FatBoxPairs kept;
+  const Vec2 fall{0.0, -0.3};  // m a frame, past a unit box's 0.1 m enlargement
+  for (int frame = 0; frame < 150; ++frame)  // several tries, the waits between them doubling
+  {
+    for (Aabb& box : boxes)
+    {
+      box = {box.lo + fall, box.hi + fall};
+    }
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_EQ(kept.built(), 0u) << "boxes leaving their enlarged ones at once must not pair them";
+  EXPECT_EQ(kept.reused(), 0u);
+  for (int frame = 0; frame < 130; ++frame)  // longer than the longest wait
+  {
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_EQ(kept.built(), 1u) << "boxes at rest pair their enlarged ones once";
+  EXPECT_GT(kept.reused(), 60u);
 }
 
 TEST(FatBoxPairs, ARunnersPartsKeepTheSamePairs)

@@ -20,6 +20,12 @@ constexpr double kFatFraction = 0.1;
 /// (a gas, a rain) the exact boxes' pairs cost less than enlarged ones.
 constexpr int kFirstWait = 1;
 constexpr int kMaxWait = 64;
+/// Enlarged boxes are made again at once, and this frame's pairs taken from
+/// theirs, when the last ones served at least this many frames ...
+constexpr int kMinServedFrames = 2;
+/// ... and paired at most this many times as many boxes as the exact ones:
+/// then pairing them costs about what pairing the exact boxes would.
+constexpr std::size_t kMaxFatPairsPerPair = 2;
 
 Aabb enlarged(const Aabb& box)
 {
@@ -42,19 +48,28 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
   {
     // Every pair is tested at once: checking enlarged boxes first costs more.
     broad_phase.find_pairs(boxes, pairs, runner);
+    ++exact_count_;
     return;
   }
   if (still_inside(boxes, runner))
   {
     if (!built_)
     {
-      broad_phase.find_pairs(fat_, fat_pairs_, runner);
-      built_ = true;
-      ++built_count_;
+      build(broad_phase, runner);
     }
     ++reused_;
     wait_ = kFirstWait;
-    keep_overlapping(boxes, pairs, runner);
+    serve(boxes, pairs, runner);
+    return;
+  }
+  if (worth_rebuilding())
+  {
+    // A settling stack sinks out of its enlarged boxes every few frames.
+    // Pairing new enlarged boxes now gives this frame's pairs too: one
+    // pairing instead of the exact boxes' now and the enlarged ones' next frame.
+    enlarge(boxes);
+    build(broad_phase, runner);
+    serve(boxes, pairs, runner);
     return;
   }
   if (frames_to_wait_ > 0)
@@ -68,6 +83,27 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
     wait_ = std::min(2 * wait_, kMaxWait);
   }
   broad_phase.find_pairs(boxes, pairs, runner);
+  ++exact_count_;
+}
+
+bool FatBoxPairs::worth_rebuilding() const
+{
+  return built_ && served_ >= kMinServedFrames && fat_pairs_.size() <= kMaxFatPairsPerPair * exact_pairs_;
+}
+
+void FatBoxPairs::build(BroadPhase& broad_phase, RangeRunner& runner)
+{
+  broad_phase.find_pairs(fat_, fat_pairs_, runner);
+  built_ = true;
+  ++built_count_;
+  served_ = 0;
+}
+
+void FatBoxPairs::serve(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner)
+{
+  keep_overlapping(boxes, pairs, runner);
+  ++served_;
+  exact_pairs_ = pairs.size();
 }
 
 void FatBoxPairs::keep_overlapping(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs,

@@ -2,12 +2,15 @@
 // Pairs are found on boxes enlarged by a fraction of their size; while every
 // box stays inside its enlarged one, the pairs of the boxes now are exactly
 // the kept pairs whose boxes overlap now, so no grid is built. A stack at
-// rest keeps its pairs for as long as it rests. Enlarged boxes are paired
-// only once every box has stayed inside them for a frame: where bodies crowd
-// (a rain) they overlap many more neighbours than the exact boxes, a cost
-// wasted where the boxes leave them at once.
-// Where boxes keep leaving their enlarged ones, the exact boxes are paired
-// and enlarging is tried again after a wait that doubles. A few boxes
+// rest keeps its pairs for as long as it rests.
+// New enlarged boxes are paired only once every box has stayed inside them
+// for a frame: where bodies crowd (a rain) they overlap many more neighbours
+// than the exact boxes, a cost wasted where the boxes leave them at once.
+// Where boxes keep leaving, the exact boxes are paired and enlarging is tried
+// again after a wait that doubles. But where boxes leave enlarged boxes that
+// served for frames and paired few more boxes than the exact ones (a stack
+// settling sinks out of them every few frames), new ones are made and paired
+// at once, and give that frame's pairs too. A few boxes
 // (BroadPhase::kAllPairsBoxes) are always paired directly.
 #pragma once
 
@@ -32,6 +35,8 @@ public:
   std::size_t reused() const { return reused_; }
   /// Times the enlarged boxes were paired (tests).
   std::size_t built() const { return built_count_; }
+  /// Frames whose pairs came from pairing the exact boxes (tests).
+  std::size_t paired_exactly() const { return exact_count_; }
   /// Drops the enlarged boxes and their pairs: the next call pairs the boxes
   /// afresh. For a step that failed partway, which may have left them half
   /// written.
@@ -46,6 +51,13 @@ private:
   bool still_inside(const std::vector<Aabb>& boxes, RangeRunner& runner);
   /// The boxes enlarged, their pairs left until a frame shows they hold.
   void enlarge(const std::vector<Aabb>& boxes);
+  /// Whether to enlarge the boxes again at once where they left the last
+  /// enlarged ones, and pair those now.
+  bool worth_rebuilding() const;
+  /// fat_pairs_ from fat_.
+  void build(BroadPhase& broad_phase, RangeRunner& runner);
+  /// `pairs` from fat_pairs_ (keep_overlapping), counted as a frame they served.
+  void serve(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
   /// `pairs`: the kept pairs whose boxes overlap now, in order (in parts on the runner).
   void keep_overlapping(const std::vector<Aabb>& boxes, std::vector<BodyPair>& pairs, RangeRunner& runner);
 
@@ -55,8 +67,11 @@ private:
   bool built_ = false;               ///< fat_pairs_ are fat_'s pairs
   std::size_t reused_ = 0;
   std::size_t built_count_ = 0;
+  std::size_t exact_count_ = 0;
   int wait_ = 1;            ///< frames the next failed reuse waits before enlarging again
   int frames_to_wait_ = 0;  ///< frames left that pair the exact boxes
+  int served_ = 0;                ///< frames fat_pairs_ gave the pairs since they were built
+  std::size_t exact_pairs_ = 0;   ///< pairs they gave in the last of those frames
   // Scratch of the work in parts.
   std::vector<std::vector<BodyPair>> part_pairs_;  ///< each part's kept pairs
   std::vector<unsigned char> part_inside_;  ///< each part's boxes all inside

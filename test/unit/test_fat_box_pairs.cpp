@@ -3,8 +3,9 @@
 // frame, whether the kept pairs were reused or found again, for boxes that
 // jitter in place, jump, turn unusable (non-finite, inverted) or huge, and
 // when the list of bodies changes; and on a runner's parts as on one. Boxes
-// that keep moving never pair their enlarged ones. A few boxes are paired
-// directly.
+// that keep moving never pair their enlarged ones; boxes of a settling stack
+// take their pairs from enlarged ones made again as they sink. A few boxes
+// are paired directly.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -37,6 +38,23 @@ std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows)
     {
       const double x = static_cast<double>(c) * 1.02;
       const double y = static_cast<double>(r) * 1.0;
+      boxes.push_back({{x, y}, {x + 1.0, y + 1.0}});
+    }
+  }
+  return boxes;
+}
+
+/// Unit boxes laid as bricks, each touching its neighbours: as in a stack,
+/// the enlarged boxes pair with few more boxes than the exact ones.
+std::vector<Aabb> brick_boxes(std::size_t columns, std::size_t rows)
+{
+  std::vector<Aabb> boxes;
+  for (std::size_t r = 0; r < rows; ++r)
+  {
+    for (std::size_t c = 0; c < columns; ++c)
+    {
+      const double x = static_cast<double>(c) + 0.5 * static_cast<double>(r % 2);
+      const double y = static_cast<double>(r);
       boxes.push_back({{x, y}, {x + 1.0, y + 1.0}});
     }
   }
@@ -112,6 +130,60 @@ TEST(FatBoxPairs, BoxesThatKeepMovingNeverPairTheirEnlargedBoxes)
   }
   EXPECT_EQ(kept.built(), 1u) << "boxes at rest pair their enlarged ones once";
   EXPECT_GT(kept.reused(), 60u);
+}
+
+TEST(FatBoxPairs, ASettlingStackTakesItsPairsFromEnlargedBoxes)
+{
+  // A stack sinking as its contacts take the load: every box leaves its
+  // enlarged one (0.1 m) every fourth frame. The enlarged boxes are made
+  // again and paired at once; only the first frame pairs the exact boxes.
+  std::vector<Aabb> boxes = brick_boxes(20, 10);
+  detail::FatBoxPairs kept;
+  const Vec2 sink{0.0, -0.03};  // m a frame
+  constexpr int kFrames = 100;
+  for (int frame = 0; frame < kFrames; ++frame)
+  {
+    for (Aabb& box : boxes)
+    {
+      box = {box.lo + sink, box.hi + sink};
+    }
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_EQ(kept.paired_exactly(), 1u) << "a settling stack must not fall back to its exact boxes";
+  EXPECT_GE(kept.built(), static_cast<std::size_t>(kFrames / 4)) << "the boxes left their enlarged ones";
+  EXPECT_EQ(kept.built() + kept.reused(), static_cast<std::size_t>(kFrames)) << "each frame after the first served by enlarged boxes";
+  // Falling past the enlargement each frame: enlarged boxes made again would
+  // be left at once, so the exact boxes are paired.
+  const Vec2 fall{0.0, -0.3};
+  for (int frame = 0; frame < 20; ++frame)
+  {
+    for (Aabb& box : boxes)
+    {
+      box = {box.lo + fall, box.hi + fall};
+    }
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_GE(kept.paired_exactly(), 19u) << "enlarged boxes left at once must not be made again at once";
+}
+
+TEST(FatBoxPairs, SinkingBoxesWhoseEnlargedOnesPairManyMoreTryAgainLater)
+{
+  // The same sinking, but the boxes stand 0.02 m apart: their enlarged boxes
+  // also pair each box with its side and corner neighbours, four times the
+  // exact pairs, so they are not made again at once.
+  std::vector<Aabb> boxes = grid_boxes(20, 10);
+  detail::FatBoxPairs kept;
+  const Vec2 sink{0.0, -0.03};  // m a frame
+  for (int frame = 0; frame < 100; ++frame)
+  {
+    for (Aabb& box : boxes)
+    {
+      box = {box.lo + sink, box.hi + sink};
+    }
+    expect_same_pairs(kept, boxes);
+  }
+  EXPECT_GT(kept.paired_exactly(), 10u) << "enlarged boxes that pair many more must wait between tries";
+  EXPECT_GT(kept.reused(), 10u);
 }
 
 TEST(FatBoxPairs, ARunnersPartsKeepTheSamePairs)

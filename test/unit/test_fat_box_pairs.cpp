@@ -151,7 +151,8 @@ TEST(FatBoxPairs, ASettlingStackTakesItsPairsFromEnlargedBoxes)
   }
   EXPECT_EQ(kept.paired_exactly(), 1u) << "a settling stack must not fall back to its exact boxes";
   EXPECT_GE(kept.built(), static_cast<std::size_t>(kFrames / 4)) << "the boxes left their enlarged ones";
-  EXPECT_EQ(kept.built() + kept.reused(), static_cast<std::size_t>(kFrames)) << "each frame after the first served by enlarged boxes";
+  EXPECT_EQ(kept.built() + kept.reused(), static_cast<std::size_t>(kFrames))
+      << "each frame after the first served by enlarged boxes";
   // Falling past the enlargement each frame: enlarged boxes made again would
   // be left at once, so the exact boxes are paired.
   const Vec2 fall{0.0, -0.3};

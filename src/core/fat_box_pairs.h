@@ -70,8 +70,8 @@ private:
   std::size_t exact_count_ = 0;
   int wait_ = 1;            ///< frames the next failed reuse waits before enlarging again
   int frames_to_wait_ = 0;  ///< frames left that pair the exact boxes
-  int served_ = 0;                ///< frames fat_pairs_ gave the pairs since they were built
-  std::size_t exact_pairs_ = 0;   ///< pairs they gave in the last of those frames
+  int served_ = 0;          ///< frames fat_pairs_ gave the pairs since they were built
+  std::size_t exact_pairs_ = 0;  ///< pairs they gave in the last of those frames
   // Scratch of the work in parts.
   std::vector<std::vector<BodyPair>> part_pairs_;  ///< each part's kept pairs
   std::vector<unsigned char> part_inside_;  ///< each part's boxes all inside

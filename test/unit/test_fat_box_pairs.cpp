@@ -28,15 +28,16 @@ public:
   void run(std::size_t count, Job job, void* context) override { job(context, 0, count); }
 };
 
-/// Unit boxes in a loose grid: each touches or nearly touches its neighbours.
-std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows)
+/// Unit boxes in rows one above the other, `pitch` apart along a row, every
+/// other row shifted by `shift`.
+std::vector<Aabb> row_boxes(std::size_t columns, std::size_t rows, double pitch, double shift)
 {
   std::vector<Aabb> boxes;
   for (std::size_t r = 0; r < rows; ++r)
   {
     for (std::size_t c = 0; c < columns; ++c)
     {
-      const double x = static_cast<double>(c) * 1.02;
+      const double x = static_cast<double>(c) * pitch + shift * static_cast<double>(r % 2);
       const double y = static_cast<double>(r) * 1.0;
       boxes.push_back({{x, y}, {x + 1.0, y + 1.0}});
     }
@@ -44,22 +45,12 @@ std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows)
   return boxes;
 }
 
-/// Unit boxes laid as bricks, each touching its neighbours: as in a stack,
-/// the enlarged boxes pair with few more boxes than the exact ones.
-std::vector<Aabb> brick_boxes(std::size_t columns, std::size_t rows)
-{
-  std::vector<Aabb> boxes;
-  for (std::size_t r = 0; r < rows; ++r)
-  {
-    for (std::size_t c = 0; c < columns; ++c)
-    {
-      const double x = static_cast<double>(c) + 0.5 * static_cast<double>(r % 2);
-      const double y = static_cast<double>(r);
-      boxes.push_back({{x, y}, {x + 1.0, y + 1.0}});
-    }
-  }
-  return boxes;
-}
+/// A loose grid: each box touches or nearly touches its neighbours.
+std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows) { return row_boxes(columns, rows, 1.02, 0.0); }
+
+/// Bricks, each touching its neighbours: as in a stack, the enlarged boxes
+/// pair with few more boxes than the exact ones.
+std::vector<Aabb> brick_boxes(std::size_t columns, std::size_t rows) { return row_boxes(columns, rows, 1.0, 0.5); }
 
 /// One frame: the kept pairs' answer against a fresh broad phase's.
 void expect_same_pairs(detail::FatBoxPairs& kept, const std::vector<Aabb>& boxes, RangeRunner& runner)

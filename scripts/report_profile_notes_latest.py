@@ -53,4 +53,43 @@ colouring follows, never repeated between frames (0 of 299 frames, base-100
 and the pyramid of 9870 boxes): equal heights in a row jitter, so colours
 can be kept between frames only if kept as state, which a snapshot would
 then have to carry to resume exactly.
+
+A fifty-third, on the same host (commit 66876c6; the stack bench,
+callgrind and scratch changes, none kept). On the base-100 frame the bytes
+a stage touches cost more than its instructions suggest. A 64-byte block
+added to each contact point, written when the point is added and read when
+its row is filled and when it is published, raised the instructions of the
+first 60 frames by 0.68% (3686.6 -> 3711.7 million) but the time over
+Box2D v3 from 1.23, 1.24, 1.26, 1.23 and 1.26 to 1.33, 1.29, 1.33, 1.32
+and 1.31 (stack bench, median of 7 rounds in one process, 5 alternating
+processes each). One more cache line a point in three stages cost about
+6%. The larger point of the fifty-second changed nothing because no stage
+touched its extra bytes. The point's 256 bytes are four lines: filling the
+rows reads three of them and publishing three. Filling needs about 170
+bytes and publishing about 130, 223 together, so no order of the fields
+lets either read fewer lines; only fewer bytes a point would.
+
+Tried and not kept:
+- A pass after the substeps copying each row point's impulses and sliding
+  flag into a 24-byte record in point order, so that publishing reads them
+  in order instead of gathering each point's row: 1.30 to 1.36 against
+  1.24 to 1.30 before (5 alternating processes each). The extra pass
+  brings the rows through the cache again.
+- A kept manifold's points worked out where they are added, from its
+  cached contacts, instead of written into the pair's manifold (104 bytes)
+  by the narrow phase and read back: 1.28 to 1.32 against 1.18 to 1.27.
+  Turning the lever arms a second time added 2.3% of the instructions
+  (3772.3 million), more than the bytes saved.
+
+So the persistent contact record must bring fewer bytes through each stage
+without adding work, not only move the same bytes around.
+
+The tiny scenes: a fresh incline world (1 substep, sleeping on), stepped
+30 frames as the paired rounds time it. Its first frame ran 18.2 thousand
+instructions, frames 2 to 30 about 6.4 thousand each, and once the box
+sleeps (from about frame 31) 0.34 thousand. The 6.4 thousand are spread
+over the frame's stages: the largest share, detection's own code, is 675
+and the one manifold's solve 583. Sizing the soft step's eleven per-body
+arrays only when the body count changes took 85 instructions off a frame
+(1.3%). That was not kept: the three scenes' time targets miss by 4 to 5%.
 """

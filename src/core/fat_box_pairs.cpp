@@ -47,8 +47,7 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
   if (boxes.size() <= BroadPhase::kAllPairsBoxes)
   {
     // Every pair is tested at once: checking enlarged boxes first costs more.
-    broad_phase.find_pairs(boxes, pairs, runner);
-    ++exact_count_;
+    pair_exactly(boxes, broad_phase, pairs, runner);
     return;
   }
   if (still_inside(boxes, runner))
@@ -82,6 +81,12 @@ void FatBoxPairs::find_pairs(const std::vector<Aabb>& boxes, BroadPhase& broad_p
     frames_to_wait_ = wait_;
     wait_ = std::min(2 * wait_, kMaxWait);
   }
+  pair_exactly(boxes, broad_phase, pairs, runner);
+}
+
+void FatBoxPairs::pair_exactly(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, std::vector<BodyPair>& pairs,
+                               RangeRunner& runner)
+{
   broad_phase.find_pairs(boxes, pairs, runner);
   ++exact_count_;
 }

@@ -54,6 +54,9 @@ private:
   /// Whether to enlarge the boxes again at once where they left the last
   /// enlarged ones, and pair those now.
   bool worth_rebuilding() const;
+  /// `pairs` from the exact boxes, counted (paired_exactly).
+  void pair_exactly(const std::vector<Aabb>& boxes, BroadPhase& broad_phase, std::vector<BodyPair>& pairs,
+                    RangeRunner& runner);
   /// fat_pairs_ from fat_.
   void build(BroadPhase& broad_phase, RangeRunner& runner);
   /// `pairs` from fat_pairs_ (keep_overlapping), counted as a frame they served.

@@ -52,6 +52,15 @@ std::vector<Aabb> grid_boxes(std::size_t columns, std::size_t rows) { return row
 /// pair with few more boxes than the exact ones.
 std::vector<Aabb> brick_boxes(std::size_t columns, std::size_t rows) { return row_boxes(columns, rows, 1.0, 0.5); }
 
+/// Every box moved by d (m).
+void move_all(std::vector<Aabb>& boxes, Vec2 d)
+{
+  for (Aabb& box : boxes)
+  {
+    box = {box.lo + d, box.hi + d};
+  }
+}
+
 /// One frame: the kept pairs' answer against a fresh broad phase's.
 void expect_same_pairs(detail::FatBoxPairs& kept, const std::vector<Aabb>& boxes, RangeRunner& runner)
 {
@@ -107,10 +116,7 @@ TEST(FatBoxPairs, BoxesThatKeepMovingNeverPairTheirEnlargedBoxes)
   const Vec2 fall{0.0, -0.3};  // m a frame, past a unit box's 0.1 m enlargement
   for (int frame = 0; frame < 150; ++frame)  // several tries, the waits between them doubling
   {
-    for (Aabb& box : boxes)
-    {
-      box = {box.lo + fall, box.hi + fall};
-    }
+    move_all(boxes, fall);
     expect_same_pairs(kept, boxes);
   }
   EXPECT_EQ(kept.built(), 0u) << "boxes leaving their enlarged ones at once must not pair them";
@@ -134,10 +140,7 @@ TEST(FatBoxPairs, ASettlingStackTakesItsPairsFromEnlargedBoxes)
   constexpr int kFrames = 100;
   for (int frame = 0; frame < kFrames; ++frame)
   {
-    for (Aabb& box : boxes)
-    {
-      box = {box.lo + sink, box.hi + sink};
-    }
+    move_all(boxes, sink);
     expect_same_pairs(kept, boxes);
   }
   EXPECT_EQ(kept.paired_exactly(), 1u) << "a settling stack must not fall back to its exact boxes";
@@ -149,10 +152,7 @@ TEST(FatBoxPairs, ASettlingStackTakesItsPairsFromEnlargedBoxes)
   const Vec2 fall{0.0, -0.3};
   for (int frame = 0; frame < 20; ++frame)
   {
-    for (Aabb& box : boxes)
-    {
-      box = {box.lo + fall, box.hi + fall};
-    }
+    move_all(boxes, fall);
     expect_same_pairs(kept, boxes);
   }
   EXPECT_GE(kept.paired_exactly(), 19u) << "enlarged boxes left at once must not be made again at once";
@@ -168,10 +168,7 @@ TEST(FatBoxPairs, SinkingBoxesWhoseEnlargedOnesPairManyMoreTryAgainLater)
   const Vec2 sink{0.0, -0.03};  // m a frame
   for (int frame = 0; frame < 100; ++frame)
   {
-    for (Aabb& box : boxes)
-    {
-      box = {box.lo + sink, box.hi + sink};
-    }
+    move_all(boxes, sink);
     expect_same_pairs(kept, boxes);
   }
   EXPECT_GT(kept.paired_exactly(), 10u) << "enlarged boxes that pair many more must wait between tries";

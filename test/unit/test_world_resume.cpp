@@ -13,55 +13,12 @@
 #include "collision2d/scene.h"
 #include "collision2d/scenes/standard_scenes.h"
 #include "collision2d/world.h"
+#include "world_test_support.h"
 
 namespace collision2d
 {
 namespace
 {
-/// Every bit of every body's motion, sleep flag and contact impulse.
-std::uint64_t state_hash(const World& world)
-{
-  std::uint64_t h = 14695981039346656037ULL;
-  auto add = [&h](double value) {
-    unsigned char bytes[sizeof value];
-    std::memcpy(bytes, &value, sizeof value);
-    for (unsigned char byte : bytes)
-      h = (h ^ byte) * 1099511628211ULL;
-  };
-  for (BodyId id : world.body_ids())
-  {
-    const Body& b = world.body(id);
-    add(b.position().x);
-    add(b.position().y);
-    add(b.theta());
-    add(b.velocity().x);
-    add(b.velocity().y);
-    add(b.omega());
-    add(world.is_sleeping(id) ? 1.0 : 0.0);
-  }
-  for (const WorldContact& c : world.contacts())
-  {
-    add(c.impulse.normal);
-    add(c.impulse.tangent);
-  }
-  add(world.time());
-  return h;
-}
-
-/// What a snapshot keeps, and a world rebuilt from it.
-World rebuilt(const World& world)
-{
-  const Scene scene = to_scene(world);
-  World copy(scene.settings);
-  const std::vector<BodyId> ids = world.body_ids();
-  for (std::size_t i = 0; i < ids.size(); ++i)
-    copy.add_body(ids[i], scene.bodies[i].body, scene.bodies[i].material);
-  copy.set_next_id(world.next_id());
-  copy.set_clock(world.time(), world.frame_count());
-  copy.set_step_state(world.step_state());
-  return copy;
-}
-
 struct ResumeCase
 {
   const char* name;
@@ -84,13 +41,13 @@ TEST_P(WorldResume, RebuiltWorldStepsOnBitForBit)
   original.step(30);
   original.remove_body(original.body_ids().back());
   original.step(30);
-  World resumed = rebuilt(original);
-  ASSERT_EQ(state_hash(resumed), state_hash(original)) << "the rebuild itself differs";
+  World resumed = test::rebuilt(original);
+  ASSERT_EQ(test::state_hash(resumed), test::state_hash(original)) << "the rebuild itself differs";
   for (int frame = 0; frame < 60; ++frame)
   {
     original.step();
     resumed.step();
-    ASSERT_EQ(state_hash(resumed), state_hash(original)) << "frame " << frame << " after the restore";
+    ASSERT_EQ(test::state_hash(resumed), test::state_hash(original)) << "frame " << frame << " after the restore";
   }
   EXPECT_EQ(resumed.frame_count(), original.frame_count());
   const BodyId added = resumed.add_body(Body(1.0, 0.5, Vec2{0.0, 50.0}, Vec2{0.0, 0.0}));
@@ -147,7 +104,7 @@ TEST(WorldResume, ContactsInAnyOrderResumeBitForBitOnSeveralWorkers)
   {
     original.step();
     resumed.step();
-    ASSERT_EQ(state_hash(resumed), state_hash(original)) << "frame " << frame << " after the restore";
+    ASSERT_EQ(test::state_hash(resumed), test::state_hash(original)) << "frame " << frame << " after the restore";
   }
 }
 
@@ -162,14 +119,14 @@ TEST(WorldResume, WithoutTheStepStateTheRunDiffers)
   cold.set_clock(original.time(), original.frame_count());
   original.step(5);
   cold.step(5);
-  EXPECT_NE(state_hash(cold), state_hash(original));
+  EXPECT_NE(test::state_hash(cold), test::state_hash(original));
 }
 
 TEST(WorldResume, BadStepStateIsRefusedNamingTheEntryAndChangesNothing)
 {
   World world = make_world(scenes::pyramid(4));
   world.step(10);
-  const std::uint64_t before = state_hash(world);
+  const std::uint64_t before = test::state_hash(world);
   StepState state = world.step_state();
   state.contacts.at(0).b = 999;
   try
@@ -199,11 +156,11 @@ TEST(WorldResume, BadStepStateIsRefusedNamingTheEntryAndChangesNothing)
     EXPECT_NE(std::string(e.what()).find("body " + std::to_string(ground)), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("not dynamic"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(state_hash(world), before);
+  EXPECT_EQ(test::state_hash(world), before);
   world.step();
   World twin = make_world(scenes::pyramid(4));
   twin.step(11);
-  EXPECT_EQ(state_hash(world), state_hash(twin));
+  EXPECT_EQ(test::state_hash(world), test::state_hash(twin));
 }
 
 TEST(WorldResume, ACopyMidRunStepsOnBitForBitWithoutItsScratch)
@@ -221,8 +178,8 @@ TEST(WorldResume, ACopyMidRunStepsOnBitForBitWithoutItsScratch)
     world.step(30);
     copy.step(30);
     assigned.step(30);
-    EXPECT_EQ(state_hash(copy), state_hash(world)) << scene.name;
-    EXPECT_EQ(state_hash(assigned), state_hash(world)) << scene.name;
+    EXPECT_EQ(test::state_hash(copy), test::state_hash(world)) << scene.name;
+    EXPECT_EQ(test::state_hash(assigned), test::state_hash(world)) << scene.name;
   }
 }
 

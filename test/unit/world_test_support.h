@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <vector>
 
+#include "collision2d/scene.h"
 #include "collision2d/world.h"
 
 namespace collision2d
@@ -100,6 +102,54 @@ inline bool same_contacts(const std::vector<WorldContact>& x, const std::vector<
     }
   }
   return true;
+}
+
+/// Every bit of every body's motion, sleep flag and contact impulse, and the clock.
+inline std::uint64_t state_hash(const World& world)
+{
+  std::uint64_t h = 14695981039346656037ULL;
+  auto add = [&h](double value) {
+    unsigned char bytes[sizeof value];
+    std::memcpy(bytes, &value, sizeof value);
+    for (unsigned char byte : bytes)
+    {
+      h = (h ^ byte) * 1099511628211ULL;
+    }
+  };
+  for (BodyId id : world.body_ids())
+  {
+    const Body& b = world.body(id);
+    add(b.position().x);
+    add(b.position().y);
+    add(b.theta());
+    add(b.velocity().x);
+    add(b.velocity().y);
+    add(b.omega());
+    add(world.is_sleeping(id) ? 1.0 : 0.0);
+  }
+  for (const WorldContact& c : world.contacts())
+  {
+    add(c.impulse.normal);
+    add(c.impulse.tangent);
+  }
+  add(world.time());
+  return h;
+}
+
+/// What a snapshot keeps (scene, ids, clock, step state), and a world rebuilt from it.
+inline World rebuilt(const World& world)
+{
+  const Scene scene = to_scene(world);
+  World copy(scene.settings);
+  const std::vector<BodyId> ids = world.body_ids();
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    copy.add_body(ids[i], scene.bodies[i].body, scene.bodies[i].material);
+  }
+  copy.set_next_id(world.next_id());
+  copy.set_clock(world.time(), world.frame_count());
+  copy.set_step_state(world.step_state());
+  return copy;
 }
 
 }  // namespace test

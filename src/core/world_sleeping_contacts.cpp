@@ -213,9 +213,11 @@ void WorldImpl::sort_out_sleeping()
   std::stable_sort(contacts_.begin(), contacts_.end(), pair_order);
   sleeping_contacts_.clear();
   island_label_.assign(bodies_.size(), 0);
-  // A contact stays in the step when one of its bodies moves.
-  const auto moves = [this](const WorldContact& c) { return is_mover(c.contact.a) || is_mover(c.contact.b); };
-  const auto aside = std::stable_partition(contacts_.begin(), contacts_.end(), moves);
+  // Aside go the contacts with a sleeping body, as put_contacts_aside sends
+  // them. The rest stay in the step's list even when neither body moves (two
+  // bodies made static): the next frame drops those, as in the world saved.
+  const auto awake = [this](const WorldContact& c) { return !asleep_[c.contact.a] && !asleep_[c.contact.b]; };
+  const auto aside = std::stable_partition(contacts_.begin(), contacts_.end(), awake);
   sleeping_contacts_.assign(aside, contacts_.end());
   contacts_.erase(aside, contacts_.end());
   // Islands: the sleeping bodies linked by the contacts kept aside.

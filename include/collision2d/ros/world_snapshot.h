@@ -3,7 +3,9 @@
 //
 // A snapshot file is a scene file (scene_to_yaml, exactly as save_scene_file
 // writes it) followed by a second YAML document with what a scene does not
-// hold: the frame count, the sim time, the body ids and the next id.
+// hold: the frame count, the sim time, the body ids and the next id, and the
+// step state (step_state_yaml.h: the contacts with their impulses, their
+// substep, and sleep).
 //
 //   name: "demo"
 //   settings: {...}
@@ -14,15 +16,16 @@
 //   sim_time: 2.0000000000000004
 //   ids: [0, 1, 3]
 //   next_id: 5
+//   contact_substep: ... (and asleep, rest_time, contacts: the step state)
 //
 // parse_scene_yaml (and so load_scene_file and LoadScene) reads only the first
 // document, so a snapshot still loads as a plain scene; a plain scene file
 // loads as a snapshot at frame 0 with ids 0..n-1.
 //
-// Not kept: the warm-starting cache, sleep timers and the last substep's
-// contacts, so the first frame after a restore starts cold (as after
-// SetWorld); bodies, materials, settings, ids and the clock are exact
-// (doubles are written with max_digits10).
+// Doubles are written with max_digits10, so a restored world steps on bit for
+// bit like the saved one. An older file without the step state restores
+// bodies, ids and clock exactly but starts its first frame cold (as after
+// SetWorld).
 #pragma once
 
 #include <cstdint>

@@ -111,7 +111,7 @@ void WorldService::load(const std::string& name)
   {
     scene.name = name;
   }
-  check_bodies(scene);
+  check_bodies(scene, false);
   World world;
   try
   {
@@ -129,13 +129,17 @@ void WorldService::load(const std::string& name)
                  world_.body_count(), settings_summary(world_.settings()).c_str());
 }
 
-void WorldService::check_bodies(const Scene& scene) const
+void WorldService::check_bodies(const Scene& scene, bool saved_world) const
 {
   const std::string where = "scene '" + scene.name + "'";
   if (scene.bodies.size() > options_.max_bodies)
   {
     reject(where, std::to_string(scene.bodies.size()) + " bodies, more than the limit of " +
                       std::to_string(options_.max_bodies) + " (parameter ~max_bodies)");
+  }
+  if (saved_world)
+  {
+    return;
   }
   std::vector<Vec2> centres;
   std::vector<std::string> labels;

@@ -61,7 +61,7 @@ void WorldService::load_snapshot(const std::string& path)
   {
     reject("snapshot", e.what());
   }
-  check_bodies(snapshot.scene);
+  check_bodies(snapshot.scene, snapshot.saved_world);
   World world;
   try
   {

@@ -217,6 +217,7 @@ WorldSnapshot take_snapshot(const World& world, const std::string& scene_name, c
   // Ids of removed bodies stay unused after a restore too.
   snapshot.next_id = world.next_id();
   snapshot.step = world.step_state();
+  snapshot.saved_world = true;
   return snapshot;
 }
 
@@ -269,6 +270,7 @@ WorldSnapshot parse_snapshot_yaml(const std::string& text, const std::string& so
     return snapshot;
   }
   read_clock(documents[1], source_name, snapshot);
+  snapshot.saved_world = true;
   return snapshot;
 }
 

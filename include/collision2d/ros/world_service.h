@@ -115,8 +115,10 @@ private:
     NewWorld,  ///< replaced (load, set, restore): also the new reset point; autosaves
   };
 
-  /// Checks a world about to replace the current one.
-  void check_bodies(const Scene& scene) const;
+  /// Checks a world about to replace the current one: the body limit, and
+  /// for a scene that no two centres coincide. A saved world may hold such
+  /// bodies (stepping can bring them there, and the world steps them on).
+  void check_bodies(const Scene& scene, bool saved_world) const;
   /// Installs `world` (the caller holds the lock and has set origin_), tells
   /// the listener and autosaves.
   void commit(World&& world, const std::string& scene, Change change);

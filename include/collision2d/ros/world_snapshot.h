@@ -53,6 +53,9 @@ struct WorldSnapshot
   BodyId next_id = 0;        ///< the id the world gives its next body
   WorldClock clock;
   StepState step;            ///< warm-start contacts and sleep; empty in older files
+  /// Taken from a world or read from a snapshot document (not a plain scene):
+  /// a state the world may have stepped to.
+  bool saved_world = false;
 };
 
 /// The world's bodies, ids and settings; `clock` is the caller's (the world

@@ -93,7 +93,6 @@ void WorldService::set_world(const SetWorld::Request& request, SetWorld::Respons
     }
     World world = make_world(scene);
     active_ = ActiveEffects{};
-    origin_ = WorldClock{};
     commit(std::move(world), "", Change::NewWorld);
     summarize_world(*committed(), request.return_state, response);
     response.success = true;
@@ -159,7 +158,6 @@ void WorldService::reset(std_srvs::Trigger::Response& response)
 {
   Lock lock(mutex_);
   active_ = ActiveEffects{};
-  origin_ = reset_origin_;
   held_.clear();
   commit(World(reset_world_), reset_scene_, Change::Edit);
   response.success = true;
@@ -222,7 +220,6 @@ void WorldService::after_change(Change change)
   {
     reset_world_ = world_;
     reset_scene_ = scene_;
-    reset_origin_ = origin_;
     held_.clear();
   }
   auto state = std::make_shared<const WorldState>(state_locked());
@@ -289,7 +286,7 @@ WorldState WorldService::state_locked() const
 
 WorldClock WorldService::clock_locked() const
 {
-  return WorldClock{origin_.frames + world_.frame_count(), origin_.time + world_.time()};
+  return WorldClock{world_.frame_count(), world_.time()};
 }
 
 }  // namespace ros_interface

@@ -123,7 +123,6 @@ void WorldService::load(const std::string& name)
   }
   Lock lock(mutex_);
   active_ = ActiveEffects{};
-  origin_ = WorldClock{};
   commit(std::move(world), scene.name, Change::NewWorld);
   ROS_INFO_NAMED(kWorldLogger, "loaded scene '%s': %zu bodies; %s", printable_text(scene.name).c_str(),
                  world_.body_count(), settings_summary(world_.settings()).c_str());

@@ -73,7 +73,6 @@ void WorldService::load_snapshot(const std::string& path)
   }
   Lock lock(mutex_);
   active_ = ActiveEffects{};
-  origin_ = snapshot.clock;
   commit(std::move(world), snapshot.scene.name, Change::NewWorld);
   ROS_INFO_NAMED(kWorldLogger, "restored frame %llu of scene '%s' with %zu bodies from %s",
                  static_cast<unsigned long long>(snapshot.clock.frames), printable_text(snapshot.scene.name).c_str(),

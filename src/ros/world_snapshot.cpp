@@ -229,6 +229,9 @@ World restore_world(const WorldSnapshot& snapshot)
     world.add_body(snapshot.ids[i], snapshot.scene.bodies[i].body, snapshot.scene.bodies[i].material);
   }
   world.set_next_id(snapshot.next_id);
+  // The world counts on from the saved clock, so its time after n more
+  // frames is the same sum of frame lengths as the saved world's.
+  world.set_clock(snapshot.clock.time, snapshot.clock.frames);
   // An older snapshot (or a plain scene) has no step state: it starts cold.
   if (!snapshot.step.rest_time.empty() || snapshot.step.contact_substep > 0.0)
   {

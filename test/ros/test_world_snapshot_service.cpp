@@ -137,11 +137,13 @@ TEST_F(WorldServiceSnapshotTest, ALoadedSnapshotStepsOnLikeTheSavedWorld)
   ASSERT_TRUE(loaded.success) << loaded.message;
   const WorldState resumed = step(service, 30);
   EXPECT_EQ(resumed.frame_count, uninterrupted.frame_count);
+  EXPECT_EQ(resumed.sim_time, uninterrupted.sim_time) << "the clock too runs on as if never saved";
   ASSERT_EQ(resumed.bodies.size(), uninterrupted.bodies.size());
   for (std::size_t i = 0; i < resumed.bodies.size(); ++i)
   {
     EXPECT_TRUE(resumed.bodies[i] == uninterrupted.bodies[i]) << "body " << resumed.bodies[i].id << " differs";
   }
+  EXPECT_TRUE(resumed.contacts == uninterrupted.contacts);
 }
 
 TEST_F(WorldServiceSnapshotTest, AWorldWhoseCentresCameToCoincideLoadsAsSaved)

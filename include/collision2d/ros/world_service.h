@@ -119,7 +119,7 @@ private:
   /// for a scene that no two centres coincide. A saved world may hold such
   /// bodies (stepping can bring them there, and the world steps them on).
   void check_bodies(const Scene& scene, bool saved_world) const;
-  /// Installs `world` (the caller holds the lock and has set origin_), tells
+  /// Installs `world` (the caller holds the lock), tells
   /// the listener and autosaves.
   void commit(World&& world, const std::string& scene, Change change);
   /// What every change does after it: publish and keep the committed state, autosave.
@@ -129,7 +129,8 @@ private:
   /// The state last committed; shared, so readers copy it outside any lock.
   std::shared_ptr<const WorldState> committed() const;
 
-  /// Frames and time since the scene was loaded, across restores.
+  /// Frames and time since the scene was loaded, across restores: the
+  /// world's own clock, which a restore sets to the saved one.
   WorldClock clock_locked() const;
   std::string snapshot_path_or_default(const std::string& path) const;
   std::uint64_t save_snapshot_locked(const std::string& path) const;
@@ -142,12 +143,8 @@ private:
   World world_;
   std::string scene_;
   ActiveEffects active_;
-  /// The clock of the saved world world_ was restored from (zero for a
-  /// loaded scene); world_ counts its own frames and time on top of it.
-  WorldClock origin_;
   World reset_world_;
   std::string reset_scene_;
-  WorldClock reset_origin_;
   std::uint64_t last_autosave_frame_ = 0;
   /// Own type of each body held as kinematic by set_body_state.
   std::map<BodyId, BodyType> held_;

@@ -61,8 +61,9 @@ struct WorldSnapshot
 /// The world's bodies, ids and settings; `clock` is the caller's (the world
 /// node counts frames across restores).
 WorldSnapshot take_snapshot(const World& world, const std::string& scene_name, const WorldClock& clock);
-/// A world holding the snapshot's bodies under their ids, whose next body
-/// gets snapshot.next_id. Throws std::invalid_argument for a bad body or setting.
+/// A world holding the snapshot's bodies under their ids, at the snapshot's
+/// clock, whose next body gets snapshot.next_id. Throws std::invalid_argument
+/// for a bad body or setting.
 World restore_world(const WorldSnapshot& snapshot);
 
 std::string snapshot_to_yaml(const WorldSnapshot& snapshot);

@@ -94,7 +94,7 @@ std::string WorldService::snapshot_path_or_default(const std::string& path) cons
 
 std::uint64_t WorldService::save_snapshot_locked(const std::string& path) const
 {
-  WorldSnapshot snapshot = take_snapshot(world_, scene_, clock_locked());
+  WorldSnapshot snapshot = take_snapshot(world_, scene_);
   // A hold is the dragging client's, not the world's: a body held now is
   // saved as what it is when released, as no restore can release it.
   for (std::size_t i = 0; i < snapshot.ids.size(); ++i)

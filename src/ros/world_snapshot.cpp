@@ -208,12 +208,12 @@ void write_atomically(const std::string& text, const std::string& path)
 
 }  // namespace
 
-WorldSnapshot take_snapshot(const World& world, const std::string& scene_name, const WorldClock& clock)
+WorldSnapshot take_snapshot(const World& world, const std::string& scene_name)
 {
   WorldSnapshot snapshot;
   snapshot.scene = to_scene(world, scene_name);
   snapshot.ids = world.body_ids();
-  snapshot.clock = clock;
+  snapshot.clock = WorldClock{world.frame_count(), world.time()};
   // Ids of removed bodies stay unused after a restore too.
   snapshot.next_id = world.next_id();
   snapshot.step = world.step_state();

@@ -65,11 +65,18 @@ std::string scene_text(const World& world) { return scenes::scene_to_yaml(to_sce
 
 BodyId next_id_of(World world) { return world.add_body(Body(1.0, 0.1, Vec2{50.0, 50.0}, Vec2{})); }
 
+/// The snapshot of `world` with its clock set to `clock`.
+WorldSnapshot snapshot_at(World world, const std::string& scene_name, const WorldClock& clock)
+{
+  world.set_clock(clock.time, clock.frames);
+  return take_snapshot(world, scene_name);
+}
+
 TEST(WorldSnapshotFile, RoundTripKeepsBodiesIdsSettingsAndClock)
 {
   const World world = busy_world();
   const WorldClock clock{1234567890123ULL, 0.1 + 0.2};  // a time with no short decimal form
-  const WorldSnapshot saved = take_snapshot(world, "busy", clock);
+  const WorldSnapshot saved = snapshot_at(world, "busy", clock);
   const WorldSnapshot read = parse_snapshot_yaml(snapshot_to_yaml(saved));
   EXPECT_EQ(read.clock.frames, clock.frames);
   EXPECT_EQ(read.clock.time, clock.time);
@@ -78,6 +85,8 @@ TEST(WorldSnapshotFile, RoundTripKeepsBodiesIdsSettingsAndClock)
   EXPECT_EQ(read.next_id, 5u);
 
   World restored = restore_world(read);
+  EXPECT_EQ(restored.frame_count(), clock.frames);
+  EXPECT_EQ(restored.time(), clock.time);
   EXPECT_EQ(restored.body_ids(), world.body_ids());
   EXPECT_EQ(scene_text(restored), scene_text(world));
   EXPECT_EQ(next_id_of(restored), next_id_of(world)) << "a removed body's id would be reused";
@@ -87,7 +96,7 @@ TEST(WorldSnapshotFile, RoundTripKeepsBodiesIdsSettingsAndClock)
   World original = world;
   original.step(60);
   ASSERT_FALSE(original.contacts().empty());
-  restored = restore_world(parse_snapshot_yaml(snapshot_to_yaml(take_snapshot(original, "busy", clock))));
+  restored = restore_world(parse_snapshot_yaml(snapshot_to_yaml(snapshot_at(original, "busy", clock))));
   for (int frame = 0; frame < 20; ++frame)
   {
     original.step();
@@ -98,7 +107,7 @@ TEST(WorldSnapshotFile, RoundTripKeepsBodiesIdsSettingsAndClock)
 
 TEST(WorldSnapshotFile, AFileWithoutStepStateStillLoadsAndStartsCold)
 {
-  const WorldSnapshot saved = take_snapshot(busy_world(), "busy", WorldClock{3, 0.3});
+  const WorldSnapshot saved = snapshot_at(busy_world(), "busy", WorldClock{3, 0.3});
   std::string text = snapshot_to_yaml(saved);
   text = text.substr(0, text.find("# Warm starting and sleep"));
   const WorldSnapshot read = parse_snapshot_yaml(text);
@@ -112,7 +121,7 @@ TEST(WorldSnapshotFile, ASnapshotNamingRetiredSettingsLoadsWithWarningsAndStepsO
 {
   World original = busy_world();
   original.step(60);
-  const std::string text = snapshot_to_yaml(take_snapshot(original, "busy", WorldClock{67, 1.1}));
+  const std::string text = snapshot_to_yaml(snapshot_at(original, "busy", WorldClock{67, 1.1}));
   // As an earlier version wrote it: the retired warm-start knobs among the settings.
   std::string old_text = text;
   const std::size_t settings = old_text.find("\nsettings:\n");
@@ -128,7 +137,7 @@ TEST(WorldSnapshotFile, ASnapshotNamingRetiredSettingsLoadsWithWarningsAndStepsO
   EXPECT_EQ(warnings[1].rfind("old.snapshot.yaml: settings.warm_start_every_substep is retired and ignored", 0), 0u)
       << warnings[1];
   World restored = restore_world(read);
-  EXPECT_EQ(snapshot_to_yaml(take_snapshot(restored, "busy", read.clock)), text);
+  EXPECT_EQ(snapshot_to_yaml(take_snapshot(restored, "busy")), text);
   for (int frame = 0; frame < 20; ++frame)
   {
     original.step();
@@ -142,7 +151,7 @@ TEST(WorldSnapshotFile, IsStillAPlainSceneFileAndAPlainSceneIsASnapshot)
   TempFolder folder;
   const World world = busy_world();
   const std::string snapshot_path = folder.file("world.snapshot.yaml");
-  save_snapshot_file(take_snapshot(world, "busy", WorldClock{42, 0.7}), snapshot_path);
+  save_snapshot_file(snapshot_at(world, "busy", WorldClock{42, 0.7}), snapshot_path);
   // The scene loader reads the first document and ignores the clock.
   EXPECT_EQ(scenes::scene_to_yaml(scenes::load_scene_file(snapshot_path)),
             scenes::scene_to_yaml(to_scene(world, "busy")));
@@ -160,7 +169,7 @@ TEST(WorldSnapshotFile, IsStillAPlainSceneFileAndAPlainSceneIsASnapshot)
 /// is `clock` ("" if it is accepted).
 std::string rejection(const std::string& clock)
 {
-  const std::string scene = snapshot_to_yaml(take_snapshot(busy_world(), "busy", WorldClock{}));
+  const std::string scene = snapshot_to_yaml(snapshot_at(busy_world(), "busy", WorldClock{}));
   const std::string text = scene.substr(0, scene.find("---\n")) + "---\n" + clock;
   try
   {
@@ -215,8 +224,8 @@ TEST(WorldSnapshotFile, SavingCreatesFoldersReplacesWholeAndLeavesNoTemporaries)
 {
   TempFolder folder;
   const std::string path = folder.file("deep/er/world.snapshot.yaml");
-  save_snapshot_file(take_snapshot(busy_world(), "first", WorldClock{1, 0.1}), path);
-  save_snapshot_file(take_snapshot(World(), "second", WorldClock{2, 0.2}), path);
+  save_snapshot_file(snapshot_at(busy_world(), "first", WorldClock{1, 0.1}), path);
+  save_snapshot_file(snapshot_at(World(), "second", WorldClock{2, 0.2}), path);
   const WorldSnapshot read = load_snapshot_file(path);
   EXPECT_EQ(read.scene.name, "second");
   EXPECT_TRUE(read.scene.bodies.empty());
@@ -227,7 +236,7 @@ TEST(WorldSnapshotFile, SavingCreatesFoldersReplacesWholeAndLeavesNoTemporaries)
   fs::create_directories(fs::path(blocked) / "inside");
   try
   {
-    save_snapshot_file(take_snapshot(World(), "x", WorldClock{}), blocked);
+    save_snapshot_file(snapshot_at(World(), "x", WorldClock{}), blocked);
     FAIL() << "saved over a folder";
   }
   catch (const std::runtime_error& e)
@@ -253,8 +262,8 @@ TEST(WorldSnapshotFile, AWriterKilledMidSaveNeverLeavesATornFile)
   {
     big.add_body(Body(1.0, 0.4, Vec2{1.0 * i, 0.0}, Vec2{0.1 * i, 0.0}));
   }
-  const std::vector<WorldSnapshot> versions = {take_snapshot(big, "even", WorldClock{2, 0.2}),
-                                               take_snapshot(big, "odd", WorldClock{3, 0.3})};
+  const std::vector<WorldSnapshot> versions = {snapshot_at(big, "even", WorldClock{2, 0.2}),
+                                               snapshot_at(big, "odd", WorldClock{3, 0.3})};
   for (int kill = 0; kill < kKills; ++kill)
   {
     const pid_t child = ::fork();

@@ -58,9 +58,8 @@ struct WorldSnapshot
   bool saved_world = false;
 };
 
-/// The world's bodies, ids and settings; `clock` is the caller's (the world
-/// node counts frames across restores).
-WorldSnapshot take_snapshot(const World& world, const std::string& scene_name, const WorldClock& clock);
+/// The world's bodies, ids, settings, clock and step state.
+WorldSnapshot take_snapshot(const World& world, const std::string& scene_name);
 /// A world holding the snapshot's bodies under their ids, at the snapshot's
 /// clock, whose next body gets snapshot.next_id. Throws std::invalid_argument
 /// for a bad body or setting.

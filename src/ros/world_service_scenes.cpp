@@ -111,7 +111,7 @@ void WorldService::load(const std::string& name)
   {
     scene.name = name;
   }
-  check_bodies(scene, false);
+  check_bodies(scene, /*saved_world=*/false);
   World world;
   try
   {

@@ -5,6 +5,7 @@
 
 #include "collision2d/collide.h"
 #include "collision2d/touch_tolerance.h"
+#include "collide_features.h"
 #include "scratch_buffer.h"
 #include "world_impl.h"
 
@@ -236,9 +237,13 @@ bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Man
   const Body& b = bodies_[j];
   if (coincident_disks(a, b))
   {
+    // As collide() would at distance 0: the whole sum of radii deep, the point
+    // midway through the overlap.
+    const double depth = a.radius() + b.radius();
     m.normal = kCoincidentNormal;
-    m.count = 1;
-    m.points[0] = ManifoldPoint{a.position(), a.radius() + b.radius(), 0};
+    m.count = 0;
+    add_point(m, a.position() + m.normal * (a.radius() - 0.5 * depth), depth,
+              pack_feature(FeatureKind::DiskDisk, false, 0, 0, 0));
     return true;
   }
   return posed_now ? collide_posed(posed(i), posed(j), m, tolerance) : collide(a, b, m, tolerance);

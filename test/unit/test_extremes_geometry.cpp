@@ -299,13 +299,36 @@ TEST(ExtremesGeometry, CoincidentCentresGiveAClearErrorNotNaN)
   EXPECT_NEAR(must_collide(b1, d3).points[0].penetration, 0.75, kGeometryTol);
   check_solve({b1, b2}, "coincident boxes");
   check_solve({b1, d3}, "disk at a box centre");
-  // The world separates coincident disks along a fixed direction instead.
-  World world(WorldSettings{{0.0, 0.0}});
-  world.add_body(d1);
-  world.add_body(d2);
-  world.step(30);
-  ASSERT_TRUE(test::all_finite(world));
-  EXPECT_GT(length(world.body(1).position() - world.body(0).position()), 0.0);
+}
+
+TEST(ExtremesGeometry, TheWorldPushesCoincidentDisksApart)
+{
+  // The world separates coincident disks along a fixed direction instead of
+  // throwing: at rest, without gravity, they must end touching, their centre
+  // of mass where it was.
+  constexpr double kRadiusA = 0.5;  // m
+  constexpr double kRadiusB = 0.3;  // m
+  constexpr double kMassA = 1.0;    // kg
+  constexpr double kMassB = 2.0;    // kg
+  const Vec2 centre{0.25, -1.0};
+  for (const bool soft_step : {false, true})
+  {
+    WorldSettings settings;
+    settings.gravity = {0.0, 0.0};
+    settings.soft_step = soft_step;
+    World world(settings);
+    const BodyId a = world.add_body(Body(kMassA, kRadiusA, centre, {}));
+    const BodyId b = world.add_body(Body(kMassB, kRadiusB, centre, {}));
+    world.step(60);
+    ASSERT_TRUE(test::all_finite(world));
+    const Vec2 pa = world.body(a).position();
+    const Vec2 pb = world.body(b).position();
+    const double gap = length(pb - pa) - (kRadiusA + kRadiusB);
+    EXPECT_GT(gap, -2.0 * settings.slop) << (soft_step ? "soft step" : "Fx2D") << ": still overlapping by " << -gap << " m";
+    const Vec2 mass_centre = (pa * kMassA + pb * kMassB) / (kMassA + kMassB);
+    EXPECT_NEAR(mass_centre.x, centre.x, 1e-9);
+    EXPECT_NEAR(mass_centre.y, centre.y, 1e-9);
+  }
 }
 
 }  // namespace

@@ -205,6 +205,8 @@ struct WorldImpl : WorldState
   bool mark_sweep_candidates(double h);
   bool sweep(double h, StepReport& report, bool stored = true);
   bool clamped(std::size_t i) const;
+  /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
+  bool has_frame_contact(std::size_t i, std::size_t j) const;
 
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;

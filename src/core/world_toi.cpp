@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "collision2d/time_of_impact.h"
 #include "world_impl.h"
@@ -202,8 +203,11 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
       continue;
     }
     const double t = time_of_impact(bodies_[i], substep_displacement(i, h), bodies_[j], substep_displacement(j, h));
-    // t = 0: already touching or overlapping, which detection handles.
-    if (t <= 0.0 || t >= 1.0)
+    // t = 0: already touching or overlapping, which detection handles. A
+    // soft-step pair with a contact this frame is the solver's: it holds their
+    // approach to the gap, turning included, where this translation-only
+    // sweep would stop a turning body short of a touch that never comes.
+    if (t <= 0.0 || t >= 1.0 || (!stored && has_frame_contact(i, j)))
     {
       continue;
     }
@@ -222,6 +226,17 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     clamping_ = clamping_ || stopped;
   }
   return true;
+}
+
+bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
+{
+  const std::uint32_t a = static_cast<std::uint32_t>(std::min(i, j));
+  const std::uint32_t b = static_cast<std::uint32_t>(std::max(i, j));
+  const auto before = [](const ContactPoint& p, std::pair<std::uint32_t, std::uint32_t> key) {
+    return p.a < key.first || (p.a == key.first && p.b < key.second);
+  };
+  const auto found = std::lower_bound(points_.begin(), points_.end(), std::make_pair(a, b), before);
+  return found != points_.end() && found->a == a && found->b == b;
 }
 
 bool WorldImpl::clamped(std::size_t i) const

@@ -202,12 +202,16 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     {
       continue;
     }
-    const double t = time_of_impact(bodies_[i], substep_displacement(i, h), bodies_[j], substep_displacement(j, h));
-    // t = 0: already touching or overlapping, which detection handles. A
-    // soft-step pair with a contact this frame is the solver's: it holds their
-    // approach to the gap, turning included, where this translation-only
+    // A soft-step pair with a contact this frame is the solver's: it holds
+    // their approach to the gap, turning included, where this translation-only
     // sweep would stop a turning body short of a touch that never comes.
-    if (t <= 0.0 || t >= 1.0 || (!stored && has_frame_contact(i, j)))
+    if (!stored && has_frame_contact(i, j))
+    {
+      continue;
+    }
+    const double t = time_of_impact(bodies_[i], substep_displacement(i, h), bodies_[j], substep_displacement(j, h));
+    // t = 0: already touching or overlapping, which detection handles.
+    if (t <= 0.0 || t >= 1.0)
     {
       continue;
     }

@@ -264,7 +264,10 @@ std::pair<std::string, bool> draw_request(Random& random, Services& s)
         const std::array<const char*, 4> names = {"resting_box", "newtons_cradle", "no_such_scene", "pyramid"};
         load.scene = names[static_cast<std::size_t>(pick(random, 4))];
         const bool accepted = s.send(&WorldService::load_scene, load);
-        s.held = accepted ? std::set<std::uint32_t>() : s.held;
+        if (accepted)
+        {
+          s.held.clear();
+        }
         return {"load_scene", accepted};
       }
       SetWorld::Request set = draw_world(random);

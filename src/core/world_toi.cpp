@@ -5,7 +5,10 @@
 // as a contact (touch tolerance) and the velocity solve takes the impact.
 // The sweep is translation-only with each body's current orientation, as
 // time_of_impact() defines it; the rest of a clamped body's substep move is
-// dropped, its velocity is not.
+// dropped, its velocity is not. A pair that already touches (or that the soft
+// step's solver holds) is swept again with each fast body shrunk to a small
+// disk at its centroid: a spin can carry an outline's far side through a thin
+// body the sweep saw touching, but never the centroid, which moves on a line.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -28,6 +31,10 @@ constexpr double kReachRoundOffMargin = 1.0 + 1e-9;
 /// small choosing the candidates costs more than it saves (docs/performance.md,
 /// the thirty-ninth profile note).
 constexpr std::size_t kMinBodiesToChooseSweepCandidates = 16;
+/// A centroid core's radius as a fraction of its body's inner radius: small
+/// enough that an outline stopped there overlaps its obstacle mostly on the
+/// centroid's side, so the push out goes back the way the body came.
+constexpr double kCoreFraction = 0.25;
 
 /// Distance from the centroid to the nearest face: the thinnest a body can be
 /// seen from any direction is twice this.
@@ -205,12 +212,14 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     // A soft-step pair with a contact this frame is the solver's: it holds
     // their approach to the gap, turning included, where this translation-only
     // sweep would stop a turning body short of a touch that never comes.
-    if (!stored && has_frame_contact(i, j))
+    const bool held = !stored && has_frame_contact(i, j);
+    double t = held ? 0.0 : time_of_impact(bodies_[i], substep_displacement(i, h), bodies_[j], substep_displacement(j, h));
+    // t = 0: already touching or overlapping, which detection (or the
+    // solver) handles, as long as no centroid passes into the other body.
+    if (t <= 0.0)
     {
-      continue;
+      t = core_time_of_impact(i, j, h);
     }
-    const double t = time_of_impact(bodies_[i], substep_displacement(i, h), bodies_[j], substep_displacement(j, h));
-    // t = 0: already touching or overlapping, which detection handles.
     if (t <= 0.0 || t >= 1.0)
     {
       continue;
@@ -241,6 +250,25 @@ bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
   };
   const auto found = std::lower_bound(points_.begin(), points_.end(), std::make_pair(a, b), before);
   return found != points_.end() && found->a == a && found->b == b;
+}
+
+double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, double h) const
+{
+  double earliest = 1.0;
+  for (const auto& [k, other] : {std::pair{i, j}, std::pair{j, i}})
+  {
+    if (!swept_[k] || bodies_[k].type() != BodyType::Dynamic)
+    {
+      continue;
+    }
+    const Body core(bodies_[k].mass(), kCoreFraction * inner_radius_[k], bodies_[k].position(), Vec2{0.0, 0.0});
+    const double t = time_of_impact(core, substep_displacement(k, h), bodies_[other], substep_displacement(other, h));
+    if (t > 0.0)  // a core already inside stays the detection's
+    {
+      earliest = std::min(earliest, t);
+    }
+  }
+  return earliest;
 }
 
 bool WorldImpl::clamped(std::size_t i) const

@@ -257,7 +257,9 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, double h) co
   double earliest = 1.0;
   for (const auto& [k, other] : {std::pair{i, j}, std::pair{j, i}})
   {
-    if (!swept_[k] || bodies_[k].type() != BodyType::Dynamic)
+    // A pose already overflowed is left to the step's finiteness check,
+    // which names the body (a Body cannot be made at it).
+    if (!swept_[k] || bodies_[k].type() != BodyType::Dynamic || !is_finite(bodies_[k].position()))
     {
       continue;
     }

@@ -207,9 +207,9 @@ struct WorldImpl : WorldState
   bool clamped(std::size_t i) const;
   /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
   bool has_frame_contact(std::size_t i, std::size_t j) const;
-  /// Earliest time of impact in (0, 1) of a swept dynamic body's centroid
-  /// core against the other body of pair (i, j), else 1.
-  double core_time_of_impact(std::size_t i, std::size_t j, double h) const;
+  /// Earliest time of impact in (0, 1) of a fast body's centroid core
+  /// against the other body of pair (i, j) moved by di and dj, else 1.
+  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
 
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;

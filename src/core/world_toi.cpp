@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <tuple>
 #include <utility>
 
 #include "collision2d/time_of_impact.h"
@@ -213,12 +214,14 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     // their approach to the gap, turning included, where this translation-only
     // sweep would stop a turning body short of a touch that never comes.
     const bool held = !stored && has_frame_contact(i, j);
-    double t = held ? 0.0 : time_of_impact(bodies_[i], substep_displacement(i, h), bodies_[j], substep_displacement(j, h));
+    const Vec2 di = substep_displacement(i, h);
+    const Vec2 dj = substep_displacement(j, h);
+    double t = held ? 0.0 : time_of_impact(bodies_[i], di, bodies_[j], dj);
     // t = 0: already touching or overlapping, which detection (or the
     // solver) handles, as long as no centroid passes into the other body.
     if (t <= 0.0)
     {
-      t = core_time_of_impact(i, j, h);
+      t = core_time_of_impact(i, j, di, dj, stored);
     }
     if (t <= 0.0 || t >= 1.0)
     {
@@ -252,19 +255,23 @@ bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
   return found != points_.end() && found->a == a && found->b == b;
 }
 
-double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, double h) const
+double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const
 {
+  // Only a body fast against the other (as Auto judges fast) can carry its
+  // centroid that far: resting pairs swept with time_of_impact On skip this.
+  const double relative_sq = length_sq(di - dj);
   double earliest = 1.0;
-  for (const auto& [k, other] : {std::pair{i, j}, std::pair{j, i}})
+  for (const auto& [k, other, dk, d_other] : {std::tuple{i, j, di, dj}, std::tuple{j, i, dj, di}})
   {
+    const double reach_sq = stored ? sweep_reach_sq(k) : swept_reach_sq_[k];
     // A pose already overflowed is left to the step's finiteness check,
     // which names the body (a Body cannot be made at it).
-    if (!swept_[k] || bodies_[k].type() != BodyType::Dynamic || !is_finite(bodies_[k].position()))
+    if (!swept_[k] || reach_sq < 0.0 || relative_sq <= reach_sq || !is_finite(bodies_[k].position()))
     {
       continue;
     }
     const Body core(bodies_[k].mass(), kCoreFraction * inner_radius_[k], bodies_[k].position(), Vec2{0.0, 0.0});
-    const double t = time_of_impact(core, substep_displacement(k, h), bodies_[other], substep_displacement(other, h));
+    const double t = time_of_impact(core, dk, bodies_[other], d_other);
     if (t > 0.0)  // a core already inside stays the detection's
     {
       earliest = std::min(earliest, t);

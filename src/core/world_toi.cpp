@@ -266,7 +266,7 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
     const double reach_sq = stored ? sweep_reach_sq(k) : swept_reach_sq_[k];
     // A pose already overflowed is left to the step's finiteness check,
     // which names the body (a Body cannot be made at it).
-    if (!swept_[k] || reach_sq < 0.0 || relative_sq <= reach_sq || !is_finite(bodies_[k].position()))
+    if (!swept_[k] || relative_sq <= reach_sq || !is_finite(bodies_[k].position()))
     {
       continue;
     }

@@ -33,7 +33,7 @@ constexpr double kPaddleWidth = 0.02;    // m
 constexpr double kStartGap = 0.5;        // m between the face and the disk
 constexpr double kRunSeconds = 1.0;      // s the disk stays on the face at the longest
 constexpr int kFrames = 60;
-/// Overlap allowed at any frame (m): round-off at positions of some 1e3 m.
+/// Overlap allowed at any frame (m): round-off at positions up to 1e4 m.
 constexpr double kGapTol = 1e-9;
 /// A gap at most this wide counts as touching (m).
 constexpr double kTouchGap = 1e-6;

@@ -185,6 +185,9 @@ struct WorldImpl : WorldState
   /// The squared substep move above which body i is swept in Auto (m^2);
   /// -1 for a body that is not awake and dynamic (never swept).
   double sweep_reach_sq(std::size_t i) const;
+  /// The squared substep move (m^2) beyond which body i counts as fast: the Fx2D
+  /// order's (stored) or the soft step's threshold for the frame.
+  double fast_reach_sq(std::size_t i, bool stored) const;
   /// Soft step: the frame's bound on a free body's speed for substeps of `h` (s).
   FreeSpeedBound free_speed_bound(double h) const;
   /// Soft step: whether body i, were no contact to touch it this frame,

@@ -96,6 +96,12 @@ double WorldImpl::sweep_reach_sq(std::size_t i) const
   return reach * reach;
 }
 
+double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
+{
+  // The soft step set its thresholds for the frame (reset_body_motion).
+  return stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
+}
+
 FreeSpeedBound WorldImpl::free_speed_bound(double h) const
 {
   // A body no contact touches gains at most one frame of gravity's speed;
@@ -150,7 +156,7 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
   for_each_body([&](std::size_t i) {
-    const double reach_sq = stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
+    const double reach_sq = fast_reach_sq(i, stored);
     const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
     const bool moving = d.x != 0.0 || d.y != 0.0;
     swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
@@ -263,7 +269,7 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
   double earliest = 1.0;
   for (const auto& [k, other, dk, d_other] : {std::tuple{i, j, di, dj}, std::tuple{j, i, dj, di}})
   {
-    const double reach_sq = stored ? sweep_reach_sq(k) : swept_reach_sq_[k];
+    const double reach_sq = fast_reach_sq(k, stored);
     // A pose already overflowed is left to the step's finiteness check,
     // which names the body (a Body cannot be made at it).
     if (!swept_[k] || relative_sq <= reach_sq || !is_finite(bodies_[k].position()))

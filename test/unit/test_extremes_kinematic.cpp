@@ -53,13 +53,19 @@ struct Outcome
   int touching_frames = 0;
 };
 
-Outcome run(const Push& push)
+/// A world without gravity at the default settings (the soft step).
+World weightless_world()
 {
   WorldSettings s;
   s.gravity = {0.0, 0.0};
-  World world(s);
+  return World(s);
+}
+
+Outcome run(const Push& push)
+{
+  World world = weightless_world();
   const Vec2 n{std::cos(push.turn), std::sin(push.turn)};
-  const Vec2 along{-n.y, n.x};
+  const Vec2 along = perp(n);
   // Tall enough that the disk, sliding along a turned face, stays on it.
   const double height = 2.0 * (1.0 + push.speed * std::abs(n.y) * kRunSeconds);
   Body paddle = scenes::make_box(1.0, kPaddleWidth, height, -(kStartGap + kDiskRadius + 0.5 * kPaddleWidth) * n, push.turn);
@@ -97,8 +103,9 @@ TEST(ExtremesKinematic, SoftStepPaddlePushesASmallDiskAtAnySpeed)
     {
       SCOPED_TRACE("paddle at " + std::to_string(speed) + " m/s, face turned " + std::to_string(turn) + " rad");
       const Outcome out = run(Push{speed, turn});
-      std::printf("paddle %g m/s, face turned %g rad: deepest %.3g m, touching %d frames, worst velocity error %.3g\n",
-                  speed, turn, out.deepest, out.touching_frames, out.worst_velocity);
+      std::printf("paddle %g m/s, face turned %g rad, touching %d frames:\n", speed, turn, out.touching_frames);
+      test::print_figure("deepest overlap behind the face (m)", out.deepest, kGapTol);
+      test::print_figure("worst |v - (v_paddle . n) n| / speed while touching", out.worst_velocity, kVelocityTol);
       EXPECT_GT(out.touching_frames, 0) << "the paddle never reached the disk";
       EXPECT_LE(out.deepest, kGapTol) << "the disk went behind the paddle's face";
       EXPECT_LE(out.worst_velocity, kVelocityTol) << "not the paddle's normal velocity";
@@ -121,9 +128,7 @@ struct Sweep
 
 Sweep sweep(double omega)
 {
-  WorldSettings s;
-  s.gravity = {0.0, 0.0};
-  World world(s);
+  World world = weightless_world();
   Body bar = scenes::make_box(1.0, kBarLength, kPaddleWidth, {0.0, 0.0}, kBarStartTurn);
   bar.set_type(BodyType::Kinematic);
   bar.set_omega(omega);
@@ -139,7 +144,7 @@ Sweep sweep(double omega)
     const Vec2 c = world.body(disk_id).position();
     const Vec2 along{std::cos(theta), std::sin(theta)};
     const double x = dot(c, along);
-    const double height = dot(c, Vec2{-along.y, along.x});  // above the middle plane, on the face's side
+    const double height = dot(c, perp(along));  // above the middle plane, on the face's side
     out.fastest = std::max(out.fastest, length(world.body(disk_id).velocity()));
     out.left = std::abs(x) > half + kDiskRadius;
     if (std::abs(x) <= half - kDiskRadius)
@@ -161,9 +166,10 @@ TEST(ExtremesKinematic, SoftStepTurningBarKeepsASmallDiskAhead)
     // tip at omega sqrt(2 x^2 - x0^2 + d^2) <= sqrt(2) omega |tip|.
     const double tip = std::hypot(0.5 * kBarLength, 0.5 * kPaddleWidth + kDiskRadius);
     const double bound = std::sqrt(2.0) * omega * tip;
-    std::printf("bar %g rad/s: the disk sank %.3g mm, its centre at least %.3g mm above the middle plane, "
-                "fastest %.4g m/s (bound %.4g)\n",
-                omega, 1e3 * out.deepest, 1e3 * out.nearest_middle, out.fastest, bound);
+    std::printf("bar %g rad/s:\n", omega);
+    // Sinking by the face's half-width and the radius puts the centre on the middle plane.
+    test::print_figure("sinking below the face (mm)", 1e3 * out.deepest, 1e3 * (0.5 * kPaddleWidth + kDiskRadius));
+    test::print_figure("fastest (m/s)", out.fastest, bound);
     EXPECT_TRUE(out.left) << "the disk never slid off the bar";
     EXPECT_GT(out.nearest_middle, 0.0) << "the disk went through the bar";
     EXPECT_LE(out.fastest, bound) << "faster than the bar can throw it";

@@ -38,6 +38,18 @@ inline std::uint32_t pack_feature(FeatureKind kind, bool second_is_reference, st
          (static_cast<std::uint32_t>(incident) & kIndexMask);
 }
 
+/// Which body of a pair holds the face a point's normal is fixed to: 1 the
+/// first, 2 the second, 0 neither (two disks, or a disk on a polygon's vertex).
+inline int reference_side(std::uint32_t feature)
+{
+  const auto kind = static_cast<FeatureKind>(feature >> kKindShift);
+  if (kind != FeatureKind::PolygonFaceDisk && kind != FeatureKind::PolygonPolygon)
+  {
+    return 0;
+  }
+  return ((feature >> kSecondIsReferenceShift) & 1u) != 0 ? 2 : 1;
+}
+
 /// Body::world_vertex and Body::world_face_normal with the same arithmetic,
 /// but visible to the compiler (pose_polygon calls them per vertex).
 inline Vec2 world_vertex_of(const Body& b, std::size_t i)

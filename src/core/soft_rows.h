@@ -149,6 +149,9 @@ public:
   void note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up);
   /// ... and for every other point.
   void note_no_manifold(std::size_t k);
+  /// After note_manifold(k): that manifold stays on the point verbs (its
+  /// points change within the frame in ways a packed row would not see).
+  void keep_on_point_verbs(std::size_t k);
   /// Colours and packs this frame's noted manifolds (prepared, soft terms
   /// set; their springs from `springs`), the highest first; the lanes are
   /// filled by the workers. Below kMinColouredManifolds they are only

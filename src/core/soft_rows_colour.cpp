@@ -71,6 +71,8 @@ std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
 
 void SoftRows::expect_points(std::size_t points) { resize_to_overwrite(notes_, points); }
 
+void SoftRows::keep_on_point_verbs(std::size_t k) { notes_[k].kind = Kind::Other; }
+
 void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up)
 {
   const Vec2 at = second != nullptr ? 0.5 * (p.point + second->point) : p.point;

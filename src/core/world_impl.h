@@ -146,6 +146,32 @@ struct WorldImpl : WorldState
   /// `kick_free`: another substep follows, whose gravity kick a body no
   /// contact touches takes here (integrate_velocities then skips it).
   void integrate_positions(StepContext& ctx, StepReport& report, bool kick_free);
+  // world_turning_faces.cpp: disks on the faces of turning kinematic bodies.
+  /// After prepare, before the rows are packed: the frame's disks on such
+  /// faces, kept on the point verbs. Inline: most frames have none.
+  void find_turning_faces()
+  {
+    turning_faces_.clear();
+    if (census_.turning_faces > 0)  // counted at each edit (census_for_frame)
+    {
+      list_turning_faces();
+    }
+  }
+  __attribute__((noinline, cold)) void list_turning_faces();
+  /// Before each pass: those points' normals turned with their faces, their
+  /// face anchors moved under the disk's nearest point, their gaps and slips
+  /// measured on the turned faces (substeps of h seconds). `as_prepared`:
+  /// after the passes, the same gaps and slips on the normals and lever arms
+  /// they were prepared with, which the contacts publish.
+  void follow_turning_faces(double h, bool as_prepared = false)
+  {
+    if (!turning_faces_.empty())
+    {
+      follow_turning_points(h, as_prepared);
+    }
+  }
+  __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
+  void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();

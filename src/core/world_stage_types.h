@@ -56,6 +56,19 @@ struct BouncePoint
   bool apart = false;           ///< neither touching nor approaching at the substep's start
 };
 
+/// Soft step: a disk's contact point on the face of a kinematic body that
+/// turns this frame, as it was prepared (world_turning_faces.cpp).
+struct TurningFacePoint
+{
+  std::size_t point = 0;
+  bool face_on_a = false;   ///< the face is body a's, else body b's
+  Vec2 normal;              ///< unit, from a to b
+  Vec2 r_a;                 ///< lever arms (m)
+  Vec2 r_b;
+  double separation = 0.0;  ///< gap (m)
+  double anchor_drift = 0.0;  ///< slip since it stuck (m)
+};
+
 /// Bodies below which a per-body stage stays on the calling thread: each
 /// body's update is a few operations, less than waking the workers costs.
 constexpr std::size_t kMinSharedBodies = 2048;
@@ -79,6 +92,7 @@ struct BodyCensus
   // centroid; frictionless impulses on a disk act through its centre.
   std::size_t dynamic_polygons = 0;
   std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
+  std::size_t turning_faces = 0;   ///< kinematic polygons with a spin (world_turning_faces.cpp)
   void add(const BodyCensus& other);
   /// Pairs combine materials by min, so a pair shows a property only when
   /// both bodies have it; a pair matters only when one of them is dynamic.

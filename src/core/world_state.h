@@ -155,6 +155,7 @@ struct WorldState
   double cache_h_ = 0.0;              ///< substep length the cached impulses were made with (s)
   bool bounces_ = false;               ///< soft step: some point of the frame can bounce
   std::vector<BouncePoint> bounce_points_;  ///< ... those points
+  std::vector<TurningFacePoint> turning_faces_;  ///< soft step: the frame's disks on turning kinematic faces
   std::vector<std::size_t> bouncing_;   ///< scratch: the bounce_points_ a substep's restitution drives
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).

@@ -1,0 +1,106 @@
+// Soft step: a disk on the face of a kinematic body that turns this frame (a
+// robot's turning link pushing a round part). A frame's contact keeps its
+// normal and lever arms from prepare. On a turning face that pushes along the
+// face's old normal and aims at the face's speed where the disk touched it at
+// prepare, so a disk sliding along the face sinks into it by about the turn
+// times the slide. These points follow the face instead: before each pass
+// their normal turns with the face, the face's anchor moves under the disk's
+// nearest point, and the gap is that point's distance from the face's plane,
+// exactly. The slip since a point stuck carries on. They stay on the kernel's
+// point verbs, so no other contact pays for them. A polygon lying on a
+// turning face keeps the frame's contact: followed this way, a box sliding
+// with friction pitched into the face more (docs/performance.md).
+#include "collide_features.h"
+#include "turn.h"
+#include "world_impl.h"
+
+namespace collision2d
+{
+namespace detail
+{
+void WorldImpl::list_turning_faces()
+{
+  for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
+  {
+    const ContactPoint& p = points_[k];
+    const int side = reference_side(p.feature);  // a manifold's points share their face
+    if (!p.active || side == 0)
+    {
+      continue;
+    }
+    const Body& face = bodies_[side == 1 ? p.a : p.b];
+    const Body& other = bodies_[side == 1 ? p.b : p.a];
+    if (face.type() != BodyType::Kinematic || face.omega() == 0.0 || other.type() != BodyType::Dynamic ||
+        other.shape() != Shape::Disk)
+    {
+      continue;
+    }
+    // A disk meets a face at one point: no pair block to follow.
+    turning_faces_.push_back(TurningFacePoint{k, side == 1, p.normal, p.r_a, p.r_b, p.separation, p.anchor_drift});
+    if (rows_on())
+    {
+      soft_rows_.keep_on_point_verbs(k);
+    }
+  }
+}
+
+void WorldImpl::follow_turning_points(double h, bool as_prepared)
+{
+  for (const TurningFacePoint& t : turning_faces_)
+  {
+    follow_turning_point(t, h, as_prepared);
+  }
+}
+
+void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared)
+{
+  ContactPoint& p = points_[t.point];
+  const BodyVelocity& a = velocity_[p.a];
+  const BodyVelocity& b = velocity_[p.b];
+  const BodyVelocity& face = t.face_on_a ? a : b;
+  // Both anchors as prepared, carried by their bodies' moves since and
+  // turned with the face: the disk's stays its point nearest the face
+  // however it rolls.
+  const Vec2 arm_a = rotate(t.r_a, face.turned_cos, face.turned_sin);
+  const Vec2 arm_b = rotate(t.r_b, face.turned_cos, face.turned_sin);
+  const Vec2 centres = prepared_position_[p.b] - prepared_position_[p.a];
+  const Vec2 apart_then = centres + t.r_b - t.r_a;  // anchor b less anchor a
+  const Vec2 apart = centres + b.moved - a.moved + arm_b - arm_a;
+  const Vec2 normal = rotate(t.normal, face.turned_cos, face.turned_sin);
+  const double gap = t.separation + dot(normal, apart) - dot(t.normal, apart_then);
+  // The slip is the disk's material point's, which a rolling disk turns away
+  // (as every point's anchor turns with its body); the face turns with itself.
+  const Vec2 material = centres + b.moved - a.moved + rotate(t.r_b, b.turned_cos, b.turned_sin) -
+                        rotate(t.r_a, a.turned_cos, a.turned_sin);
+  const double slip = dot(perp(normal), material) - dot(perp(t.normal), apart_then);
+  if (as_prepared)
+  {
+    p.normal = t.normal;
+    p.r_a = t.r_a;
+    p.r_b = t.r_b;
+  }
+  else
+  {
+    // The next move's velocity is solved for its middle: the face's normal
+    // turned on by half a substep, and its lever arm to where the disk's
+    // point will be then. Solved at its start, a disk sliding along the face
+    // would run into it by the turn times the slide each substep.
+    double lead_cos = 1.0;
+    double lead_sin = 0.0;
+    turn_of(0.5 * h * face.omega, lead_cos, lead_sin);
+    p.normal = rotate(normal, lead_cos, lead_sin);
+    // The disk's nearest point moves with its centre, however it rolls.
+    const Vec2 ahead = 0.5 * h * ((t.face_on_a ? b : a).v - face.v);
+    p.r_a = t.face_on_a ? apart + arm_a + ahead : arm_a;
+    p.r_b = t.face_on_a ? arm_b : arm_b - apart + ahead;
+    prepare_masses(p, p.restitution);
+  }
+  // The gap and the slip the point verbs read from the anchors' offset are
+  // the ones above at these poses (no pass moves a body).
+  const Vec2 offset = anchor_offset(p, velocity_);
+  p.base_separation = gap - dot(offset, p.normal);
+  p.anchor_drift = t.anchor_drift + slip - slip_at(p, offset);
+}
+
+}  // namespace detail
+}  // namespace collision2d

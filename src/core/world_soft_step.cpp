@@ -10,6 +10,8 @@
 // Newton targets (e times the approach speed at the substep's start), iterated
 // to the fixed point: a body that meets several others in turn within one
 // frame bounces off each as it meets it.
+// A disk on the face of a turning kinematic body is the one contact whose
+// normal and point follow its face before each pass (world_turning_faces.cpp).
 // Static friction holds position, not only velocity: a sticking point
 // remembers how far it has slipped since it stuck (across frames, with its
 // impulses) and its friction pulls that back at the contact's rate, so a stack

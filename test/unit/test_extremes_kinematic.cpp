@@ -11,8 +11,8 @@
 // along the face.
 // A turning kinematic face: a disk lies ahead of a 2 m bar that turns about
 // its middle at 1 to 20 rad/s, is struck and slides out along it, without
-// and with friction. Each substep the contact follows the face as it turns
-// (world_turning_faces.cpp). Checked: the disk never reaches the bar's middle
+// and with friction. Before each pass the contact follows the face as it
+// turns (world_turning_faces.cpp). Checked: the disk never reaches the bar's middle
 // plane, it slides off the end, it leaves no faster than a frictionless bead
 // on the bar would at the tip, and it sinks into the face no deeper than a
 // contact spring of contact_hertz would under the largest load the slide can

@@ -29,7 +29,7 @@ void BodyCensus::add(const BodyCensus& other)
   dynamic_bouncy += other.dynamic_bouncy;
   dynamic_polygons += other.dynamic_polygons;
   spinning_disks += other.spinning_disks;
-  turning_faces += other.turning_faces;
+  turning_face_bodies += other.turning_face_bodies;
 }
 
 const BodyCensus& WorldImpl::census_for_frame()
@@ -88,7 +88,7 @@ void WorldImpl::count_body(std::size_t i, BodyCensus& census) const
   const bool polygon = b.shape() == Shape::Polygon;
   census.dynamic_polygons += dynamic && polygon ? 1 : 0;
   census.spinning_disks += dynamic && !polygon && b.omega() != 0.0 ? 1 : 0;
-  census.turning_faces += b.type() == BodyType::Kinematic && polygon && b.omega() != 0.0 ? 1 : 0;
+  census.turning_face_bodies += b.type() == BodyType::Kinematic && polygon && b.omega() != 0.0 ? 1 : 0;
 }
 
 StepContext WorldImpl::select_effects()

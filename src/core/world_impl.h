@@ -152,7 +152,7 @@ struct WorldImpl : WorldState
   void find_turning_faces()
   {
     turning_faces_.clear();
-    if (census_.turning_faces > 0)  // counted at each edit (census_for_frame)
+    if (census_.turning_face_bodies > 0)  // counted at each edit (census_for_frame)
     {
       list_turning_faces();
     }

@@ -92,7 +92,7 @@ struct BodyCensus
   // centroid; frictionless impulses on a disk act through its centre.
   std::size_t dynamic_polygons = 0;
   std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
-  std::size_t turning_faces = 0;   ///< kinematic polygons with a spin (world_turning_faces.cpp)
+  std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp)
   void add(const BodyCensus& other);
   /// Pairs combine materials by min, so a pair shows a property only when
   /// both bodies have it; a pair matters only when one of them is dynamic.

@@ -233,12 +233,39 @@ struct WorldImpl : WorldState
   /// mark_swept_bodies over sweep_candidates_ only.
   bool mark_sweep_candidates(double h);
   bool sweep(double h, StepReport& report, bool stored = true);
+  /// Pair (i, j) first touches at t (fraction of the substep): its dynamic
+  /// bodies stop there unless they stop earlier.
+  void note_impact(std::size_t i, std::size_t j, double t);
   bool clamped(std::size_t i) const;
   /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
   bool has_frame_contact(std::size_t i, std::size_t j) const;
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
   /// against the other body of pair (i, j) moved by di and dj, else 1.
   double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
+
+  // world_kinematic_push.cpp: the Fx2D order's sweep of fast kinematic bodies.
+  /// The squared substep move (m^2) beyond which kinematic body i is swept;
+  /// -1 for any other body.
+  double kinematic_reach_sq(std::size_t i) const;
+  /// Body i's earliest impact so far is with `other`: pushed on if that is kinematic.
+  void note_pusher(std::size_t i, std::size_t other);
+  /// Pair (i, j) has no impact in the substep: listed if it is a fast
+  /// kinematic face and an awake dynamic body (they may touch already).
+  void note_touching_face(std::size_t i, std::size_t j);
+  /// Once every stop is known: a listed face that closes on its body's
+  /// path pushes the body from the substep's start.
+  void press_touching_faces(double h);
+  /// push_ for every body a kinematic body strikes in this substep of h
+  /// seconds, and for every body a pushed body strikes in turn.
+  void find_pushes(double h);
+  /// One round of that chain: the bodies last_pushed_ strike; false if none.
+  bool pass_pushes_on(double h);
+  /// How far a face moving `face_move` (m) in the substep, past its impact
+  /// with body i, pushes it on along the contact normal (m). Face k is posed
+  /// at the impact by `face_before` (m), its move before it; substeps of h s.
+  Vec2 push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_before, Vec2 face_move);
+  /// Where body i's substep takes it (m): its move up to its impact, then its push.
+  Vec2 pushed_path(std::size_t i, double h) const;
 
   // world_contacts.cpp
   bool is_mover(std::size_t i) const;
@@ -312,6 +339,8 @@ struct WorldImpl : WorldState
   }
   /// Whether pair k's manifold was kept (its points are contacts_ from kept_from_[k]).
   bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }
+  /// Fx2D: body i's broad-phase box, grown when it was stopped at its time of impact.
+  Aabb touch_box(std::size_t i, const Aabb& box) const;
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
   /// Each pair's first row (pair_rows_) and cache entry (pair_cache_), as one

@@ -131,6 +131,14 @@ struct WorldState
   bool sweep_every_body_ = true;
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact in the last sweep (toi_ follows edits)
+  /// Fx2D: a fast kinematic body was swept this substep (world_kinematic_push.cpp).
+  bool pushing_ = false;
+  std::vector<std::size_t> pusher_;   ///< ... the kinematic body each body meets first, or kNoPusher
+  std::vector<Vec2> push_;            ///< ... how far it pushes that body on (m)
+  std::vector<BodyPair> touching_faces_;  ///< ... (face, body) pairs touching at the substep's start
+  std::vector<std::size_t> last_pushed_;  ///< ... the bodies the last round of the chain pushed
+  std::vector<std::size_t> next_pushed_;
+  std::vector<unsigned char> in_last_round_;  ///< ... by body: in last_pushed_
   ContactPoints points_;  ///< this substep's contact points
   std::vector<BodyVelocity> velocity_;  ///< velocities during the velocity stage
   std::vector<Vec2> prev_position_;   ///< pose at the start of the substep

@@ -155,12 +155,20 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
   }
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
+  std::atomic<bool> any_kinematic{false};
   for_each_body([&](std::size_t i) {
-    const double reach_sq = fast_reach_sq(i, stored);
+    // The Fx2D order sweeps a fast kinematic body too (world_kinematic_push.cpp).
+    const bool kinematic = stored && bodies_[i].type() == BodyType::Kinematic;
+    const double reach_sq = kinematic ? kinematic_reach_sq(i) : fast_reach_sq(i, stored);
     const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
     const bool moving = d.x != 0.0 || d.y != 0.0;
     swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
+    if (kinematic && swept_[i])
+    {
+      any_kinematic.store(true, std::memory_order_relaxed);
+    }
   });
+  pushing_ = any_kinematic.load();
   if (body_pass_full_)
   {
     return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
@@ -192,6 +200,7 @@ bool WorldImpl::mark_sweep_candidates(double h)
 bool WorldImpl::sweep(double h, StepReport& report, bool stored)
 {
   clamping_ = false;
+  pushing_ = false;
   if (settings_.time_of_impact == Toggle::Off || !mark_swept_bodies(h, stored))
   {
     return false;
@@ -208,11 +217,16 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     report.swept_bodies += swept_[i] ? 1 : 0;
   }
   sweep_phase_.find_pairs(boxes_, pairs_);
+  if (pushing_)
+  {
+    pusher_.assign(n, kNoPusher);
+    touching_faces_.clear();
+  }
   for (const BodyPair& pair : pairs_)
   {
     const std::size_t i = pair.first;
     const std::size_t j = pair.second;
-    if (!swept_[i] && !swept_[j])
+    if ((!swept_[i] && !swept_[j]) || (pushing_ && !dynamic_pair(i, j)))
     {
       continue;
     }
@@ -223,23 +237,25 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     const Vec2 di = substep_displacement(i, h);
     const Vec2 dj = substep_displacement(j, h);
     double t = held ? 0.0 : time_of_impact(bodies_[i], di, bodies_[j], dj);
+    if (pushing_ && (t <= 0.0 || t >= 1.0))
+    {
+      note_touching_face(i, j);                           // world_kinematic_push.cpp
+    }
     // t = 0: already touching or overlapping, which detection (or the
     // solver) handles, as long as no centroid passes into the other body.
     if (t <= 0.0)
     {
       t = core_time_of_impact(i, j, di, dj, stored);
     }
-    if (t <= 0.0 || t >= 1.0)
+    if (t > 0.0 && t < 1.0)
     {
-      continue;
+      note_impact(i, j, t);
     }
-    for (std::size_t k : {i, j})
-    {
-      if (bodies_[k].type() == BodyType::Dynamic)
-      {
-        toi_[k] = std::min(toi_[k], t);
-      }
-    }
+  }
+  if (pushing_)
+  {
+    press_touching_faces(h);                              // world_kinematic_push.cpp
+    find_pushes(h);
   }
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -248,6 +264,18 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     clamping_ = clamping_ || stopped;
   }
   return true;
+}
+
+void WorldImpl::note_impact(std::size_t i, std::size_t j, double t)
+{
+  for (std::size_t k : {i, j})
+  {
+    if (bodies_[k].type() == BodyType::Dynamic && t < toi_[k])
+    {
+      toi_[k] = t;
+      note_pusher(k, k == i ? j : i);                     // world_kinematic_push.cpp
+    }
+  }
 }
 
 bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
@@ -272,7 +300,8 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
     const double reach_sq = fast_reach_sq(k, stored);
     // A pose already overflowed is left to the step's finiteness check,
     // which names the body (a Body cannot be made at it).
-    if (!swept_[k] || relative_sq <= reach_sq || !is_finite(bodies_[k].position()))
+    if (!swept_[k] || bodies_[k].type() != BodyType::Dynamic || relative_sq <= reach_sq ||
+        !is_finite(bodies_[k].position()))
     {
       continue;
     }

@@ -134,9 +134,13 @@ void WorldImpl::find_mover_pairs()
       const std::size_t i = looked_[k];
       reach_[i] = margin_ > 0.0 && !is_resting_[i] ? frame_reach(bodies_[i]) : 0.0;
       const Aabb box = posed_box(i);
-      mover_boxes_[k] = margin_ > 0.0 ? box.inflated(margin_ + reach_[i]) : touch_box(i, box);
+      mover_boxes_[k] = margin_ > 0.0 ? box.inflated(margin_ + reach_[i]) : box;
     }
   });
+  if (clamping_ && margin_ == 0.0)
+  {
+    grow_stopped_boxes();                                 // world_toi.cpp
+  }
   fat_pairs_.find_pairs(mover_boxes_, broad_phase_, mover_pairs_, workers_);  // fat_box_pairs.h
   auto kept = mover_pairs_.begin();
   for (const BodyPair& pair : mover_pairs_)
@@ -274,14 +278,6 @@ void WorldImpl::collide_range(std::size_t begin, std::size_t end)
 bool WorldImpl::dynamic_pair(std::size_t i, std::size_t j) const
 {
   return bodies_[i].type() == BodyType::Dynamic || bodies_[j].type() == BodyType::Dynamic;
-}
-
-Aabb WorldImpl::touch_box(std::size_t i, const Aabb& box) const
-{
-  // A body stopped at its time of impact touches its obstacle only up to
-  // round-off: its box grows by its share of the touch tolerance, or the
-  // broad phase could drop the pair that pair_tolerance keeps.
-  return clamped(i) ? box.inflated(kRelativeTouchTolerance * 2.0 * bodies_[i].radius()) : box;
 }
 
 double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const

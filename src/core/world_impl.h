@@ -230,13 +230,19 @@ struct WorldImpl : WorldState
   /// `stored`: the bodies hold their velocities; otherwise (the soft
   /// substep) they are read from velocity_ and stored only if a sweep runs.
   bool mark_swept_bodies(double h, bool stored);
+  /// Whether a body moving d (m) in the substep is swept, given its reach.
+  static bool is_swept(double reach_sq, Vec2 d, Toggle mode)
+  {
+    const bool moving = d.x != 0.0 || d.y != 0.0;
+    return reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
+  }
   /// mark_swept_bodies over sweep_candidates_ only.
   bool mark_sweep_candidates(double h);
   bool sweep(double h, StepReport& report, bool stored = true);
-  /// Pair (i, j) first touches at t (fraction of the substep): its dynamic
-  /// bodies stop there unless they stop earlier.
-  void note_impact(std::size_t i, std::size_t j, double t);
   bool clamped(std::size_t i) const;
+  /// Fx2D: the broad-phase boxes of the bodies stopped at their time of
+  /// impact, grown by their touch tolerance (world_contacts.cpp calls it).
+  __attribute__((noinline, cold)) void grow_stopped_boxes();
   /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
   bool has_frame_contact(std::size_t i, std::size_t j) const;
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
@@ -247,23 +253,34 @@ struct WorldImpl : WorldState
   /// The squared substep move (m^2) beyond which kinematic body i is swept;
   /// -1 for any other body.
   double kinematic_reach_sq(std::size_t i) const;
+  /// mark_swept_bodies in a world with a moving kinematic body: marks the
+  /// fast ones too, and sets pushing_ when there is one.
+  __attribute__((noinline, cold)) void mark_swept_with_faces(double h, bool stored);
   /// Body i's earliest impact so far is with `other`: pushed on if that is kinematic.
   void note_pusher(std::size_t i, std::size_t other);
   /// Pair (i, j) has no impact in the substep: listed if it is a fast
   /// kinematic face and an awake dynamic body (they may touch already).
   void note_touching_face(std::size_t i, std::size_t j);
-  /// Once every stop is known: a listed face that closes on its body's
-  /// path pushes the body from the substep's start.
-  void press_touching_faces(double h);
+  /// Once every stop is known: a listed face that meets its body's path
+  /// pushes the body from there (in the soft step, only a stopped body).
+  void press_touching_faces(double h, bool soft_substep);
+  /// Whether the face, touching the body now, closes on it by `closing` (m).
+  bool closes_now(std::size_t face, std::size_t body, Vec2 closing) const;
   /// push_ for every body a kinematic body strikes in this substep of h
   /// seconds, and for every body a pushed body strikes in turn.
   void find_pushes(double h);
+  /// Those pushes added to the poses the substep moves on from, substeps of
+  /// h seconds (`stored`: the bodies' own, the Fx2D order; otherwise the
+  /// soft step's frame poses).
+  void apply_pushes(double h, bool stored);
   /// One round of that chain: the bodies last_pushed_ strike; false if none.
   bool pass_pushes_on(double h);
-  /// How far a face moving `face_move` (m) in the substep, past its impact
-  /// with body i, pushes it on along the contact normal (m). Face k is posed
-  /// at the impact by `face_before` (m), its move before it; substeps of h s.
-  Vec2 push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_before, Vec2 face_move);
+  /// Pushed body p meets body q on its way: q is pushed if p reaches it first.
+  void push_on(std::size_t p, std::size_t q, double h);
+  /// How far a face moving `face_move` (m) in the substep of h seconds,
+  /// from where it meets body i (pushed_at_), pushes it on along the
+  /// contact normal (m).
+  Vec2 push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_move);
   /// Where body i's substep takes it (m): its move up to its impact, then its push.
   Vec2 pushed_path(std::size_t i, double h) const;
 
@@ -339,8 +356,6 @@ struct WorldImpl : WorldState
   }
   /// Whether pair k's manifold was kept (its points are contacts_ from kept_from_[k]).
   bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }
-  /// Fx2D: body i's broad-phase box, grown when it was stopped at its time of impact.
-  Aabb touch_box(std::size_t i, const Aabb& box) const;
   /// How far apart the pair's points are kept (m): margin and reach, or touching.
   double pair_tolerance(std::size_t i, std::size_t j) const;
   /// Each pair's first row (pair_rows_) and cache entry (pair_cache_), as one

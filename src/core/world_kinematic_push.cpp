@@ -1,15 +1,18 @@
-// The Fx2D order finds contacts at the poses a substep ends at, so a
-// kinematic body (a robot's link, which no contact slows) that moves past
-// most of a body in one substep would end inside it or beyond it. It is
-// swept like a fast dynamic body: the body it strikes is stopped at the
-// time of impact, as a clamped body is, and then pushed ahead of the
-// kinematic face by the face's advance along the contact normal over the
-// rest of the substep. The pair ends the substep touching, detection counts
-// it (a stopped body's touch tolerance), and the velocity stage gives the
-// body the face's normal velocity (with its restitution).
-// The soft step needs none of this: its speculative margin grows by a
-// kinematic body's reach in the frame (world_contacts.cpp).
+// A kinematic body (a robot's link, which no contact slows) that moves past
+// most of a body in one substep is swept like a fast dynamic body. A body
+// it strikes stops at the time of impact, as a clamped body does, and is
+// then pushed ahead of the face by the face's advance along the contact
+// normal over the rest of the substep; a body near the face that stops
+// against another body while the face closes on it is pushed from where
+// the face meets it; a pushed body pushes what it strikes in turn.
+// The Fx2D order finds contacts where a substep ends: the pushed pair ends
+// touching, detection counts it (a stopped body's touch tolerance), and the
+// velocity stage gives the body the face's normal velocity. The soft step's
+// frame contact already holds a body ahead of a face (its margin grows by
+// the face's reach in the frame), so there only a stopped body is pushed,
+// and it is not held for the rest of the frame.
 #include <algorithm>
+#include <atomic>
 
 #include "collision2d/collide.h"
 #include "collision2d/time_of_impact.h"
@@ -30,6 +33,9 @@ constexpr double kImpactNormalToleranceScale = 4.0;
 /// substep: a row longer than this overlaps past its last pushed body, and
 /// each round is one more broad phase.
 constexpr int kMaxPushRounds = 16;
+/// Two times of impact closer than this (fraction of a substep) are one:
+/// the sweep found a stop along the body's own move that a push retraces.
+constexpr double kSameImpact = 1e-9;
 
 }  // namespace
 
@@ -45,13 +51,29 @@ double WorldImpl::kinematic_reach_sq(std::size_t i) const
   return reach * reach;
 }
 
+void WorldImpl::mark_swept_with_faces(double h, bool stored)
+{
+  std::atomic<bool> any_face{false};
+  const Toggle mode = settings_.time_of_impact;
+  for_each_body([&](std::size_t i) {
+    const bool kinematic = bodies_[i].type() == BodyType::Kinematic;
+    const double reach_sq = kinematic ? kinematic_reach_sq(i) : fast_reach_sq(i, stored);
+    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;
+    swept_[i] = is_swept(reach_sq, d, mode);
+    if (kinematic && swept_[i])
+    {
+      any_face.store(true, std::memory_order_relaxed);
+    }
+  });
+  pushing_ = any_face.load();
+}
+
 void WorldImpl::note_pusher(std::size_t i, std::size_t other)
 {
   // The pair with body i's earliest impact decides whether it is pushed.
-  if (pushing_)
-  {
-    pusher_[i] = bodies_[other].type() == BodyType::Kinematic && awake_dynamic(i) ? other : kNoPusher;
-  }
+  const bool pushed = bodies_[other].type() == BodyType::Kinematic && awake_dynamic(i);
+  pusher_[i] = pushed ? other : kNoPusher;
+  pushed_at_[i] = toi_[i];
 }
 
 void WorldImpl::note_touching_face(std::size_t i, std::size_t j)
@@ -65,23 +87,47 @@ void WorldImpl::note_touching_face(std::size_t i, std::size_t j)
   }
 }
 
-void WorldImpl::press_touching_faces(double h)
+void WorldImpl::press_touching_faces(double h, bool soft_substep)
 {
-  // A body touching a fast face moves with it once the velocity stage has
-  // run. One that an impact has slowed since, or that stops at its time of
-  // impact with another body, would let the face run through it.
+  // A body near a fast face moves with it once the velocity stage has run
+  // (the soft step's contact holds the gap). One that an impact has slowed
+  // since, or that stops at its time of impact with another body, would let
+  // the face run into it: it is pushed from where the face meets its path.
+  // In the soft step only a stopped body: its contact with the face holds
+  // any other.
   for (const auto& [face, body] : touching_faces_)
   {
-    Manifold m;
-    const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance *
-                             (bodies_[face].radius() + bodies_[body].radius());
-    const Vec2 closing = substep_displacement(face, h) - substep_displacement(body, h) * toi_[body];
-    if (collide(bodies_[face], bodies_[body], m, tolerance) && dot(closing, m.normal) > 0.0)
+    const bool held = soft_substep && stopped_[body];
+    if (soft_substep && !held && !(toi_[body] < 1.0))
     {
-      toi_[body] = 0.0;
-      pusher_[body] = face;
+      continue;
     }
+    const Vec2 face_move = substep_displacement(face, h);
+    const Vec2 path = held ? Vec2{0.0, 0.0} : substep_displacement(body, h) * toi_[body];
+    double t = time_of_impact(bodies_[face], face_move, bodies_[body], path);
+    if (t <= 0.0 && !closes_now(face, body, face_move - path))
+    {
+      continue;
+    }
+    if (t >= 1.0 || (pusher_[body] != kNoPusher && pushed_at_[body] <= t))
+    {
+      continue;
+    }
+    t = std::max(t, 0.0);
+    toi_[body] = held ? 0.0 : t * toi_[body];  // where on its path the face meets it
+    pusher_[body] = face;
+    pushed_at_[body] = t;
   }
+}
+
+bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 closing) const
+{
+  Manifold m;
+  const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance *
+                           (bodies_[face].radius() + bodies_[body].radius());
+  // A closing within the touch tolerance is round-off of a body that moves
+  // with the face.
+  return collide(bodies_[face], bodies_[body], m, tolerance) && dot(closing, m.normal) > tolerance;
 }
 
 void WorldImpl::find_pushes(double h)
@@ -94,14 +140,37 @@ void WorldImpl::find_pushes(double h)
     const std::size_t face = pusher_[i];
     if (face != kNoPusher)
     {
-      const Vec2 face_move = substep_displacement(face, h);
-      push_[i] = push_ahead(i, face, h, face_move * toi_[i], face_move);
+      push_[i] = push_ahead(i, face, h, substep_displacement(face, h));
       last_pushed_.push_back(i);
     }
   }
   in_last_round_.assign(n, 0);
   for (int round = 0; round < kMaxPushRounds && pass_pushes_on(h); ++round)
   {
+  }
+}
+
+void WorldImpl::apply_pushes(double h, bool stored)
+{
+  // Added before the substep's move (move_body, move_in_frame), which
+  // adds each body's own move up to its stop.
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    if (pusher_[i] == kNoPusher)
+    {
+      continue;
+    }
+    if (stored)
+    {
+      bodies_[i].set_position(bodies_[i].position() + push_[i]);
+      continue;
+    }
+    // The soft step holds a stopped body for the rest of the frame; a
+    // pushed one moves on. Its stop goes into the push and its move is the
+    // whole substep's, so it is neither stopped nor held.
+    frame_position_[i] = frame_position_[i] + (push_[i] - substep_displacement(i, h) * (1.0 - toi_[i]));
+    toi_[i] = 1.0;
+    stopped_[i] = false;
   }
 }
 
@@ -123,29 +192,10 @@ bool WorldImpl::pass_pushes_on(double h)
   {
     for (const auto& [p, q] : {std::pair{pair.first, pair.second}, std::pair{pair.second, pair.first}})
     {
-      // A body is pushed by what reaches it first: no later than where it
-      // stops (a stop at the same time is this impact's).
-      if (!in_last_round_[p] || !awake_dynamic(q))
+      if (in_last_round_[p] && awake_dynamic(q) && pusher_[q] != p)
       {
-        continue;
+        push_on(p, q, h);
       }
-      const Vec2 path = pushed_path(p, h);
-      const double t = time_of_impact(bodies_[p], path, bodies_[q], substep_displacement(q, h));
-      if (!(t <= toi_[q]) || pusher_[q] == p)
-      {
-        continue;
-      }
-      const double stopped_at = toi_[q];
-      toi_[q] = t;
-      const Vec2 push = push_ahead(q, p, h, path * t, path);
-      if (t <= 0.0 && push.x == 0.0 && push.y == 0.0)
-      {
-        toi_[q] = stopped_at;  // touching already, and not closing: the velocity stage's
-        continue;
-      }
-      pusher_[q] = p;
-      push_[q] = push;
-      next_pushed_.push_back(q);
     }
   }
   for (std::size_t p : last_pushed_)
@@ -156,16 +206,41 @@ bool WorldImpl::pass_pushes_on(double h)
   return !last_pushed_.empty();
 }
 
-Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_before, Vec2 face_move)
+void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
 {
-  // Both bodies posed at the impact for the narrow phase, then put back.
-  const double t = toi_[i];
+  // A body is pushed by what reaches it first: no later than where it
+  // stops (a stop at the same time, up to round-off, is this impact's).
+  const Vec2 path = pushed_path(p, h);
+  const double t = time_of_impact(bodies_[p], path, bodies_[q], substep_displacement(q, h));
+  if (!(t <= toi_[q] + kSameImpact) || (pusher_[q] != kNoPusher && pushed_at_[q] < t))
+  {
+    return;
+  }
+  const double stopped_at = toi_[q];
+  toi_[q] = t;
+  pushed_at_[q] = t;
+  const Vec2 push = push_ahead(q, p, h, path);
+  if (t <= 0.0 && push.x == 0.0 && push.y == 0.0)
+  {
+    toi_[q] = stopped_at;  // touching already, and not closing: the velocity stage's
+    return;
+  }
+  pusher_[q] = p;
+  push_[q] = push;
+  next_pushed_.push_back(q);
+}
+
+Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_move)
+{
+  // Both bodies posed where the face meets body i, for the narrow phase,
+  // then put back.
+  const double t = pushed_at_[i];
   Body& body = bodies_[i];
   Body& face = bodies_[k];
   const Vec2 body_at = body.position();
   const Vec2 face_at = face.position();
-  body.set_position(body_at + substep_displacement(i, h) * t);
-  face.set_position(face_at + face_before);
+  body.set_position(body_at + substep_displacement(i, h) * toi_[i]);
+  face.set_position(face_at + face_move * t);
   Manifold m;
   const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance * (body.radius() + face.radius());
   const bool touching = collide(face, body, m, tolerance);

@@ -95,6 +95,7 @@ struct BodyCensus
   std::size_t dynamic_polygons = 0;
   std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
   std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp)
+  std::size_t moving_kinematic_bodies = 0;  ///< kinematic bodies with a velocity (world_kinematic_push.cpp)
   void add(const BodyCensus& other);
   /// Pairs combine materials by min, so a pair shows a property only when
   /// both bodies have it; a pair matters only when one of them is dynamic.

@@ -134,6 +134,7 @@ struct WorldState
   /// Fx2D: a fast kinematic body was swept this substep (world_kinematic_push.cpp).
   bool pushing_ = false;
   std::vector<std::size_t> pusher_;   ///< ... the kinematic body each body meets first, or kNoPusher
+  std::vector<double> pushed_at_;     ///< ... when in the substep (fraction) it meets the body
   std::vector<Vec2> push_;            ///< ... how far it pushes that body on (m)
   std::vector<BodyPair> touching_faces_;  ///< ... (face, body) pairs touching at the substep's start
   std::vector<std::size_t> last_pushed_;  ///< ... the bodies the last round of the chain pushed

@@ -218,10 +218,6 @@ bool WorldImpl::move_body(std::size_t i, const StepContext& ctx, bool swept)
   Body& b = bodies_[i];
   const double travel = swept ? toi_[i] * ctx.h : ctx.h;
   b.set_position(b.position() + b.velocity() * travel);
-  if (swept && pushing_)
-  {
-    b.set_position(b.position() + push_[i]);              // world_kinematic_push.cpp
-  }
   return turns(ctx, motion, b.omega());
 }
 

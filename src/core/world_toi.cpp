@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "collision2d/time_of_impact.h"
+#include "collision2d/touch_tolerance.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -114,7 +115,9 @@ bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
 {
   if (swept_reach_sq_[i] < 0.0)  // set for the frame (reset_body_motion)
   {
-    return false;
+    // A fast kinematic body is swept in every substep (world_kinematic_push.cpp).
+    const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_);
+    return frame_motion_[i] == FrameMotion::Kinematic && length_sq(velocity_[i].v) > slowest_fast * slowest_fast;
   }
   const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_) - bound.frame_kick;
   return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);
@@ -155,20 +158,17 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
   }
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
-  std::atomic<bool> any_kinematic{false};
-  for_each_body([&](std::size_t i) {
-    // The Fx2D order sweeps a fast kinematic body too (world_kinematic_push.cpp).
-    const bool kinematic = stored && bodies_[i].type() == BodyType::Kinematic;
-    const double reach_sq = kinematic ? kinematic_reach_sq(i) : fast_reach_sq(i, stored);
-    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
-    const bool moving = d.x != 0.0 || d.y != 0.0;
-    swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
-    if (kinematic && swept_[i])
-    {
-      any_kinematic.store(true, std::memory_order_relaxed);
-    }
-  });
-  pushing_ = any_kinematic.load();
+  if (census_.moving_kinematic_bodies > 0)
+  {
+    mark_swept_with_faces(h, stored);                     // world_kinematic_push.cpp
+  }
+  else
+  {
+    for_each_body([&](std::size_t i) {
+      const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
+      swept_[i] = is_swept(fast_reach_sq(i, stored), d, mode);
+    });
+  }
   if (body_pass_full_)
   {
     return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
@@ -220,6 +220,7 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
   if (pushing_)
   {
     pusher_.assign(n, kNoPusher);
+    pushed_at_.resize(n);
     touching_faces_.clear();
   }
   for (const BodyPair& pair : pairs_)
@@ -247,15 +248,27 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     {
       t = core_time_of_impact(i, j, di, dj, stored);
     }
-    if (t > 0.0 && t < 1.0)
+    if (t <= 0.0 || t >= 1.0)
     {
-      note_impact(i, j, t);
+      continue;
+    }
+    for (std::size_t k : {i, j})
+    {
+      if (bodies_[k].type() == BodyType::Dynamic && t < toi_[k])
+      {
+        toi_[k] = t;
+        if (pushing_)
+        {
+          note_pusher(k, k == i ? j : i);                 // world_kinematic_push.cpp
+        }
+      }
     }
   }
   if (pushing_)
   {
-    press_touching_faces(h);                              // world_kinematic_push.cpp
+    press_touching_faces(h, !stored);                     // world_kinematic_push.cpp
     find_pushes(h);
+    apply_pushes(h, stored);
   }
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -264,18 +277,6 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     clamping_ = clamping_ || stopped;
   }
   return true;
-}
-
-void WorldImpl::note_impact(std::size_t i, std::size_t j, double t)
-{
-  for (std::size_t k : {i, j})
-  {
-    if (bodies_[k].type() == BodyType::Dynamic && t < toi_[k])
-    {
-      toi_[k] = t;
-      note_pusher(k, k == i ? j : i);                     // world_kinematic_push.cpp
-    }
-  }
 }
 
 bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
@@ -313,6 +314,21 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
     }
   }
   return earliest;
+}
+
+void WorldImpl::grow_stopped_boxes()
+{
+  // A body stopped at its time of impact touches its obstacle only up to
+  // round-off: its box grows by its share of the touch tolerance, or the
+  // broad phase could drop the pair that pair_tolerance keeps.
+  for (std::size_t k = 0; k < looked_.size(); ++k)
+  {
+    const std::size_t i = looked_[k];
+    if (clamped(i))
+    {
+      mover_boxes_[k] = mover_boxes_[k].inflated(kRelativeTouchTolerance * 2.0 * bodies_[i].radius());
+    }
+  }
 }
 
 bool WorldImpl::clamped(std::size_t i) const

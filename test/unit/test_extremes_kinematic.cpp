@@ -126,6 +126,63 @@ TEST(ExtremesKinematic, SoftStepPaddlePushesASmallDiskAtAnySpeed)
   }
 }
 
+/// A row: a second disk 5 cm ahead of the first, 3 mm off its line.
+constexpr double kRowSpacing = 0.05;  // m
+constexpr double kRowOffset = 0.003;  // m
+constexpr int kRowFrames = 30;
+
+struct RowOutcome
+{
+  double deepest = -1e300;    ///< largest overlap of either disk behind the face (m)
+  double slowest = 1e300;     ///< least x velocity of either disk at the end (m/s)
+};
+
+RowOutcome run_row(double speed)
+{
+  World world = weightless_world(true);
+  Body paddle = scenes::make_box(1.0, kPaddleWidth, 2.0, {-(kStartGap + kDiskRadius + 0.5 * kPaddleWidth), 0.0});
+  paddle.set_type(BodyType::Kinematic);
+  paddle.set_velocity({speed, 0.0});
+  const BodyId paddle_id = world.add_body(paddle);
+  const BodyId disks[] = {world.add_body(Body(1.0, kDiskRadius, {0.0, 0.0}, {0.0, 0.0})),
+                          world.add_body(Body(1.0, kDiskRadius, {kRowSpacing, kRowOffset}, {0.0, 0.0}))};
+  RowOutcome out;
+  for (int f = 0; f < kRowFrames; ++f)
+  {
+    world.step();
+    EXPECT_TRUE(test::all_finite(world));
+    const double face = world.body(paddle_id).position().x + 0.5 * kPaddleWidth;
+    for (BodyId id : disks)
+    {
+      out.deepest = std::max(out.deepest, face - (world.body(id).position().x - kDiskRadius));
+    }
+  }
+  for (BodyId id : disks)
+  {
+    out.slowest = std::min(out.slowest, world.body(id).velocity().x);
+  }
+  return out;
+}
+
+// A disk that the paddle drives into another stops at their time of impact
+// (the frame found no contact between the two); the face pushes it on from
+// there, and it pushes the second disk (world_kinematic_push.cpp). Before,
+// the paddle ran through the stopped disk: from 20 m/s both disks ended
+// behind the face, 0.12 m at 20 m/s and 0.97 m at 100 m/s.
+TEST(ExtremesKinematic, SoftStepPaddlePushesARowOfDisks)
+{
+  for (double speed : {4.0, 8.0, 20.0, 100.0, 1e3, 1e4})
+  {
+    SCOPED_TRACE("paddle at " + std::to_string(speed) + " m/s into a row of two disks");
+    const RowOutcome out = run_row(speed);
+    std::printf("soft step: paddle %g m/s into a row of two disks:\n", speed);
+    test::print_figure("deepest overlap behind the face (m)", out.deepest, kGapTol);
+    test::print_figure("1 - slowest disk's x velocity / paddle's at the end", 1.0 - out.slowest / speed, kVelocityTol);
+    EXPECT_LE(out.deepest, kGapTol) << "a disk went behind the paddle's face";
+    EXPECT_LE(1.0 - out.slowest / speed, kVelocityTol) << "a disk was left behind";
+  }
+}
+
 TEST(ExtremesKinematic, Fx2dPaddlePushesASmallDiskAtAnySpeed)
 {
   const double allowed = WorldSettings().slop + kGapTol;  // the Fx2D order's correction leaves slop

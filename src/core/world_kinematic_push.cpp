@@ -37,6 +37,20 @@ constexpr int kMaxPushRounds = 16;
 /// the sweep found a stop along the body's own move that a push retraces.
 constexpr double kSameImpact = 1e-9;
 
+/// The unit normal from `face` into `body` where they touch within
+/// `tolerance` (m), else false. Two disks on one centre have none.
+bool touch_normal(const Body& face, const Body& body, double tolerance, Vec2& normal)
+{
+  if (face.shape() == Shape::Disk && body.shape() == Shape::Disk && face.position() == body.position())
+  {
+    return false;
+  }
+  Manifold m;
+  const bool touching = collide(face, body, m, tolerance);
+  normal = m.normal;
+  return touching;
+}
+
 }  // namespace
 
 double WorldImpl::kinematic_reach_sq(std::size_t i) const
@@ -122,12 +136,12 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
 
 bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 closing) const
 {
-  Manifold m;
   const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance *
                            (bodies_[face].radius() + bodies_[body].radius());
   // A closing within the touch tolerance is round-off of a body that moves
   // with the face.
-  return collide(bodies_[face], bodies_[body], m, tolerance) && dot(closing, m.normal) > tolerance;
+  Vec2 normal;
+  return touch_normal(bodies_[face], bodies_[body], tolerance, normal) && dot(closing, normal) > tolerance;
 }
 
 void WorldImpl::find_pushes(double h)
@@ -145,8 +159,10 @@ void WorldImpl::find_pushes(double h)
     }
   }
   in_last_round_.assign(n, 0);
-  for (int round = 0; round < kMaxPushRounds && pass_pushes_on(h); ++round)
+  int rounds = 0;
+  while (rounds < kMaxPushRounds && pass_pushes_on(h))
   {
+    ++rounds;
   }
 }
 
@@ -217,12 +233,14 @@ void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
     return;
   }
   const double stopped_at = toi_[q];
+  const double pushed_before = pushed_at_[q];
   toi_[q] = t;
   pushed_at_[q] = t;
   const Vec2 push = push_ahead(q, p, h, path);
   if (t <= 0.0 && push.x == 0.0 && push.y == 0.0)
   {
     toi_[q] = stopped_at;  // touching already, and not closing: the velocity stage's
+    pushed_at_[q] = pushed_before;
     return;
   }
   pusher_[q] = p;
@@ -241,15 +259,14 @@ Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_mov
   const Vec2 face_at = face.position();
   body.set_position(body_at + substep_displacement(i, h) * toi_[i]);
   face.set_position(face_at + face_move * t);
-  Manifold m;
   const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance * (body.radius() + face.radius());
-  const bool touching = collide(face, body, m, tolerance);
+  Vec2 normal;
+  const bool touching = touch_normal(face, body, tolerance, normal);
   body.set_position(body_at);
   face.set_position(face_at);
-  // The normal points from the face into the body; a face moving away
-  // from the body along it pushes nothing.
-  const double advance = touching ? (1.0 - t) * std::max(0.0, dot(face_move, m.normal)) : 0.0;
-  return advance * m.normal;
+  // A face moving away from the body along the normal pushes nothing.
+  const double advance = touching ? (1.0 - t) * std::max(0.0, dot(face_move, normal)) : 0.0;
+  return advance * normal;
 }
 
 Vec2 WorldImpl::pushed_path(std::size_t i, double h) const

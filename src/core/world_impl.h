@@ -253,6 +253,9 @@ struct WorldImpl : WorldState
   /// The squared substep move (m^2) beyond which kinematic body i is swept;
   /// -1 for any other body.
   double kinematic_reach_sq(std::size_t i) const;
+  /// Soft step: whether a kinematic body moves past its reach in a substep
+  /// (may_turn_fast's bound): it is swept, so every body is checked.
+  __attribute__((noinline, cold)) bool any_fast_face(const FreeSpeedBound& bound) const;
   /// mark_swept_bodies in a world with a moving kinematic body: marks the
   /// fast ones too, and sets pushing_ when there is one.
   __attribute__((noinline, cold)) void mark_swept_with_faces(double h, bool stored);

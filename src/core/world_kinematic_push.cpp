@@ -65,6 +65,19 @@ double WorldImpl::kinematic_reach_sq(std::size_t i) const
   return reach * reach;
 }
 
+bool WorldImpl::any_fast_face(const FreeSpeedBound& bound) const
+{
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_);
+    if (bodies_[i].type() == BodyType::Kinematic && length_sq(bodies_[i].velocity()) > slowest_fast * slowest_fast)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 void WorldImpl::mark_swept_with_faces(double h, bool stored)
 {
   std::atomic<bool> any_face{false};

@@ -159,7 +159,9 @@ void WorldImpl::prepare_soft_bodies()
       note_touching(pairs_[k].second);
     }
   }
-  choose_sweep_pass(any_may_turn_fast.load());
+  // A fast kinematic body is swept, against any body (world_kinematic_push.cpp).
+  const bool fast_face = candidates && census_.moving_kinematic_bodies > 0 && any_fast_face(bound);
+  choose_sweep_pass(any_may_turn_fast.load() || fast_face);
 }
 
 bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)

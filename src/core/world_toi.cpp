@@ -115,9 +115,7 @@ bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
 {
   if (swept_reach_sq_[i] < 0.0)  // set for the frame (reset_body_motion)
   {
-    // A fast kinematic body is swept in every substep (world_kinematic_push.cpp).
-    const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_);
-    return frame_motion_[i] == FrameMotion::Kinematic && length_sq(velocity_[i].v) > slowest_fast * slowest_fast;
+    return false;
   }
   const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_) - bound.frame_kick;
   return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);

@@ -249,7 +249,7 @@ struct WorldImpl : WorldState
   /// against the other body of pair (i, j) moved by di and dj, else 1.
   double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
 
-  // world_kinematic_push.cpp: the Fx2D order's sweep of fast kinematic bodies.
+  // world_kinematic_push.cpp: fast kinematic bodies swept, and what they strike pushed ahead.
   /// The squared substep move (m^2) beyond which kinematic body i is swept;
   /// -1 for any other body.
   double kinematic_reach_sq(std::size_t i) const;

@@ -72,7 +72,7 @@ struct TurningFacePoint
 /// Bodies below which a per-body stage stays on the calling thread: each
 /// body's update is a few operations, less than waking the workers costs.
 constexpr std::size_t kMinSharedBodies = 2048;
-/// pusher_ of a body no kinematic body pushes this substep (world_kinematic_push.cpp).
+/// pusher_ of a body nothing pushes this substep (world_kinematic_push.cpp).
 constexpr std::size_t kNoPusher = static_cast<std::size_t>(-1);
 /// Contact points below which a per-point stage stays on the calling thread.
 constexpr std::size_t kMinSharedPoints = 1024;

@@ -131,12 +131,12 @@ struct WorldState
   bool sweep_every_body_ = true;
   std::vector<double> toi_;           ///< fraction of the substep each body travels
   bool clamping_ = false;             ///< some body stopped at its time of impact in the last sweep (toi_ follows edits)
-  /// Fx2D: a fast kinematic body was swept this substep (world_kinematic_push.cpp).
+  /// A fast kinematic body was swept this substep (world_kinematic_push.cpp).
   bool pushing_ = false;
-  std::vector<std::size_t> pusher_;   ///< ... the kinematic body each body meets first, or kNoPusher
+  std::vector<std::size_t> pusher_;   ///< ... what pushes each body (a face or a pushed body), or kNoPusher
   std::vector<double> pushed_at_;     ///< ... when in the substep (fraction) it meets the body
   std::vector<Vec2> push_;            ///< ... how far it pushes that body on (m)
-  std::vector<BodyPair> touching_faces_;  ///< ... (face, body) pairs touching at the substep's start
+  std::vector<BodyPair> touching_faces_;  ///< ... (face, body) pairs with no impact in the substep (they may touch)
   std::vector<std::size_t> last_pushed_;  ///< ... the bodies the last round of the chain pushed
   std::vector<std::size_t> next_pushed_;
   std::vector<unsigned char> in_last_round_;  ///< ... by body: in last_pushed_

@@ -157,14 +157,15 @@ three disks, where the paddle is too slow to be swept); Fx2D 149 -> 117,
 that a push moves sideways off the one pushing it (the gap that opens
 leaves it no contact, so no velocity) and that the face then overtakes,
 and the Fx2D position passes squeezing three disks against the face (at 6
-m/s one was pushed 13 mm back through it with no push involved). The
-sweep of the faces runs only in worlds whose body census counts a moving
-kinematic body, and the grown boxes of stopped bodies only in Fx2D frames
+m/s one was pushed 13 mm back through it with no push involved). A
+kinematic body takes the dynamic bodies' sweep threshold, and the books
+of pushes are kept only in worlds whose body census counts a moving
+kinematic body; the grown boxes of stopped bodies run only in Fx2D frames
 with a stop: callgrind, 600 frames, instructions before -> after, soft step
-4 substeps: incline 8.692 -> 8.684 million, bouncing_disks 7.908 -> 7.918,
-heavy_on_light_1e2 13.469 -> 13.473, elastic_gas (300 frames) 514.9 ->
-513.2; Fx2D 1 substep: bullet_wall 3.571 -> 3.571, newtons_cradle 4.038 ->
-4.035. A first version that checked each body for a push where it moves
+4 substeps: incline 8.692 -> 8.677 million, bouncing_disks 7.908 -> 7.895,
+heavy_on_light_1e2 13.469 -> 13.456, elastic_gas (300 frames) 514.9 ->
+513.2; Fx2D 1 substep: bullet_wall 3.571 -> 3.570, newtons_cradle 4.038 ->
+4.034. A first version that checked each body for a push where it moves
 and holds cost bouncing_disks 4.9%, as the move pass then no longer
 inlined into the step; one that asked each body at prepare whether it was
 a fast kinematic one cost elastic_gas 0.6% the same way.

@@ -209,7 +209,7 @@ struct WorldImpl : WorldState
   void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
   /// The squared substep move above which body i is swept in Auto (m^2);
-  /// -1 for a body that is not awake and dynamic (never swept).
+  /// -1 for a body that is neither awake and dynamic nor kinematic (never swept).
   double sweep_reach_sq(std::size_t i) const;
   /// The squared substep move (m^2) beyond which body i counts as fast: the Fx2D
   /// order's (stored) or the soft step's threshold for the frame.
@@ -230,12 +230,6 @@ struct WorldImpl : WorldState
   /// `stored`: the bodies hold their velocities; otherwise (the soft
   /// substep) they are read from velocity_ and stored only if a sweep runs.
   bool mark_swept_bodies(double h, bool stored);
-  /// Whether a body moving d (m) in the substep is swept, given its reach.
-  static bool is_swept(double reach_sq, Vec2 d, Toggle mode)
-  {
-    const bool moving = d.x != 0.0 || d.y != 0.0;
-    return reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
-  }
   /// mark_swept_bodies over sweep_candidates_ only.
   bool mark_sweep_candidates(double h);
   bool sweep(double h, StepReport& report, bool stored = true);
@@ -250,15 +244,6 @@ struct WorldImpl : WorldState
   double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
 
   // world_kinematic_push.cpp: fast kinematic bodies swept, and what they strike pushed ahead.
-  /// The squared substep move (m^2) beyond which kinematic body i is swept;
-  /// -1 for any other body.
-  double kinematic_reach_sq(std::size_t i) const;
-  /// Soft step: whether a kinematic body moves past its reach in a substep
-  /// (may_turn_fast's bound): it is swept, so every body is checked.
-  __attribute__((noinline, cold)) bool any_fast_face(const FreeSpeedBound& bound) const;
-  /// mark_swept_bodies in a world with a moving kinematic body: marks the
-  /// fast ones too, and sets pushing_ when there is one.
-  __attribute__((noinline, cold)) void mark_swept_with_faces(double h, bool stored);
   /// Body i's earliest impact so far is with `other`: pushed on if that is kinematic.
   void note_pusher(std::size_t i, std::size_t other);
   /// Pair (i, j) has no impact in the substep: listed if it is a fast
@@ -268,7 +253,7 @@ struct WorldImpl : WorldState
   /// pushes the body from there (in the soft step, only a stopped body).
   void press_touching_faces(double h, bool soft_substep);
   /// Whether the face, touching the body now, closes on it by `closing` (m).
-  bool closes_now(std::size_t face, std::size_t body, Vec2 closing) const;
+  bool closes_now(std::size_t face, std::size_t body, Vec2 closing);
   /// push_ for every body a kinematic body strikes in this substep of h
   /// seconds, and for every body a pushed body strikes in turn.
   void find_pushes(double h);
@@ -280,10 +265,13 @@ struct WorldImpl : WorldState
   bool pass_pushes_on(double h);
   /// Pushed body p meets body q on its way: q is pushed if p reaches it first.
   void push_on(std::size_t p, std::size_t q, double h);
-  /// How far a face moving `face_move` (m) in the substep of h seconds,
-  /// from where it meets body i (pushed_at_), pushes it on along the
-  /// contact normal (m).
-  Vec2 push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_move);
+  /// How far face k, moving `face_move` (m) in the substep, pushes body i
+  /// on along their contact normal (m) from the time t (fraction) at which
+  /// it meets the body, moved `body_move` (m) by then.
+  Vec2 push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, Vec2 face_move);
+  /// The normal from body k into body i with both moved by `i_move` and
+  /// `k_move` (m), if they touch there (false otherwise).
+  bool touch_normal(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, Vec2& normal);
   /// Where body i's substep takes it (m): its move up to its impact, then its push.
   Vec2 pushed_path(std::size_t i, double h) const;
 

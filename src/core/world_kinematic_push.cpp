@@ -12,7 +12,6 @@
 // the face's reach in the frame), so there only a stopped body is pushed,
 // and it is not held for the rest of the frame.
 #include <algorithm>
-#include <atomic>
 
 #include "collision2d/collide.h"
 #include "collision2d/time_of_impact.h"
@@ -37,63 +36,7 @@ constexpr int kMaxPushRounds = 16;
 /// the sweep found a stop along the body's own move that a push retraces.
 constexpr double kSameImpact = 1e-9;
 
-/// The unit normal from `face` into `body` where they touch within
-/// `tolerance` (m), else false. Two disks on one centre have none.
-bool touch_normal(const Body& face, const Body& body, double tolerance, Vec2& normal)
-{
-  if (face.shape() == Shape::Disk && body.shape() == Shape::Disk && face.position() == body.position())
-  {
-    return false;
-  }
-  Manifold m;
-  const bool touching = collide(face, body, m, tolerance);
-  normal = m.normal;
-  return touching;
-}
-
 }  // namespace
-
-double WorldImpl::kinematic_reach_sq(std::size_t i) const
-{
-  if (bodies_[i].type() != BodyType::Kinematic)
-  {
-    return -1.0;
-  }
-  // As for a dynamic body (sweep_reach_sq): a relative move past the sum of
-  // the two thinnest half-widths can pass through.
-  const double reach = settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
-  return reach * reach;
-}
-
-bool WorldImpl::any_fast_face(const FreeSpeedBound& bound) const
-{
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_);
-    if (bodies_[i].type() == BodyType::Kinematic && length_sq(bodies_[i].velocity()) > slowest_fast * slowest_fast)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-void WorldImpl::mark_swept_with_faces(double h, bool stored)
-{
-  std::atomic<bool> any_face{false};
-  const Toggle mode = settings_.time_of_impact;
-  for_each_body([&](std::size_t i) {
-    const bool kinematic = bodies_[i].type() == BodyType::Kinematic;
-    const double reach_sq = kinematic ? kinematic_reach_sq(i) : fast_reach_sq(i, stored);
-    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;
-    swept_[i] = is_swept(reach_sq, d, mode);
-    if (kinematic && swept_[i])
-    {
-      any_face.store(true, std::memory_order_relaxed);
-    }
-  });
-  pushing_ = any_face.load();
-}
 
 void WorldImpl::note_pusher(std::size_t i, std::size_t other)
 {
@@ -105,9 +48,8 @@ void WorldImpl::note_pusher(std::size_t i, std::size_t other)
 
 void WorldImpl::note_touching_face(std::size_t i, std::size_t j)
 {
-  const bool i_is_face = bodies_[i].type() == BodyType::Kinematic && swept_[i];
-  const std::size_t face = i_is_face ? i : j;
-  const std::size_t body = i_is_face ? j : i;
+  const std::size_t face = bodies_[i].type() == BodyType::Kinematic ? i : j;
+  const std::size_t body = face == i ? j : i;
   if (bodies_[face].type() == BodyType::Kinematic && swept_[face] && awake_dynamic(body))
   {
     touching_faces_.push_back(BodyPair{face, body});
@@ -147,14 +89,14 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
   }
 }
 
-bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 closing) const
+bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 closing)
 {
-  const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance *
-                           (bodies_[face].radius() + bodies_[body].radius());
   // A closing within the touch tolerance is round-off of a body that moves
   // with the face.
+  const double tolerance =
+      kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[face].radius() + bodies_[body].radius());
   Vec2 normal;
-  return touch_normal(bodies_[face], bodies_[body], tolerance, normal) && dot(closing, normal) > tolerance;
+  return touch_normal(body, face, Vec2{0.0, 0.0}, Vec2{0.0, 0.0}, normal) && dot(closing, normal) > tolerance;
 }
 
 void WorldImpl::find_pushes(double h)
@@ -167,7 +109,7 @@ void WorldImpl::find_pushes(double h)
     const std::size_t face = pusher_[i];
     if (face != kNoPusher)
     {
-      push_[i] = push_ahead(i, face, h, substep_displacement(face, h));
+      push_[i] = push_ahead(i, face, pushed_at_[i], substep_displacement(i, h) * toi_[i], substep_displacement(face, h));
       last_pushed_.push_back(i);
     }
   }
@@ -245,41 +187,48 @@ void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
   {
     return;
   }
-  const double stopped_at = toi_[q];
-  const double pushed_before = pushed_at_[q];
-  toi_[q] = t;
-  pushed_at_[q] = t;
-  const Vec2 push = push_ahead(q, p, h, path);
+  const Vec2 push = push_ahead(q, p, t, substep_displacement(q, h) * t, path);
   if (t <= 0.0 && push.x == 0.0 && push.y == 0.0)
   {
-    toi_[q] = stopped_at;  // touching already, and not closing: the velocity stage's
-    pushed_at_[q] = pushed_before;
-    return;
+    return;  // touching already, and not closing: the velocity stage's
   }
+  toi_[q] = t;
+  pushed_at_[q] = t;
   pusher_[q] = p;
   push_[q] = push;
   next_pushed_.push_back(q);
 }
 
-Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double h, Vec2 face_move)
+Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, Vec2 face_move)
 {
-  // Both bodies posed where the face meets body i, for the narrow phase,
-  // then put back.
-  const double t = pushed_at_[i];
+  Vec2 normal;
+  if (!touch_normal(i, k, body_move, face_move * t, normal))
+  {
+    return Vec2{0.0, 0.0};
+  }
+  // A face moving away from the body along the normal pushes nothing.
+  return ((1.0 - t) * std::max(0.0, dot(face_move, normal))) * normal;
+}
+
+bool WorldImpl::touch_normal(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, Vec2& normal)
+{
+  // Both bodies posed for the narrow phase, then put back. Two disks on one
+  // centre have no normal (collide would throw).
   Body& body = bodies_[i];
   Body& face = bodies_[k];
   const Vec2 body_at = body.position();
   const Vec2 face_at = face.position();
-  body.set_position(body_at + substep_displacement(i, h) * toi_[i]);
-  face.set_position(face_at + face_move * t);
+  body.set_position(body_at + i_move);
+  face.set_position(face_at + k_move);
+  const bool coincident =
+      face.shape() == Shape::Disk && body.shape() == Shape::Disk && face.position() == body.position();
   const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance * (body.radius() + face.radius());
-  Vec2 normal;
-  const bool touching = touch_normal(face, body, tolerance, normal);
+  Manifold m;
+  const bool touching = !coincident && collide(face, body, m, tolerance);
   body.set_position(body_at);
   face.set_position(face_at);
-  // A face moving away from the body along the normal pushes nothing.
-  const double advance = touching ? (1.0 - t) * std::max(0.0, dot(face_move, normal)) : 0.0;
-  return advance * normal;
+  normal = m.normal;
+  return touching;
 }
 
 Vec2 WorldImpl::pushed_path(std::size_t i, double h) const

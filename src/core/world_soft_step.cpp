@@ -159,9 +159,7 @@ void WorldImpl::prepare_soft_bodies()
       note_touching(pairs_[k].second);
     }
   }
-  // A fast kinematic body is swept, against any body (world_kinematic_push.cpp).
-  const bool fast_face = candidates && census_.moving_kinematic_bodies > 0 && any_fast_face(bound);
-  choose_sweep_pass(any_may_turn_fast.load() || fast_face);
+  choose_sweep_pass(any_may_turn_fast.load());
 }
 
 bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)

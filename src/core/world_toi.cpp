@@ -87,7 +87,9 @@ Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
 
 double WorldImpl::sweep_reach_sq(std::size_t i) const
 {
-  if (!awake_dynamic(i))
+  // A kinematic body is swept too: what it strikes is pushed ahead of it
+  // (world_kinematic_push.cpp).
+  if (!awake_dynamic(i) && bodies_[i].type() != BodyType::Kinematic)
   {
     return -1.0;
   }
@@ -156,17 +158,12 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored)
   }
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
-  if (census_.moving_kinematic_bodies > 0)
-  {
-    mark_swept_with_faces(h, stored);                     // world_kinematic_push.cpp
-  }
-  else
-  {
-    for_each_body([&](std::size_t i) {
-      const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
-      swept_[i] = is_swept(fast_reach_sq(i, stored), d, mode);
-    });
-  }
+  for_each_body([&](std::size_t i) {
+    const double reach_sq = fast_reach_sq(i, stored);
+    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
+    const bool moving = d.x != 0.0 || d.y != 0.0;
+    swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
+  });
   if (body_pass_full_)
   {
     return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
@@ -203,6 +200,8 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
   {
     return false;
   }
+  // Only a world with a moving kinematic body keeps the books of pushes.
+  pushing_ = census_.moving_kinematic_bodies > 0;
   // The pairs' sweeps read every body's velocity and outline: the soft
   // step's velocities and poses so far go onto the bodies.
   place_bodies(!stored);

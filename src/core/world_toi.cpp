@@ -18,6 +18,7 @@
 
 #include "collision2d/time_of_impact.h"
 #include "collision2d/touch_tolerance.h"
+#include "outline_gap.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -37,24 +38,6 @@ constexpr std::size_t kMinBodiesToChooseSweepCandidates = 16;
 /// enough that an outline stopped there overlaps its obstacle mostly on the
 /// centroid's side, so the push out goes back the way the body came.
 constexpr double kCoreFraction = 0.25;
-
-/// Distance from the centroid to the nearest face: the thinnest a body can be
-/// seen from any direction is twice this.
-double inner_radius(const Body& b)
-{
-  if (b.shape() == Shape::Disk)
-  {
-    return b.radius();
-  }
-  double inner = std::numeric_limits<double>::infinity();
-  const std::vector<Vec2>& vertices = b.local_vertices();
-  const std::vector<Vec2>& normals = b.local_face_normals();
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-  {
-    inner = std::min(inner, dot(vertices[i], normals[i]));
-  }
-  return inner;
-}
 
 }  // namespace
 

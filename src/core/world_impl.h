@@ -232,6 +232,16 @@ struct WorldImpl : WorldState
   bool mark_swept_bodies(double h, bool stored);
   /// mark_swept_bodies over sweep_candidates_ only.
   bool mark_sweep_candidates(double h);
+  /// mark_swept_bodies over every body by its translation.
+  bool mark_every_body(double h, bool stored);
+  /// Marks the turning kinematic polygons whose points move past their
+  /// reach in a substep of h seconds; true if any.
+  __attribute__((noinline, cold)) bool mark_turning_faces(double h);
+  /// How far body i's outline turns in a sweep of h seconds (rad): a
+  /// kinematic polygon's spin, 0 for any other body.
+  double substep_turn(std::size_t i, double h) const;
+  /// The sweep's boxes of turning kinematic polygons: their bounding circles.
+  __attribute__((noinline, cold)) void grow_turning_boxes(double h);
   bool sweep(double h, StepReport& report, bool stored = true);
   bool clamped(std::size_t i) const;
   /// Fx2D: the broad-phase boxes of the bodies stopped at their time of
@@ -241,7 +251,7 @@ struct WorldImpl : WorldState
   bool has_frame_contact(std::size_t i, std::size_t j) const;
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
   /// against the other body of pair (i, j) moved by di and dj, else 1.
-  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
+  double core_time_of_impact(std::size_t i, std::size_t j, double h, bool stored) const;
 
   // world_kinematic_push.cpp: fast kinematic bodies swept, and what they strike pushed ahead.
   /// Body i's earliest impact so far is with `other`: pushed on if that is kinematic.
@@ -252,8 +262,9 @@ struct WorldImpl : WorldState
   /// Once every stop is known: a listed face that meets its body's path
   /// pushes the body from there (in the soft step, only a stopped body).
   void press_touching_faces(double h, bool soft_substep);
-  /// Whether the face, touching the body now, closes on it by `closing` (m).
-  bool closes_now(std::size_t face, std::size_t body, Vec2 closing);
+  /// Whether the face, touching the body now, closes on it as it moves
+  /// `face_move` (m) while the body moves `path` (m).
+  bool closes_now(std::size_t face, std::size_t body, Vec2 face_move, Vec2 path);
   /// push_ for every body a kinematic body strikes in this substep of h
   /// seconds, and for every body a pushed body strikes in turn.
   void find_pushes(double h);
@@ -265,13 +276,25 @@ struct WorldImpl : WorldState
   bool pass_pushes_on(double h);
   /// Pushed body p meets body q on its way: q is pushed if p reaches it first.
   void push_on(std::size_t p, std::size_t q, double h);
-  /// How far face k, moving `face_move` (m) in the substep, pushes body i
-  /// on along their contact normal (m) from the time t (fraction) at which
-  /// it meets the body, moved `body_move` (m) by then.
-  Vec2 push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, Vec2 face_move);
-  /// The normal from body k into body i with both moved by `i_move` and
-  /// `k_move` (m), if they touch there (false otherwise).
-  bool touch_normal(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, Vec2& normal);
+  /// How far face k, moving and turning by `face` in the substep, pushes
+  /// body i on along their contact normal (m) from the time t (fraction) at
+  /// which it meets the body, moved `body_move` (m) by then.
+  Vec2 push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face);
+  /// push_ahead for a free body touching turning face k at the substep's
+  /// start (manifold m), moved `body_move` (m) on its own.
+  Vec2 lift_on_turning_face(std::size_t i, std::size_t k, Vec2 body_move, FaceMove face, const Manifold& m);
+  /// push_ahead for a body that turning face k strikes at time t along `normal`.
+  Vec2 carry_on_turning_face(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face, Vec2 normal);
+  /// How far the material points of face k at manifold m's points move
+  /// along its normal (m) as the face, offset by `k_offset`, moves `move`
+  /// and turns `turn` (rad): the fastest of them.
+  double face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, Vec2 move, double turn) const;
+  /// The manifold from body k into body i with i moved by `i_move`, k by
+  /// `k_move` and turned by `k_turn`, if they touch there (false otherwise).
+  bool touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m);
+  /// That manifold for pairs within `tolerance` (m) of touching.
+  bool posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, double tolerance,
+                      Manifold& m);
   /// Where body i's substep takes it (m): its move up to its impact, then its push.
   Vec2 pushed_path(std::size_t i, double h) const;
 

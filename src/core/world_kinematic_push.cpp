@@ -5,6 +5,10 @@
 // normal over the rest of the substep; a body near the face that stops
 // against another body while the face closes on it is pushed from where
 // the face meets it; a pushed body pushes what it strikes in turn.
+// A turning face (a kinematic polygon that spins) is swept with its turn;
+// a body it strikes is carried round with it, and a body touching it moves
+// on and is lifted back onto the face where the substep ends, since a
+// straight move falls behind a turning face however slowly it turns.
 // The Fx2D order finds contacts where a substep ends: the pushed pair ends
 // touching, detection counts it (a stopped body's touch tolerance), and the
 // velocity stage gives the body the face's normal velocity. The soft step's
@@ -12,10 +16,12 @@
 // the face's reach in the frame), so there only a stopped body is pushed,
 // and it is not held for the rest of the frame.
 #include <algorithm>
+#include <limits>
 
 #include "collision2d/collide.h"
 #include "collision2d/time_of_impact.h"
 #include "collision2d/touch_tolerance.h"
+#include "turn.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -35,6 +41,17 @@ constexpr int kMaxPushRounds = 16;
 /// Two times of impact closer than this (fraction of a substep) are one:
 /// the sweep found a stop along the body's own move that a push retraces.
 constexpr double kSameImpact = 1e-9;
+
+/// The signed gap of a manifold's deepest point (m): negative when overlapping.
+double deepest_separation(const Manifold& m)
+{
+  double deepest = m.points[0].separation;
+  for (int p = 1; p < m.count; ++p)
+  {
+    deepest = std::min(deepest, m.points[p].separation);
+  }
+  return deepest;
+}
 
 }  // namespace
 
@@ -72,9 +89,11 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
       continue;
     }
     const Vec2 face_move = substep_displacement(face, h);
+    const double face_turn = substep_turn(face, h);
     const Vec2 path = held ? Vec2{0.0, 0.0} : substep_displacement(body, h) * toi_[body];
-    double t = time_of_impact(bodies_[face], face_move, bodies_[body], path);
-    if (t <= 0.0 && !closes_now(face, body, face_move - path))
+    double t = time_of_impact(bodies_[face], face_move, face_turn, bodies_[body], path, 0.0);
+    // A turning face is checked where the substep ends (push_ahead).
+    if (t <= 0.0 && face_turn == 0.0 && !closes_now(face, body, face_move, path))
     {
       continue;
     }
@@ -83,20 +102,24 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
       continue;
     }
     t = std::max(t, 0.0);
-    toi_[body] = held ? 0.0 : t * toi_[body];  // where on its path the face meets it
+    // A free body on a turning face keeps its own move: the face's turn
+    // lifts it where the substep ends (push_ahead).
+    const bool moves_on = t == 0.0 && !held && toi_[body] >= 1.0 && face_turn != 0.0;
+    toi_[body] = held ? 0.0 : moves_on ? 1.0 : t * toi_[body];  // where on its path the face meets it
     pusher_[body] = face;
     pushed_at_[body] = t;
   }
 }
 
-bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 closing)
+bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 face_move, Vec2 path)
 {
   // A closing within the touch tolerance is round-off of a body that moves
   // with the face.
   const double tolerance =
       kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[face].radius() + bodies_[body].radius());
-  Vec2 normal;
-  return touch_normal(body, face, Vec2{0.0, 0.0}, Vec2{0.0, 0.0}, normal) && dot(closing, normal) > tolerance;
+  Manifold m;
+  return touch_manifold(body, face, Vec2{0.0, 0.0}, Vec2{0.0, 0.0}, 0.0, m) &&
+         dot(face_move - path, m.normal) > tolerance;
 }
 
 void WorldImpl::find_pushes(double h)
@@ -109,7 +132,8 @@ void WorldImpl::find_pushes(double h)
     const std::size_t face = pusher_[i];
     if (face != kNoPusher)
     {
-      push_[i] = push_ahead(i, face, pushed_at_[i], substep_displacement(i, h) * toi_[i], substep_displacement(face, h));
+      push_[i] = push_ahead(i, face, pushed_at_[i], substep_displacement(i, h) * toi_[i],
+                            FaceMove{substep_displacement(face, h), substep_turn(face, h)});
       last_pushed_.push_back(i);
     }
   }
@@ -187,7 +211,7 @@ void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
   {
     return;
   }
-  const Vec2 push = push_ahead(q, p, t, substep_displacement(q, h) * t, path);
+  const Vec2 push = push_ahead(q, p, t, substep_displacement(q, h) * t, FaceMove{path, 0.0});
   if (t <= 0.0 && push.x == 0.0 && push.y == 0.0)
   {
     return;  // touching already, and not closing: the velocity stage's
@@ -199,18 +223,91 @@ void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
   next_pushed_.push_back(q);
 }
 
-Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, Vec2 face_move)
+Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face)
 {
-  Vec2 normal;
-  if (!touch_normal(i, k, body_move, face_move * t, normal))
+  // A free body touching a turning face moves on (press_touching_faces):
+  // it meets the face at the substep's start.
+  const bool moves_on = face.turn != 0.0 && t <= 0.0 && toi_[i] >= 1.0;
+  Manifold m;
+  if (!touch_manifold(i, k, moves_on ? Vec2{0.0, 0.0} : body_move, face.move * t, face.turn * t, m))
   {
     return Vec2{0.0, 0.0};
   }
   // A face moving away from the body along the normal pushes nothing.
-  return ((1.0 - t) * std::max(0.0, dot(face_move, normal))) * normal;
+  const double advance = face_advance(k, m, face.move * t, face.move, face.turn);
+  if (face.turn == 0.0)
+  {
+    return ((1.0 - t) * std::max(0.0, advance)) * m.normal;
+  }
+  if (moves_on)
+  {
+    return lift_on_turning_face(i, k, body_move, face, m);
+  }
+  return !(advance > 0.0) ? Vec2{0.0, 0.0} : carry_on_turning_face(i, k, t, body_move, face, m.normal);
 }
 
-bool WorldImpl::touch_normal(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, Vec2& normal)
+Vec2 WorldImpl::lift_on_turning_face(std::size_t i, std::size_t k, Vec2 body_move, FaceMove face, const Manifold& m)
+{
+  // In the face's frame the body's own straight move falls behind the
+  // turning face; it is lifted back to touching, where detection finds it.
+  const Body& f = bodies_[k];
+  const Vec2 start = bodies_[i].position() - f.position();
+  const Vec2 end = bodies_[i].position() + body_move - (f.position() + face.move);
+  double c = 1.0;
+  double s = 0.0;
+  turn_of(face.turn, c, s);
+  const Vec2 turned_normal = rotate(m.normal, c, s);
+  const double touching_height = dot(start, m.normal) - deepest_separation(m);
+  return std::max(0.0, touching_height - dot(end, turned_normal)) * turned_normal;
+}
+
+Vec2 WorldImpl::carry_on_turning_face(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face,
+                                      Vec2 normal)
+{
+  // A struck body is carried round with the face (a push along the first
+  // normal would fall behind a face that turns far) and pushed by the
+  // centroid's advance along the normal; where the substep ends it is put
+  // touching the face, which the carry leaves only to first order.
+  const Vec2 arm = bodies_[i].position() + body_move - (bodies_[k].position() + face.move * t);
+  double c = 1.0;
+  double s = 0.0;
+  turn_of((1.0 - t) * face.turn, c, s);
+  const Vec2 push = (rotate(arm, c, s) - arm) + ((1.0 - t) * std::max(0.0, dot(face.move, normal))) * normal;
+  Manifold end;
+  const double reach = kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
+  if (!posed_manifold(i, k, body_move + push, face.move, face.turn, reach, end))
+  {
+    return push;
+  }
+  return push - deepest_separation(end) * end.normal;
+}
+
+double WorldImpl::face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, Vec2 move, double turn) const
+{
+  if (turn == 0.0)
+  {
+    return dot(move, m.normal);
+  }
+  // A turning face's point at the contact moves by the turn about the
+  // centroid as well; the fastest of the manifold's points sets the push.
+  const Vec2 centroid = bodies_[k].position() + k_offset;
+  double advance = -std::numeric_limits<double>::infinity();
+  for (int p = 0; p < m.count; ++p)
+  {
+    advance = std::max(advance, dot(move + cross(turn, m.points[p].point - centroid), m.normal));
+  }
+  return advance;
+}
+
+bool WorldImpl::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m)
+{
+  const double tolerance =
+      kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
+  return posed_manifold(i, k, i_move, k_move, k_turn, tolerance, m);
+}
+
+bool WorldImpl::posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn,
+                               double tolerance, Manifold& m)
 {
   // Both bodies posed for the narrow phase, then put back. Two disks on one
   // centre have no normal (collide would throw).
@@ -218,16 +315,22 @@ bool WorldImpl::touch_normal(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_m
   Body& face = bodies_[k];
   const Vec2 body_at = body.position();
   const Vec2 face_at = face.position();
+  const double face_theta = face.theta();
   body.set_position(body_at + i_move);
   face.set_position(face_at + k_move);
+  if (k_turn != 0.0)
+  {
+    face.set_theta(face_theta + k_turn);
+  }
   const bool coincident =
       face.shape() == Shape::Disk && body.shape() == Shape::Disk && face.position() == body.position();
-  const double tolerance = kImpactNormalToleranceScale * kRelativeTouchTolerance * (body.radius() + face.radius());
-  Manifold m;
   const bool touching = !coincident && collide(face, body, m, tolerance);
   body.set_position(body_at);
   face.set_position(face_at);
-  normal = m.normal;
+  if (k_turn != 0.0)
+  {
+    face.set_theta(face_theta);
+  }
   return touching;
 }
 

@@ -46,6 +46,14 @@ struct FreeSpeedBound
   double frame_kick = 0.0;  ///< speed gravity adds in a frame (m/s)
 };
 
+/// How a pushing face moves in a substep: its translation (m) and its turn
+/// about its centroid (rad), 0 for any face but a kinematic polygon.
+struct FaceMove
+{
+  Vec2 move;
+  double turn = 0.0;
+};
+
 /// Soft step: a contact point that can bounce (e > 0) and where its normal
 /// impulses live during the substeps (world_soft_restitution.cpp).
 struct BouncePoint
@@ -94,7 +102,7 @@ struct BodyCensus
   // centroid; frictionless impulses on a disk act through its centre.
   std::size_t dynamic_polygons = 0;
   std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
-  std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp)
+  std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp, world_toi.cpp)
   std::size_t moving_kinematic_bodies = 0;  ///< kinematic bodies with a velocity (world_kinematic_push.cpp)
   void add(const BodyCensus& other);
   /// Pairs combine materials by min, so a pair shows a property only when

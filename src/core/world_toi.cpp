@@ -4,7 +4,8 @@
 // impact. There it touches its obstacle; detection counts that touching pair
 // as a contact (touch tolerance) and the velocity solve takes the impact.
 // The sweep is translation-only with each body's current orientation, as
-// time_of_impact() defines it; the rest of a clamped body's substep move is
+// time_of_impact() defines it, except for a kinematic polygon's set spin,
+// which its sweep turns; the rest of a clamped body's substep move is
 // dropped, its velocity is not. A pair that already touches (or that the soft
 // step's solver holds) is swept again with each fast body shrunk to a small
 // disk at its centroid: a spin can carry an outline's far side through a thin
@@ -132,13 +133,16 @@ bool WorldImpl::sweep_candidates_pay() const
 
 bool WorldImpl::mark_swept_bodies(double h, bool stored)
 {
-  const Toggle mode = settings_.time_of_impact;
   // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
-  if (!stored && !sweep_every_body_)
-  {
-    return mark_sweep_candidates(h);
-  }
+  const bool any = !stored && !sweep_every_body_ ? mark_sweep_candidates(h) : mark_every_body(h, stored);
+  // A turning kinematic polygon's far points move faster than its centroid.
+  return census_.turning_face_bodies > 0 ? mark_turning_faces(h) || any : any;
+}
+
+bool WorldImpl::mark_every_body(double h, bool stored)
+{
+  const Toggle mode = settings_.time_of_impact;
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
   for_each_body([&](std::size_t i) {
@@ -175,6 +179,46 @@ bool WorldImpl::mark_sweep_candidates(double h)
   return any.load();
 }
 
+bool WorldImpl::mark_turning_faces(double h)
+{
+  bool any = false;
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    const double turn = substep_turn(i, h);
+    if (turn != 0.0)
+    {
+      const double move = length(substep_displacement(i, h)) + std::abs(turn) * bodies_[i].radius();
+      swept_[i] = settings_.time_of_impact == Toggle::On || move * move > sweep_reach_sq(i);
+      any = any || swept_[i] != 0;
+    }
+  }
+  return any;
+}
+
+double WorldImpl::substep_turn(std::size_t i, double h) const
+{
+  // Only a kinematic polygon's outline turns in a sweep: a dynamic body's
+  // sweep keeps its orientation and a disk's outline has none.
+  const Body& b = bodies_[i];
+  const bool turning = census_.turning_face_bodies > 0 && b.type() == BodyType::Kinematic &&
+                       b.shape() == Shape::Polygon && !asleep_[i];
+  return turning ? b.omega() * h : 0.0;
+}
+
+void WorldImpl::grow_turning_boxes(double h)
+{
+  // A turning outline stays inside its bounding circle.
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  {
+    if (substep_turn(i, h) != 0.0)
+    {
+      const Vec2 half{bodies_[i].radius(), bodies_[i].radius()};
+      const Vec2 at = bodies_[i].position();
+      boxes_[i] = Aabb{at - half, at + half}.swept(substep_displacement(i, h));
+    }
+  }
+}
+
 bool WorldImpl::sweep(double h, StepReport& report, bool stored)
 {
   clamping_ = false;
@@ -184,7 +228,7 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     return false;
   }
   // Only a world with a moving kinematic body keeps the books of pushes.
-  pushing_ = census_.moving_kinematic_bodies > 0;
+  pushing_ = census_.moving_kinematic_bodies > 0 || census_.turning_face_bodies > 0;
   // The pairs' sweeps read every body's velocity and outline: the soft
   // step's velocities and poses so far go onto the bodies.
   place_bodies(!stored);
@@ -195,6 +239,10 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
   {
     boxes_[i] = bodies_[i].aabb().swept(substep_displacement(i, h));
     report.swept_bodies += swept_[i] ? 1 : 0;
+  }
+  if (census_.turning_face_bodies > 0)
+  {
+    grow_turning_boxes(h);
   }
   sweep_phase_.find_pairs(boxes_, pairs_);
   if (pushing_)
@@ -217,16 +265,20 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     const bool held = !stored && has_frame_contact(i, j);
     const Vec2 di = substep_displacement(i, h);
     const Vec2 dj = substep_displacement(j, h);
-    double t = held ? 0.0 : time_of_impact(bodies_[i], di, bodies_[j], dj);
+    double t = held ? 0.0 : time_of_impact(bodies_[i], di, substep_turn(i, h), bodies_[j], dj, substep_turn(j, h));
     if (pushing_ && (t <= 0.0 || t >= 1.0))
     {
       note_touching_face(i, j);                           // world_kinematic_push.cpp
     }
     // t = 0: already touching or overlapping, which detection (or the
     // solver) handles, as long as no centroid passes into the other body.
-    if (t <= 0.0)
+    // In the Fx2D order a body touching a turning face is lifted onto it
+    // instead (the face overruns a straight path however slowly it turns);
+    // in the soft step the pair's contact holds it.
+    const bool turning = stored && pushing_ && (substep_turn(i, h) != 0.0 || substep_turn(j, h) != 0.0);
+    if (t <= 0.0 && !turning)
     {
-      t = core_time_of_impact(i, j, di, dj, stored);
+      t = core_time_of_impact(i, j, h, stored);
     }
     if (t <= 0.0 || t >= 1.0)
     {
@@ -270,10 +322,12 @@ bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
   return found != points_.end() && found->a == a && found->b == b;
 }
 
-double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const
+double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, double h, bool stored) const
 {
   // Only a body fast against the other (as Auto judges fast) can carry its
   // centroid that far: resting pairs swept with time_of_impact On skip this.
+  const Vec2 di = substep_displacement(i, h);
+  const Vec2 dj = substep_displacement(j, h);
   const double relative_sq = length_sq(di - dj);
   double earliest = 1.0;
   for (const auto& [k, other, dk, d_other] : {std::tuple{i, j, di, dj}, std::tuple{j, i, dj, di}})

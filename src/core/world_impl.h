@@ -251,7 +251,7 @@ struct WorldImpl : WorldState
   bool has_frame_contact(std::size_t i, std::size_t j) const;
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
   /// against the other body of pair (i, j) moved by di and dj, else 1.
-  double core_time_of_impact(std::size_t i, std::size_t j, double h, bool stored) const;
+  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
 
   // world_kinematic_push.cpp: fast kinematic bodies swept, and what they strike pushed ahead.
   /// Body i's earliest impact so far is with `other`: pushed on if that is kinematic.
@@ -277,8 +277,9 @@ struct WorldImpl : WorldState
   /// Pushed body p meets body q on its way: q is pushed if p reaches it first.
   void push_on(std::size_t p, std::size_t q, double h);
   /// How far face k, moving and turning by `face` in the substep, pushes
-  /// body i on along their contact normal (m) from the time t (fraction) at
-  /// which it meets the body, moved `body_move` (m) by then.
+  /// body i (m) from the time t (fraction) at which it meets the body,
+  /// moved `body_move` (m) by then: along their contact normal by a face
+  /// that only moves; round with it, or back onto it, by one that turns.
   Vec2 push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face);
   /// push_ahead for a free body touching turning face k at the substep's
   /// start (manifold m), moved `body_move` (m) on its own.

@@ -278,7 +278,7 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     const bool turning = stored && pushing_ && (substep_turn(i, h) != 0.0 || substep_turn(j, h) != 0.0);
     if (t <= 0.0 && !turning)
     {
-      t = core_time_of_impact(i, j, h, stored);
+      t = core_time_of_impact(i, j, di, dj, stored);
     }
     if (t <= 0.0 || t >= 1.0)
     {
@@ -322,12 +322,10 @@ bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
   return found != points_.end() && found->a == a && found->b == b;
 }
 
-double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, double h, bool stored) const
+double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const
 {
   // Only a body fast against the other (as Auto judges fast) can carry its
   // centroid that far: resting pairs swept with time_of_impact On skip this.
-  const Vec2 di = substep_displacement(i, h);
-  const Vec2 dj = substep_displacement(j, h);
   const double relative_sq = length_sq(di - dj);
   double earliest = 1.0;
   for (const auto& [k, other, dk, d_other] : {std::tuple{i, j, di, dj}, std::tuple{j, i, dj, di}})

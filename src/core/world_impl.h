@@ -293,6 +293,9 @@ struct WorldImpl : WorldState
   /// The manifold from body k into body i with i moved by `i_move`, k by
   /// `k_move` and turned by `k_turn`, if they touch there (false otherwise).
   bool touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m);
+  /// How near (m) bodies i and k count as touching at a time of impact:
+  /// the touch tolerance, widened for the round-off of posing them there.
+  double impact_tolerance(std::size_t i, std::size_t k) const;
   /// That manifold for pairs within `tolerance` (m) of touching.
   bool posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, double tolerance,
                       Manifold& m);

@@ -115,8 +115,7 @@ bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 face_move, V
 {
   // A closing within the touch tolerance is round-off of a body that moves
   // with the face.
-  const double tolerance =
-      kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[face].radius() + bodies_[body].radius());
+  const double tolerance = impact_tolerance(face, body);
   Manifold m;
   return touch_manifold(body, face, Vec2{0.0, 0.0}, Vec2{0.0, 0.0}, 0.0, m) &&
          dot(face_move - path, m.normal) > tolerance;
@@ -274,8 +273,7 @@ Vec2 WorldImpl::carry_on_turning_face(std::size_t i, std::size_t k, double t, Ve
   turn_of((1.0 - t) * face.turn, c, s);
   const Vec2 push = (rotate(arm, c, s) - arm) + ((1.0 - t) * std::max(0.0, dot(face.move, normal))) * normal;
   Manifold end;
-  const double reach = kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
-  if (!posed_manifold(i, k, body_move + push, face.move, face.turn, reach, end))
+  if (!posed_manifold(i, k, body_move + push, face.move, face.turn, impact_tolerance(i, k), end))
   {
     return push;
   }
@@ -301,9 +299,12 @@ double WorldImpl::face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, 
 
 bool WorldImpl::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m)
 {
-  const double tolerance =
-      kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
-  return posed_manifold(i, k, i_move, k_move, k_turn, tolerance, m);
+  return posed_manifold(i, k, i_move, k_move, k_turn, impact_tolerance(i, k), m);
+}
+
+double WorldImpl::impact_tolerance(std::size_t i, std::size_t k) const
+{
+  return kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
 }
 
 bool WorldImpl::posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn,

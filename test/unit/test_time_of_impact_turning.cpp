@@ -7,9 +7,9 @@
 #include <cmath>
 #include <random>
 #include <string>
-#include <vector>
 
 #include "collision2d/collide.h"
+#include "collision2d/scenes/scene_parts.h"
 #include "collision2d/time_of_impact.h"
 #include "collision2d/touch_tolerance.h"
 
@@ -21,10 +21,10 @@ namespace
 constexpr int kSamples = 4000;
 constexpr int kCases = 300;
 
+/// A 1 kg box of half-sizes half_x by half_y (m), at rest.
 Body box(double half_x, double half_y, Vec2 position, double theta)
 {
-  const std::vector<Vec2> corners{{-half_x, -half_y}, {half_x, -half_y}, {half_x, half_y}, {-half_x, half_y}};
-  return Body(1.0, corners, position, {0.0, 0.0}, theta);
+  return scenes::make_box(1.0, 2.0 * half_x, 2.0 * half_y, position, theta);
 }
 
 struct TurningSweep

@@ -208,6 +208,23 @@ struct WorldImpl : WorldState
   /// O(1) update for a body just appended: building a world stays O(n).
   void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
+  /// How far body i's outline turns in a sweep of h seconds (rad): a
+  /// kinematic polygon's spin, 0 for any other body.
+  double substep_turn(std::size_t i, double h) const;
+  /// The sweep's boxes of turning kinematic polygons: their bounding circles.
+  __attribute__((noinline, cold)) void grow_turning_boxes(double h);
+  bool sweep(double h, StepReport& report, bool stored = true);
+  bool clamped(std::size_t i) const;
+  /// Fx2D: the broad-phase boxes of the bodies stopped at their time of
+  /// impact, grown by their touch tolerance (world_contacts.cpp calls it).
+  __attribute__((noinline, cold)) void grow_stopped_boxes();
+  /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
+  bool has_frame_contact(std::size_t i, std::size_t j) const;
+  /// Earliest time of impact in (0, 1) of a fast body's centroid core
+  /// against the other body of pair (i, j) moved by di and dj, else 1.
+  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
+
+  // world_sweep_marks.cpp: which bodies a substep sweeps.
   /// The squared substep move above which body i is swept in Auto (m^2);
   /// -1 for a body that is neither awake and dynamic nor kinematic (never swept).
   double sweep_reach_sq(std::size_t i) const;
@@ -237,21 +254,6 @@ struct WorldImpl : WorldState
   /// Marks the turning kinematic polygons whose points move past their
   /// reach in a substep of h seconds; true if any.
   __attribute__((noinline, cold)) bool mark_turning_faces(double h);
-  /// How far body i's outline turns in a sweep of h seconds (rad): a
-  /// kinematic polygon's spin, 0 for any other body.
-  double substep_turn(std::size_t i, double h) const;
-  /// The sweep's boxes of turning kinematic polygons: their bounding circles.
-  __attribute__((noinline, cold)) void grow_turning_boxes(double h);
-  bool sweep(double h, StepReport& report, bool stored = true);
-  bool clamped(std::size_t i) const;
-  /// Fx2D: the broad-phase boxes of the bodies stopped at their time of
-  /// impact, grown by their touch tolerance (world_contacts.cpp calls it).
-  __attribute__((noinline, cold)) void grow_stopped_boxes();
-  /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
-  bool has_frame_contact(std::size_t i, std::size_t j) const;
-  /// Earliest time of impact in (0, 1) of a fast body's centroid core
-  /// against the other body of pair (i, j) moved by di and dj, else 1.
-  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
 
   // world_kinematic_push.cpp: fast kinematic bodies swept, and what they strike pushed ahead.
   /// Body i's earliest impact so far is with `other`: pushed on if that is kinematic.

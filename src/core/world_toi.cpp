@@ -1,8 +1,9 @@
 // Time of impact inside a substep: a dynamic body that moves far enough in one
-// substep to skip over a thin body is swept against the bodies a broad phase
-// over swept boxes finds, and travels only up to its earliest exact time of
-// impact. There it touches its obstacle; detection counts that touching pair
-// as a contact (touch tolerance) and the velocity solve takes the impact.
+// substep to skip over a thin body (world_sweep_marks.cpp marks it) is swept
+// against the bodies a broad phase over swept boxes finds, and travels only
+// up to its earliest exact time of impact. There it touches its obstacle;
+// detection counts that touching pair as a contact (touch tolerance) and the
+// velocity solve takes the impact.
 // The sweep is translation-only with each body's current orientation, as
 // time_of_impact() defines it, except for a kinematic polygon's set spin,
 // which its sweep turns; the rest of a clamped body's substep move is
@@ -11,7 +12,6 @@
 // disk at its centroid: a spin can carry an outline's far side through a thin
 // body the sweep saw touching, but never the centroid, which moves on a line.
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <tuple>
@@ -28,13 +28,6 @@ namespace detail
 {
 namespace
 {
-/// A body's reach is divided by this before a free body's speed is held to
-/// it (may_turn_fast): far above the round-off of a frame's gravity kicks.
-constexpr double kReachRoundOffMargin = 1.0 + 1e-9;
-/// Visited bodies below which each substep checks all of them: in a world this
-/// small choosing the candidates costs more than it saves (docs/performance.md,
-/// the thirty-ninth profile note).
-constexpr std::size_t kMinBodiesToChooseSweepCandidates = 16;
 /// A centroid core's radius as a fraction of its body's inner radius: small
 /// enough that an outline stopped there overlaps its obstacle mostly on the
 /// centroid's side, so the push out goes back the way the body came.
@@ -67,132 +60,6 @@ Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
 {
   const Body& b = bodies_[i];
   return b.type() == BodyType::Static || asleep_[i] ? Vec2{0.0, 0.0} : b.velocity() * h;
-}
-
-double WorldImpl::sweep_reach_sq(std::size_t i) const
-{
-  // A kinematic body is swept too: what it strikes is pushed ahead of it
-  // (world_kinematic_push.cpp).
-  if (!awake_dynamic(i) && bodies_[i].type() != BodyType::Kinematic)
-  {
-    return -1.0;
-  }
-  // Two bodies can pass through each other in one substep only when their
-  // relative move exceeds the sum of their thinnest half-widths.
-  const double reach = settings_.toi_displacement_fraction * (inner_radius_[i] + min_inner_radius_);
-  return reach * reach;
-}
-
-double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
-{
-  // The soft step set its thresholds for the frame (reset_body_motion).
-  return stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
-}
-
-FreeSpeedBound WorldImpl::free_speed_bound(double h) const
-{
-  // A body no contact touches gains at most one frame of gravity's speed;
-  // the margin covers the round-off of the substeps' kicks and of the test.
-  return FreeSpeedBound{settings_.toi_displacement_fraction / (h * kReachRoundOffMargin),
-                        length(settings_.gravity) * settings_.dt};
-}
-
-bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
-{
-  if (swept_reach_sq_[i] < 0.0)  // set for the frame (reset_body_motion)
-  {
-    return false;
-  }
-  const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_) - bound.frame_kick;
-  return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);
-}
-
-void WorldImpl::note_touching(std::size_t i)
-{
-  // A visited body was reset to untouched, so it is listed once; a resting
-  // body outside the frame's pass is never a candidate.
-  if (!sweep_every_body_ && !touching_[i] && (body_pass_full_ || !is_resting_[i]) && swept_reach_sq_[i] >= 0.0)
-  {
-    sweep_candidates_.push_back(i);
-  }
-  touching_[i] = true;
-}
-
-void WorldImpl::choose_sweep_pass(bool any_may_turn_fast)
-{
-  // With most bodies touched, the plain pass over them is the cheaper.
-  sweep_every_body_ = sweep_every_body_ || any_may_turn_fast || 2 * sweep_candidates_.size() > visited_count();
-}
-
-bool WorldImpl::sweep_candidates_pay() const
-{
-  // With toi On every moving body is swept; in a world of a few bodies the
-  // plain check of each costs less than choosing them.
-  return settings_.time_of_impact == Toggle::Auto && visited_count() >= kMinBodiesToChooseSweepCandidates;
-}
-
-bool WorldImpl::mark_swept_bodies(double h, bool stored)
-{
-  // A resting body's flag stays 0 from the frame that made it rest.
-  swept_.resize(bodies_.size());
-  const bool any = !stored && !sweep_every_body_ ? mark_sweep_candidates(h) : mark_every_body(h, stored);
-  // A turning kinematic polygon's far points move faster than its centroid.
-  return census_.turning_face_bodies > 0 ? mark_turning_faces(h) || any : any;
-}
-
-bool WorldImpl::mark_every_body(double h, bool stored)
-{
-  const Toggle mode = settings_.time_of_impact;
-  // The soft step reads its own velocities and the thresholds it set for the
-  // frame (reset_body_motion): its pass need not read the bodies.
-  for_each_body([&](std::size_t i) {
-    const double reach_sq = fast_reach_sq(i, stored);
-    const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
-    const bool moving = d.x != 0.0 || d.y != 0.0;
-    swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
-  });
-  if (body_pass_full_)
-  {
-    return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
-  }
-  return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != 0; });
-}
-
-bool WorldImpl::mark_sweep_candidates(double h)
-{
-  // The other bodies' flags were cleared for the frame (prepare_soft_bodies)
-  // and no substep this frame can make them fast (may_turn_fast).
-  std::atomic<bool> any{false};
-  workers_.parallel_for(sweep_candidates_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    bool part_any = false;
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      const std::size_t i = sweep_candidates_[k];
-      swept_[i] = length_sq(velocity_[i].v * h) > swept_reach_sq_[i];
-      part_any = part_any || swept_[i] != 0;
-    }
-    if (part_any)
-    {
-      any.store(true, std::memory_order_relaxed);
-    }
-  });
-  return any.load();
-}
-
-bool WorldImpl::mark_turning_faces(double h)
-{
-  bool any = false;
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    const double turn = substep_turn(i, h);
-    if (turn != 0.0)
-    {
-      const double move = length(substep_displacement(i, h)) + std::abs(turn) * bodies_[i].radius();
-      swept_[i] = settings_.time_of_impact == Toggle::On || move * move > sweep_reach_sq(i);
-      any = any || swept_[i] != 0;
-    }
-  }
-  return any;
 }
 
 double WorldImpl::substep_turn(std::size_t i, double h) const

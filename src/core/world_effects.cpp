@@ -28,6 +28,7 @@ void BodyCensus::add(const BodyCensus& other)
   bouncy += other.bouncy;
   dynamic_bouncy += other.dynamic_bouncy;
   dynamic_polygons += other.dynamic_polygons;
+  widest_dynamic_polygon = std::max(widest_dynamic_polygon, other.widest_dynamic_polygon);
   spinning_disks += other.spinning_disks;
   turning_face_bodies += other.turning_face_bodies;
   moving_kinematic_bodies += other.moving_kinematic_bodies;
@@ -88,6 +89,7 @@ void WorldImpl::count_body(std::size_t i, BodyCensus& census) const
   census.dynamic_bouncy += bouncy && dynamic ? 1 : 0;
   const bool polygon = b.shape() == Shape::Polygon;
   census.dynamic_polygons += dynamic && polygon ? 1 : 0;
+  census.widest_dynamic_polygon = std::max(census.widest_dynamic_polygon, dynamic && polygon ? b.radius() : 0.0);
   census.spinning_disks += dynamic && !polygon && b.omega() != 0.0 ? 1 : 0;
   census.turning_face_bodies += b.type() == BodyType::Kinematic && polygon && b.omega() != 0.0 ? 1 : 0;
   census.moving_kinematic_bodies += b.type() == BodyType::Kinematic && b.velocity() != Vec2{0.0, 0.0} ? 1 : 0;

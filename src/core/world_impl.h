@@ -41,10 +41,13 @@ struct WorldImpl : WorldState
   /// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
   void advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept);
   /// Body i's move over the substep (up to its time of impact when
-  /// `swept`); true when it turns, by omega h, which the caller adds to the
-  /// angle it keeps (advance_body: the body's own).
+  /// `swept`); true when it turns, by omega turn_time, which the caller adds
+  /// to the angle it keeps (advance_body: the body's own).
   bool move_body(std::size_t i, const StepContext& ctx, bool swept);
   void advance_body(std::size_t i, const StepContext& ctx, bool swept);
+  /// How long body i turns in the substep (s): h, or up to its time of
+  /// impact when its sweep turned it.
+  double turn_time(std::size_t i, const StepContext& ctx, bool swept) const;
   void solve_velocity_stage(const StepContext& ctx, StepReport& report);
   void finish_report(StepReport& report);
   /// Of the dynamic bodies after the step (J), summed in body order.
@@ -100,8 +103,9 @@ struct WorldImpl : WorldState
   bool prepare_pair_points(const ActiveEffects& effects, std::size_t k);
   /// prepare_pair_points' soft terms on points [begin, end) (whole pairs).
   bool prepare_soft_range(std::size_t begin, std::size_t end);
-  /// The bodies' side of the preparation: poses at prepare and which bodies touch.
-  void prepare_soft_bodies();
+  /// The bodies' side of the preparation: poses at prepare and which bodies
+  /// touch; `rotation`: whether dynamic bodies turn this frame.
+  void prepare_soft_bodies(bool rotation);
   /// Body i's pose at prepare, no pose change yet, not stopped or touching.
   void reset_body_motion(std::size_t i);
   /// After move_body: a stopped body held, a free one on its parabola,
@@ -204,16 +208,22 @@ struct WorldImpl : WorldState
   void restore_velocities();
 
   // world_toi.cpp
-  void refresh_inner_radii();
+  /// inner_radius_, min_inner_radius_ and outline_radius_ from the bodies.
+  void refresh_sweep_radii();
   /// O(1) update for a body just appended: building a world stays O(n).
-  void append_inner_radius(const Body& body);
+  void append_sweep_radii(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
   /// How far body i's outline turns in a sweep of h seconds (rad): a
-  /// kinematic polygon's spin, 0 for any other body.
+  /// kinematic polygon's spin (face_turn) or a dynamic polygon's marked
+  /// kSweptTurning, 0 for any other body.
   double substep_turn(std::size_t i, double h) const;
-  /// The sweep's boxes of turning kinematic polygons: their bounding circles.
-  __attribute__((noinline, cold)) void grow_turning_boxes(double h);
-  bool sweep(double h, StepReport& report, bool stored = true);
+  /// A turning kinematic polygon's turn in h seconds (rad), else 0.
+  double face_turn(std::size_t i, double h) const;
+  /// Body i's box for the sweep's broad phase: a turning outline's is its
+  /// bounding circle's.
+  Aabb sweep_box(std::size_t i, double h) const;
+  /// `rotation`: whether dynamic bodies turn this substep (the active effect).
+  bool sweep(double h, StepReport& report, bool stored, bool rotation);
   bool clamped(std::size_t i) const;
   /// Fx2D: the broad-phase boxes of the bodies stopped at their time of
   /// impact, grown by their touch tolerance (world_contacts.cpp calls it).
@@ -231,11 +241,22 @@ struct WorldImpl : WorldState
   /// The squared substep move (m^2) beyond which body i counts as fast: the Fx2D
   /// order's (stored) or the soft step's threshold for the frame.
   double fast_reach_sq(std::size_t i, bool stored) const;
-  /// Soft step: the frame's bound on a free body's speed for substeps of `h` (s).
-  FreeSpeedBound free_speed_bound(double h) const;
+  /// Whether body i turning `turn` rad moves its far points past `reach_sq`
+  /// (its fast_reach_sq): then its sweep turns it.
+  bool turn_outruns(std::size_t i, double turn, double reach_sq) const;
+  /// The spin (rad/s) below which no dynamic polygon's turn in a substep of
+  /// h seconds outruns its reach; infinity when dynamic bodies do not turn
+  /// (`rotation` false) or none is a polygon.
+  double spin_floor(double h, bool rotation) const;
+  /// Soft step: the frame's bound on a free body's speed and spin for
+  /// substeps of `h` (s); `rotation`: whether dynamic bodies turn this frame.
+  FreeSpeedBound free_speed_bound(double h, bool rotation) const;
   /// Soft step: whether body i, were no contact to touch it this frame,
   /// could move farther than its reach in a substep (mark_swept_bodies).
   bool may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const;
+  /// Soft step: whether body i, were no contact to touch it this frame,
+  /// could turn its far points past its reach in a substep.
+  bool may_spin_fast(std::size_t i, const FreeSpeedBound& bound) const;
   /// Soft step: whether choosing sweep candidates can pay this frame.
   bool sweep_candidates_pay() const;
   /// Soft step: marks body i touched by a contact this frame, and lists it
@@ -246,11 +267,12 @@ struct WorldImpl : WorldState
   void choose_sweep_pass(bool any_may_turn_fast);
   /// `stored`: the bodies hold their velocities; otherwise (the soft
   /// substep) they are read from velocity_ and stored only if a sweep runs.
-  bool mark_swept_bodies(double h, bool stored);
+  /// `rotation`: whether dynamic bodies turn this substep.
+  bool mark_swept_bodies(double h, bool stored, bool rotation);
   /// mark_swept_bodies over sweep_candidates_ only.
-  bool mark_sweep_candidates(double h);
-  /// mark_swept_bodies over every body by its translation.
-  bool mark_every_body(double h, bool stored);
+  bool mark_sweep_candidates(double h, bool rotation);
+  /// mark_swept_bodies over every body by its translation and spin.
+  bool mark_every_body(double h, bool stored, bool rotation);
   /// Marks the turning kinematic polygons whose points move past their
   /// reach in a substep of h seconds; true if any.
   __attribute__((noinline, cold)) bool mark_turning_faces(double h);

@@ -56,7 +56,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   detect(ctx, settings_.speculative_margin, report, true);  // world_contacts.cpp
   // 2. Prepare the bodies (velocities, poses, which touch); the rows from
   // the prepared points.
-  prepare_soft_bodies();
+  prepare_soft_bodies(ctx.effects.rotation);
   find_turning_faces();                                   // world_turning_faces.cpp
   if (rows_on())
   {
@@ -113,7 +113,7 @@ bool WorldImpl::prepare_pair_points(const ActiveEffects& effects, std::size_t k)
   return prepare_soft_range(begin, end);
 }
 
-void WorldImpl::prepare_soft_bodies()
+void WorldImpl::prepare_soft_bodies(bool rotation)
 {
   velocity_.resize(bodies_.size());
   stopped_.resize(bodies_.size());
@@ -133,7 +133,8 @@ void WorldImpl::prepare_soft_bodies()
   {
     swept_.resize(bodies_.size());
   }
-  const FreeSpeedBound bound = candidates ? free_speed_bound(settings_.dt / settings_.substeps) : FreeSpeedBound{};
+  const FreeSpeedBound bound =
+      candidates ? free_speed_bound(settings_.dt / settings_.substeps, rotation) : FreeSpeedBound{};
   std::atomic<bool> any_may_turn_fast{false};
   for_each_body([&](std::size_t i) {
     load_velocity(i);                                     // world_solve.cpp
@@ -141,7 +142,7 @@ void WorldImpl::prepare_soft_bodies()
     if (candidates)
     {
       swept_[i] = 0;  // each substep sets only the candidates' flags
-      if (may_turn_fast(i, bound))
+      if (may_turn_fast(i, bound) || may_spin_fast(i, bound))
       {
         any_may_turn_fast.store(true, std::memory_order_relaxed);
       }
@@ -289,7 +290,7 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool k
   // with its velocity, shared among the workers. A body stopped at its time
   // of impact stays there for the rest of the frame, velocity kept: no
   // contact stops it before the next frame's collide finds the touching pair.
-  const bool swept = sweep(ctx.h, report, false);         // world_toi.cpp
+  const bool swept = sweep(ctx.h, report, false, ctx.effects.rotation);  // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   poses_pending_ = true;
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
@@ -320,7 +321,7 @@ void WorldImpl::move_in_frame(std::size_t i, const StepContext& ctx, bool swept)
   frame_position_[i] = frame_position_[i] + state.v * travel;
   if (turns(ctx, motion, state.omega))
   {
-    frame_theta_[i] = frame_theta_[i] + state.omega * ctx.h;
+    frame_theta_[i] = frame_theta_[i] + state.omega * turn_time(i, ctx, swept);
   }
 }
 

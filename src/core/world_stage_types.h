@@ -44,6 +44,16 @@ struct FreeSpeedBound
 {
   double per_width = 0.0;   ///< reach speed per metre of the two thinnest half-widths (1/s)
   double frame_kick = 0.0;  ///< speed gravity adds in a frame (m/s)
+  double spin_floor = 0.0;  ///< rad/s: the spin_floor of the frame's substeps
+  double substep = 0.0;     ///< s
+};
+
+/// How a substep sweeps a body (WorldImpl::swept_, one byte each).
+enum SweptAs : unsigned char
+{
+  kNotSwept = 0,
+  kSweptMoving = 1,   ///< along its path, at its orientation
+  kSweptTurning = 2,  ///< a dynamic polygon whose spin outruns its reach: turned too
 };
 
 /// How a pushing face moves in a substep: its translation (m) and its turn
@@ -101,6 +111,7 @@ struct BodyCensus
   // Bodies that turn under contacts: a polygon's impulses act off its
   // centroid; frictionless impulses on a disk act through its centre.
   std::size_t dynamic_polygons = 0;
+  double widest_dynamic_polygon = 0.0;  ///< m: the largest bounding radius of a dynamic polygon
   std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
   std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp, world_toi.cpp)
   std::size_t moving_kinematic_bodies = 0;  ///< kinematic bodies with a velocity (world_kinematic_push.cpp)

@@ -72,6 +72,7 @@ struct WorldState
   std::vector<unsigned char> asleep_;  ///< 1 while the body's island sleeps (bytes: read in every body pass)
   std::vector<double> rest_time_;     ///< how long each body has been resting (s)
   std::vector<double> inner_radius_;  ///< m, for the time-of-impact speed test
+  std::vector<double> outline_radius_;  ///< m: how far a turn of 1 rad moves a polygon's far points; 0 for a disk
   double min_inner_radius_ = 0.0;
 
   // Scratch reused across substeps and steps (no allocation once warmed up).
@@ -123,7 +124,7 @@ struct WorldState
   std::vector<Aabb> mover_boxes_;       ///< their boxes
   std::vector<BodyPair> mover_pairs_;
   std::vector<BodyPair> resting_pairs_;
-  std::vector<unsigned char> swept_;  ///< bodies swept this substep (bytes: set by the workers)
+  std::vector<unsigned char> swept_;  ///< SweptAs per body this substep (bytes: set by the workers)
   std::vector<double> swept_reach_sq_;  ///< soft step: sweep_reach_sq per body, set for the frame
   /// Soft step: the visited bodies a contact touches this frame, which alone
   /// a substep can make fast unless sweep_every_body_ (mark_swept_bodies).

@@ -179,7 +179,7 @@ void WorldImpl::kick(const StepContext& ctx)
 
 void WorldImpl::advance(StepContext& ctx, StepReport& report)
 {
-  const bool swept = sweep(ctx.h, report);                // world_toi.cpp
+  const bool swept = sweep(ctx.h, report, true, ctx.effects.rotation);  // world_toi.cpp
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   advance_bodies(0, bodies_.size(), ctx, swept);
 }
@@ -226,8 +226,14 @@ void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
   if (move_body(i, ctx, swept))
   {
     Body& b = bodies_[i];
-    b.set_theta(b.theta() + b.omega() * ctx.h);
+    b.set_theta(b.theta() + b.omega() * turn_time(i, ctx, swept));
   }
+}
+
+double WorldImpl::turn_time(std::size_t i, const StepContext& ctx, bool swept) const
+{
+  // A body swept with its turn stops turning where its sweep stopped it.
+  return swept && swept_[i] == kSweptTurning ? toi_[i] * ctx.h : ctx.h;
 }
 
 void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)

@@ -1,10 +1,13 @@
 // Which bodies a substep sweeps for their time of impact (world_toi.cpp
 // sweeps them): those whose move in the substep could carry them past a thin
-// body. The Fx2D order checks every body; the soft step checks only the
-// bodies a contact touches this frame, unless a free body could be fast.
+// body, and how: a dynamic polygon whose spin alone could carry its far
+// points that far is swept turning. The Fx2D order checks every body; the
+// soft step checks only the bodies a contact touches this frame, unless a
+// free body could be fast (a free body keeps its spin).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 #include "world_impl.h"
 
@@ -44,12 +47,34 @@ double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
   return stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
 }
 
-FreeSpeedBound WorldImpl::free_speed_bound(double h) const
+bool WorldImpl::turn_outruns(std::size_t i, double turn, double reach_sq) const
 {
-  // A body no contact touches gains at most one frame of gravity's speed;
-  // the margin covers the round-off of the substeps' kicks and of the test.
+  // A disk's outline radius is 0; a body never swept has a negative reach.
+  const double far = turn * outline_radius_[i];
+  return reach_sq >= 0.0 && far * far > reach_sq;
+}
+
+double WorldImpl::spin_floor(double h, bool rotation) const
+{
+  // Every reach is at least two of the thinnest half-widths' share, every
+  // turning outline at most the widest dynamic polygon's: most worlds' spins
+  // stay far below this, and their bodies skip the exact test. A kinematic
+  // polygon's set spin is mark_turning_faces' to check.
+  const double widest = census_.widest_dynamic_polygon;
+  if (!rotation || !(widest > 0.0))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  return settings_.toi_displacement_fraction * 2.0 * min_inner_radius_ / (widest * h);
+}
+
+FreeSpeedBound WorldImpl::free_speed_bound(double h, bool rotation) const
+{
+  // A body no contact touches gains at most one frame of gravity's speed,
+  // and keeps its spin; the margin covers the round-off of the substeps'
+  // kicks and of the test.
   return FreeSpeedBound{settings_.toi_displacement_fraction / (h * kReachRoundOffMargin),
-                        length(settings_.gravity) * settings_.dt};
+                        length(settings_.gravity) * settings_.dt, spin_floor(h, rotation), h};
 }
 
 bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
@@ -60,6 +85,13 @@ bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
   }
   const double slowest_fast = bound.per_width * (inner_radius_[i] + min_inner_radius_) - bound.frame_kick;
   return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);
+}
+
+bool WorldImpl::may_spin_fast(std::size_t i, const FreeSpeedBound& bound) const
+{
+  // Nothing changes a free body's spin.
+  const double omega = velocity_[i].omega;
+  return std::abs(omega) > bound.spin_floor && turn_outruns(i, omega * bound.substep, swept_reach_sq_[i]);
 }
 
 void WorldImpl::note_touching(std::size_t i)
@@ -86,44 +118,52 @@ bool WorldImpl::sweep_candidates_pay() const
   return settings_.time_of_impact == Toggle::Auto && visited_count() >= kMinBodiesToChooseSweepCandidates;
 }
 
-bool WorldImpl::mark_swept_bodies(double h, bool stored)
+bool WorldImpl::mark_swept_bodies(double h, bool stored, bool rotation)
 {
   // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
-  const bool any = !stored && !sweep_every_body_ ? mark_sweep_candidates(h) : mark_every_body(h, stored);
+  const bool any =
+      !stored && !sweep_every_body_ ? mark_sweep_candidates(h, rotation) : mark_every_body(h, stored, rotation);
   // A turning kinematic polygon's far points move faster than its centroid.
   return census_.turning_face_bodies > 0 ? mark_turning_faces(h) || any : any;
 }
 
-bool WorldImpl::mark_every_body(double h, bool stored)
+bool WorldImpl::mark_every_body(double h, bool stored, bool rotation)
 {
   const Toggle mode = settings_.time_of_impact;
+  const double least_spin = spin_floor(h, rotation);
   // The soft step reads its own velocities and the thresholds it set for the
   // frame (reset_body_motion): its pass need not read the bodies.
   for_each_body([&](std::size_t i) {
     const double reach_sq = fast_reach_sq(i, stored);
     const Vec2 d = (stored ? bodies_[i].velocity() : velocity_[i].v) * h;  // substep_displacement if swept
     const bool moving = d.x != 0.0 || d.y != 0.0;
-    swept_[i] = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
+    const bool fast = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
+    const double omega = stored ? bodies_[i].omega() : velocity_[i].omega;
+    const bool turns = std::abs(omega) > least_spin && turn_outruns(i, omega * h, reach_sq);
+    swept_[i] = turns ? kSweptTurning : fast ? kSweptMoving : kNotSwept;
   });
   if (body_pass_full_)
   {
-    return std::find(swept_.begin(), swept_.end(), 1) != swept_.end();
+    return std::any_of(swept_.begin(), swept_.end(), [](unsigned char s) { return s != kNotSwept; });
   }
   return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != 0; });
 }
 
-bool WorldImpl::mark_sweep_candidates(double h)
+bool WorldImpl::mark_sweep_candidates(double h, bool rotation)
 {
   // The other bodies' flags were cleared for the frame (prepare_soft_bodies)
   // and no substep this frame can make them fast (may_turn_fast).
+  const double least_spin = spin_floor(h, rotation);
   std::atomic<bool> any{false};
   workers_.parallel_for(sweep_candidates_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
     bool part_any = false;
     for (std::size_t k = begin; k < end; ++k)
     {
       const std::size_t i = sweep_candidates_[k];
-      swept_[i] = length_sq(velocity_[i].v * h) > swept_reach_sq_[i];
+      const double omega = velocity_[i].omega;
+      const bool turns = std::abs(omega) > least_spin && turn_outruns(i, omega * h, swept_reach_sq_[i]);
+      swept_[i] = turns ? kSweptTurning : length_sq(velocity_[i].v * h) > swept_reach_sq_[i] ? kSweptMoving : kNotSwept;
       part_any = part_any || swept_[i] != 0;
     }
     if (part_any)
@@ -139,11 +179,12 @@ bool WorldImpl::mark_turning_faces(double h)
   bool any = false;
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    const double turn = substep_turn(i, h);
+    const double turn = face_turn(i, h);
     if (turn != 0.0)
     {
       const double move = length(substep_displacement(i, h)) + std::abs(turn) * bodies_[i].radius();
-      swept_[i] = settings_.time_of_impact == Toggle::On || move * move > sweep_reach_sq(i);
+      const bool fast = settings_.time_of_impact == Toggle::On || move * move > sweep_reach_sq(i);
+      swept_[i] = fast ? kSweptMoving : kNotSwept;
       any = any || swept_[i] != 0;
     }
   }

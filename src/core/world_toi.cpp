@@ -5,12 +5,14 @@
 // detection counts that touching pair as a contact (touch tolerance) and the
 // velocity solve takes the impact.
 // The sweep is translation-only with each body's current orientation, as
-// time_of_impact() defines it, except for a kinematic polygon's set spin,
-// which its sweep turns; the rest of a clamped body's substep move is
-// dropped, its velocity is not. A pair that already touches (or that the soft
-// step's solver holds) is swept again with each fast body shrunk to a small
-// disk at its centroid: a spin can carry an outline's far side through a thin
-// body the sweep saw touching, but never the centroid, which moves on a line.
+// time_of_impact() defines it, except for a kinematic polygon's set spin and
+// a dynamic polygon whose spin alone outruns its reach: those outlines turn
+// in their sweep. The rest of a clamped body's substep move (and turn, if
+// its sweep turned it) is dropped, its velocity is not. A pair that already
+// touches (or that the soft step's solver holds) is swept again with each
+// fast body shrunk to a small disk at its centroid: a spin can carry an
+// outline's far side through a thin body the sweep saw touching, but never
+// the centroid, which moves on a line.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -32,16 +34,26 @@ namespace
 /// enough that an outline stopped there overlaps its obstacle mostly on the
 /// centroid's side, so the push out goes back the way the body came.
 constexpr double kCoreFraction = 0.25;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// How far a turn of 1 rad moves an outline's far points (m): a polygon's
+/// bounding radius; a disk's outline does not change as it turns.
+double outline_radius(const Body& body)
+{
+  return body.shape() == Shape::Polygon ? body.radius() : 0.0;
+}
 
 }  // namespace
 
-void WorldImpl::refresh_inner_radii()
+void WorldImpl::refresh_sweep_radii()
 {
   inner_radius_.resize(bodies_.size());
+  outline_radius_.resize(bodies_.size());
   min_inner_radius_ = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     inner_radius_[i] = inner_radius(bodies_[i]);
+    outline_radius_[i] = outline_radius(bodies_[i]);
     min_inner_radius_ = std::min(min_inner_radius_, inner_radius_[i]);
   }
   if (bodies_.empty())
@@ -50,9 +62,10 @@ void WorldImpl::refresh_inner_radii()
   }
 }
 
-void WorldImpl::append_inner_radius(const Body& body)
+void WorldImpl::append_sweep_radii(const Body& body)
 {
   inner_radius_.push_back(inner_radius(body));
+  outline_radius_.push_back(outline_radius(body));
   min_inner_radius_ = inner_radius_.size() == 1 ? inner_radius_.back() : std::min(min_inner_radius_, inner_radius_.back());
 }
 
@@ -64,33 +77,38 @@ Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
 
 double WorldImpl::substep_turn(std::size_t i, double h) const
 {
-  // Only a kinematic polygon's outline turns in a sweep: a dynamic body's
-  // sweep keeps its orientation and a disk's outline has none.
+  // A dynamic polygon's sweep keeps its orientation unless its spin alone
+  // could carry its far points past a thin body; a disk's outline has none.
+  return swept_[i] == kSweptTurning ? bodies_[i].omega() * h : face_turn(i, h);
+}
+
+double WorldImpl::face_turn(std::size_t i, double h) const
+{
+  // A kinematic polygon follows its set spin, whatever the rotation toggle.
   const Body& b = bodies_[i];
   const bool turning = census_.turning_face_bodies > 0 && b.type() == BodyType::Kinematic &&
                        b.shape() == Shape::Polygon && !asleep_[i];
   return turning ? b.omega() * h : 0.0;
 }
 
-void WorldImpl::grow_turning_boxes(double h)
+Aabb WorldImpl::sweep_box(std::size_t i, double h) const
 {
   // A turning outline stays inside its bounding circle.
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
+  const Vec2 d = substep_displacement(i, h);
+  if (substep_turn(i, h) == 0.0)
   {
-    if (substep_turn(i, h) != 0.0)
-    {
-      const Vec2 half{bodies_[i].radius(), bodies_[i].radius()};
-      const Vec2 at = bodies_[i].position();
-      boxes_[i] = Aabb{at - half, at + half}.swept(substep_displacement(i, h));
-    }
+    return bodies_[i].aabb().swept(d);
   }
+  const Vec2 half{bodies_[i].radius(), bodies_[i].radius()};
+  const Vec2 at = bodies_[i].position();
+  return Aabb{at - half, at + half}.swept(d);
 }
 
-bool WorldImpl::sweep(double h, StepReport& report, bool stored)
+bool WorldImpl::sweep(double h, StepReport& report, bool stored, bool rotation)
 {
   clamping_ = false;
   pushing_ = false;
-  if (settings_.time_of_impact == Toggle::Off || !mark_swept_bodies(h, stored))
+  if (settings_.time_of_impact == Toggle::Off || !mark_swept_bodies(h, stored, rotation))
   {
     return false;
   }
@@ -102,14 +120,12 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
   const std::size_t n = bodies_.size();
   toi_.assign(n, 1.0);
   boxes_.resize(n);
+  // Only a world where an outline can turn pays sweep_box's test of each body.
+  const bool outlines_turn = census_.turning_face_bodies > 0 || spin_floor(h, rotation) < kInfinity;
   for (std::size_t i = 0; i < n; ++i)
   {
-    boxes_[i] = bodies_[i].aabb().swept(substep_displacement(i, h));
+    boxes_[i] = outlines_turn ? sweep_box(i, h) : bodies_[i].aabb().swept(substep_displacement(i, h));
     report.swept_bodies += swept_[i] ? 1 : 0;
-  }
-  if (census_.turning_face_bodies > 0)
-  {
-    grow_turning_boxes(h);
   }
   sweep_phase_.find_pairs(boxes_, pairs_);
   if (pushing_)
@@ -127,9 +143,11 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
       continue;
     }
     // A soft-step pair with a contact this frame is the solver's: it holds
-    // their approach to the gap, turning included, where this translation-only
-    // sweep would stop a turning body short of a touch that never comes.
-    const bool held = !stored && has_frame_contact(i, j);
+    // their approach to the gap, turning included, where a translation-only
+    // sweep would stop a turning body short of a touch that never comes. A
+    // spin that outruns the reach turns past what the frame's contact can
+    // follow: that pair is swept turning.
+    const bool held = !stored && swept_[i] != kSweptTurning && swept_[j] != kSweptTurning && has_frame_contact(i, j);
     const Vec2 di = substep_displacement(i, h);
     const Vec2 dj = substep_displacement(j, h);
     double t = held ? 0.0 : time_of_impact(bodies_[i], di, substep_turn(i, h), bodies_[j], dj, substep_turn(j, h));
@@ -142,7 +160,7 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored)
     // In the Fx2D order a body touching a turning face is lifted onto it
     // instead (the face overruns a straight path however slowly it turns);
     // in the soft step the pair's contact holds it.
-    const bool turning = stored && pushing_ && (substep_turn(i, h) != 0.0 || substep_turn(j, h) != 0.0);
+    const bool turning = stored && pushing_ && (face_turn(i, h) != 0.0 || face_turn(j, h) != 0.0);
     if (t <= 0.0 && !turning)
     {
       t = core_time_of_impact(i, j, di, dj, stored);

@@ -208,10 +208,9 @@ struct WorldImpl : WorldState
   void restore_velocities();
 
   // world_toi.cpp
-  /// inner_radius_, min_inner_radius_ and outline_radius_ from the bodies.
-  void refresh_sweep_radii();
+  void refresh_inner_radii();
   /// O(1) update for a body just appended: building a world stays O(n).
-  void append_sweep_radii(const Body& body);
+  void append_inner_radius(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
   /// How far body i's outline turns in a sweep of h seconds (rad): a
   /// kinematic polygon's spin (face_turn) or a dynamic polygon's marked

@@ -72,7 +72,6 @@ struct WorldState
   std::vector<unsigned char> asleep_;  ///< 1 while the body's island sleeps (bytes: read in every body pass)
   std::vector<double> rest_time_;     ///< how long each body has been resting (s)
   std::vector<double> inner_radius_;  ///< m, for the time-of-impact speed test
-  std::vector<double> outline_radius_;  ///< m: how far a turn of 1 rad moves a polygon's far points; 0 for a disk
   double min_inner_radius_ = 0.0;
 
   // Scratch reused across substeps and steps (no allocation once warmed up).

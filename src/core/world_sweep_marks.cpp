@@ -49,9 +49,12 @@ double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
 
 bool WorldImpl::turn_outruns(std::size_t i, double turn, double reach_sq) const
 {
-  // A disk's outline radius is 0; a body never swept has a negative reach.
-  const double far = turn * outline_radius_[i];
-  return reach_sq >= 0.0 && far * far > reach_sq;
+  // A polygon's far points lie on its bounding circle; a disk's outline does
+  // not change as it turns; a body never swept has a negative reach. Called
+  // only above the spin floor, so its read of the body is rare.
+  const Body& b = bodies_[i];
+  const double far = turn * b.radius();
+  return reach_sq >= 0.0 && b.shape() == Shape::Polygon && far * far > reach_sq;
 }
 
 double WorldImpl::spin_floor(double h, bool rotation) const

@@ -36,24 +36,15 @@ namespace
 constexpr double kCoreFraction = 0.25;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// How far a turn of 1 rad moves an outline's far points (m): a polygon's
-/// bounding radius; a disk's outline does not change as it turns.
-double outline_radius(const Body& body)
-{
-  return body.shape() == Shape::Polygon ? body.radius() : 0.0;
-}
-
 }  // namespace
 
-void WorldImpl::refresh_sweep_radii()
+void WorldImpl::refresh_inner_radii()
 {
   inner_radius_.resize(bodies_.size());
-  outline_radius_.resize(bodies_.size());
   min_inner_radius_ = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     inner_radius_[i] = inner_radius(bodies_[i]);
-    outline_radius_[i] = outline_radius(bodies_[i]);
     min_inner_radius_ = std::min(min_inner_radius_, inner_radius_[i]);
   }
   if (bodies_.empty())
@@ -62,10 +53,9 @@ void WorldImpl::refresh_sweep_radii()
   }
 }
 
-void WorldImpl::append_sweep_radii(const Body& body)
+void WorldImpl::append_inner_radius(const Body& body)
 {
   inner_radius_.push_back(inner_radius(body));
-  outline_radius_.push_back(outline_radius(body));
   min_inner_radius_ = inner_radius_.size() == 1 ? inner_radius_.back() : std::min(min_inner_radius_, inner_radius_.back());
 }
 

@@ -314,14 +314,12 @@ struct WorldImpl : WorldState
   /// and turns `turn` (rad): the fastest of them.
   double face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, Vec2 move, double turn) const;
   /// The manifold from body k into body i with i moved by `i_move`, k by
-  /// `k_move` and turned by `k_turn`, if they touch there (false otherwise).
+  /// `k_move` and turned by `k_turn`, if they touch there within
+  /// impact_tolerance (false otherwise).
   bool touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m);
   /// How near (m) bodies i and k count as touching at a time of impact:
   /// the touch tolerance, widened for the round-off of posing them there.
   double impact_tolerance(std::size_t i, std::size_t k) const;
-  /// That manifold for pairs within `tolerance` (m) of touching.
-  bool posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, double tolerance,
-                      Manifold& m);
   /// Where body i's substep takes it (m): its move up to its impact, then its push.
   Vec2 pushed_path(std::size_t i, double h) const;
 

@@ -89,11 +89,11 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
       continue;
     }
     const Vec2 face_move = substep_displacement(face, h);
-    const double face_turn = substep_turn(face, h);
+    const double turn = face_turn(face, h);
     const Vec2 path = held ? Vec2{0.0, 0.0} : substep_displacement(body, h) * toi_[body];
-    double t = time_of_impact(bodies_[face], face_move, face_turn, bodies_[body], path, 0.0);
+    double t = time_of_impact(bodies_[face], face_move, turn, bodies_[body], path, 0.0);
     // A turning face is checked where the substep ends (push_ahead).
-    if (t <= 0.0 && face_turn == 0.0 && !closes_now(face, body, face_move, path))
+    if (t <= 0.0 && turn == 0.0 && !closes_now(face, body, face_move, path))
     {
       continue;
     }
@@ -104,7 +104,7 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
     t = std::max(t, 0.0);
     // A free body on a turning face keeps its own move: the face's turn
     // lifts it where the substep ends (push_ahead).
-    const bool moves_on = t == 0.0 && !held && toi_[body] >= 1.0 && face_turn != 0.0;
+    const bool moves_on = t == 0.0 && !held && toi_[body] >= 1.0 && turn != 0.0;
     toi_[body] = held ? 0.0 : moves_on ? 1.0 : t * toi_[body];  // where on its path the face meets it
     pusher_[body] = face;
     pushed_at_[body] = t;
@@ -132,7 +132,7 @@ void WorldImpl::find_pushes(double h)
     if (face != kNoPusher)
     {
       push_[i] = push_ahead(i, face, pushed_at_[i], substep_displacement(i, h) * toi_[i],
-                            FaceMove{substep_displacement(face, h), substep_turn(face, h)});
+                            FaceMove{substep_displacement(face, h), face_turn(face, h)});
       last_pushed_.push_back(i);
     }
   }
@@ -273,7 +273,7 @@ Vec2 WorldImpl::carry_on_turning_face(std::size_t i, std::size_t k, double t, Ve
   turn_of((1.0 - t) * face.turn, c, s);
   const Vec2 push = (rotate(arm, c, s) - arm) + ((1.0 - t) * std::max(0.0, dot(face.move, normal))) * normal;
   Manifold end;
-  if (!posed_manifold(i, k, body_move + push, face.move, face.turn, impact_tolerance(i, k), end))
+  if (!touch_manifold(i, k, body_move + push, face.move, face.turn, end))
   {
     return push;
   }
@@ -297,18 +297,12 @@ double WorldImpl::face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, 
   return advance;
 }
 
-bool WorldImpl::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m)
-{
-  return posed_manifold(i, k, i_move, k_move, k_turn, impact_tolerance(i, k), m);
-}
-
 double WorldImpl::impact_tolerance(std::size_t i, std::size_t k) const
 {
   return kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
 }
 
-bool WorldImpl::posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn,
-                               double tolerance, Manifold& m)
+bool WorldImpl::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m)
 {
   // Both bodies posed for the narrow phase, then put back. Two disks on one
   // centre have no normal (collide would throw).
@@ -325,7 +319,7 @@ bool WorldImpl::posed_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k
   }
   const bool coincident =
       face.shape() == Shape::Disk && body.shape() == Shape::Disk && face.position() == body.position();
-  const bool touching = !coincident && collide(face, body, m, tolerance);
+  const bool touching = !coincident && collide(face, body, m, impact_tolerance(i, k));
   body.set_position(body_at);
   face.set_position(face_at);
   if (k_turn != 0.0)

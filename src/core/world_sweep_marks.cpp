@@ -50,11 +50,12 @@ double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
 bool WorldImpl::turn_outruns(std::size_t i, double turn, double reach_sq) const
 {
   // A polygon's far points lie on its bounding circle; a disk's outline does
-  // not change as it turns; a body never swept has a negative reach. Called
-  // only above the spin floor, so its read of the body is rare.
+  // not change as it turns; a body never swept has a negative reach; a
+  // kinematic polygon's turn is face_turn's. Called only above the spin
+  // floor, so its read of the body is rare.
   const Body& b = bodies_[i];
   const double far = turn * b.radius();
-  return reach_sq >= 0.0 && b.shape() == Shape::Polygon && far * far > reach_sq;
+  return reach_sq >= 0.0 && b.type() == BodyType::Dynamic && b.shape() == Shape::Polygon && far * far > reach_sq;
 }
 
 double WorldImpl::spin_floor(double h, bool rotation) const

@@ -351,7 +351,10 @@ void WorldImpl::size_contacts(std::size_t n)
   // one goes: a step refused for want of memory still finds them in place.
   if (n <= contacts_.capacity())
   {
-    touch_pages_first(workers_, contacts_.data() + contacts_.size(), contacts_.data() + std::max(n, contacts_.size()));
+    if (n > contacts_.size())
+    {
+      touch_pages_first(workers_, contacts_.data() + contacts_.size(), contacts_.data() + n);
+    }
     contacts_.resize(n);
     return;
   }

@@ -115,17 +115,21 @@ bool WorldImpl::prepare_pair_points(const ActiveEffects& effects, std::size_t k)
 
 void WorldImpl::prepare_soft_bodies(bool rotation)
 {
-  velocity_.resize(bodies_.size());
-  stopped_.resize(bodies_.size());
-  touching_.resize(bodies_.size());
-  held_position_.resize(bodies_.size());
-  held_theta_.resize(bodies_.size());
-  prepared_position_.resize(bodies_.size());
-  prepared_theta_.resize(bodies_.size());
-  frame_position_.resize(bodies_.size());
-  frame_theta_.resize(bodies_.size());
-  frame_motion_.resize(bodies_.size());
-  swept_reach_sq_.resize(bodies_.size());
+  const std::size_t n = bodies_.size();
+  if (swept_reach_sq_.size() != n)  // only here are these sized, all together
+  {
+    velocity_.resize(n);
+    stopped_.resize(n);
+    touching_.resize(n);
+    held_position_.resize(n);
+    held_theta_.resize(n);
+    prepared_position_.resize(n);
+    prepared_theta_.resize(n);
+    frame_position_.resize(n);
+    frame_theta_.resize(n);
+    frame_motion_.resize(n);
+    swept_reach_sq_.resize(n);
+  }
   // One pass over the body records, which a large world streams from memory.
   sweep_every_body_ = !sweep_candidates_pay();            // world_toi.cpp
   const bool candidates = !sweep_every_body_;

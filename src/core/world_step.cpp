@@ -280,29 +280,41 @@ double WorldImpl::kinetic_energy()
   // its bodies.
   const bool movers_only = movers_current() && !body_pass_full_;
   const std::size_t n = bodies_.size();
-  block_energies_.resize(energy_blocks(n));  // room made before the frames (step)
   const auto energy = [this](std::size_t i) {
     const Body& b = bodies_[i];
     return b.type() == BodyType::Dynamic ? b.kinetic_energy() : 0.0;  // + 0 leaves a sum >= 0 as it is
   };
   // Where body index i starts in the list summed: the bodies, or the movers (movers_ ascends).
   const auto position = [&](std::size_t i) {
+    if (i == n)
+    {
+      return movers_only ? movers_.size() : n;
+    }
     return movers_only ? static_cast<std::size_t>(std::lower_bound(movers_.begin(), movers_.end(), i) - movers_.begin())
                        : i;
   };
+  const auto block_energy = [&](std::size_t block) {
+    const std::size_t first = block * kEnergyBlock;
+    const std::size_t last = std::min(n, first + kEnergyBlock);
+    double sum = 0.0;
+    const std::size_t end_k = position(last);
+    for (std::size_t k = first == 0 ? 0 : position(first); k < end_k; ++k)
+    {
+      sum += energy(movers_only ? movers_[k] : k);
+    }
+    return sum;
+  };
+  const std::size_t blocks = energy_blocks(n);
+  if (blocks <= 1)
+  {
+    return block_energy(0);  // the sum of one block is that block (0 + a sum >= 0)
+  }
+  block_energies_.resize(blocks);  // room made before the frames (step)
   const std::size_t min_shared = kMinSharedBodies / kEnergyBlock;
-  workers_.parallel_for(block_energies_.size(), min_shared, [&](std::size_t begin, std::size_t end) {
+  workers_.parallel_for(blocks, min_shared, [&](std::size_t begin, std::size_t end) {
     for (std::size_t block = begin; block < end; ++block)
     {
-      const std::size_t first = block * kEnergyBlock;
-      const std::size_t last = std::min(n, first + kEnergyBlock);
-      double sum = 0.0;
-      const std::size_t end_k = position(last);
-      for (std::size_t k = position(first); k < end_k; ++k)
-      {
-        sum += energy(movers_only ? movers_[k] : k);
-      }
-      block_energies_[block] = sum;
+      block_energies_[block] = block_energy(block);
     }
   });
   double sum = 0.0;

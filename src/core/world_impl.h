@@ -240,9 +240,10 @@ struct WorldImpl : WorldState
   /// The squared substep move (m^2) beyond which body i counts as fast: the Fx2D
   /// order's (stored) or the soft step's threshold for the frame.
   double fast_reach_sq(std::size_t i, bool stored) const;
-  /// Whether body i turning `turn` rad moves its far points past `reach_sq`
-  /// (its fast_reach_sq): then its sweep turns it.
-  bool turn_outruns(std::size_t i, double turn, double reach_sq) const;
+  /// Whether body i spinning at `omega` (rad/s) for h seconds moves its far
+  /// points past `reach_sq` (its fast_reach_sq): then its sweep turns it.
+  /// `floor`: the spin_floor, below which no body can.
+  bool turn_outruns(std::size_t i, double omega, double h, double floor, double reach_sq) const;
   /// The spin (rad/s) below which no dynamic polygon's turn in a substep of
   /// h seconds outruns its reach; infinity when dynamic bodies do not turn
   /// (`rotation` false) or none is a polygon.

@@ -286,10 +286,6 @@ double WorldImpl::kinetic_energy()
   };
   // Where body index i starts in the list summed: the bodies, or the movers (movers_ ascends).
   const auto position = [&](std::size_t i) {
-    if (i == n)
-    {
-      return movers_only ? movers_.size() : n;
-    }
     return movers_only ? static_cast<std::size_t>(std::lower_bound(movers_.begin(), movers_.end(), i) - movers_.begin())
                        : i;
   };
@@ -298,7 +294,7 @@ double WorldImpl::kinetic_energy()
     const std::size_t last = std::min(n, first + kEnergyBlock);
     double sum = 0.0;
     const std::size_t end_k = position(last);
-    for (std::size_t k = first == 0 ? 0 : position(first); k < end_k; ++k)
+    for (std::size_t k = position(first); k < end_k; ++k)
     {
       sum += energy(movers_only ? movers_[k] : k);
     }

@@ -47,14 +47,19 @@ double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
   return stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
 }
 
-bool WorldImpl::turn_outruns(std::size_t i, double turn, double reach_sq) const
+bool WorldImpl::turn_outruns(std::size_t i, double omega, double h, double floor, double reach_sq) const
 {
-  // A polygon's far points lie on its bounding circle; a disk's outline does
-  // not change as it turns; a body never swept has a negative reach; a
-  // kinematic polygon's turn is face_turn's. Called only above the spin
-  // floor, so its read of the body is rare.
+  // Below the floor no body's turn can outrun its reach, so most bodies stop
+  // at the first compare and never read their record. Above it: a polygon's
+  // far points lie on its bounding circle; a disk's outline does not change
+  // as it turns; a body never swept has a negative reach; a kinematic
+  // polygon's turn is face_turn's.
+  if (!(std::abs(omega) > floor))
+  {
+    return false;
+  }
   const Body& b = bodies_[i];
-  const double far = turn * b.radius();
+  const double far = omega * h * b.radius();
   return reach_sq >= 0.0 && b.type() == BodyType::Dynamic && b.shape() == Shape::Polygon && far * far > reach_sq;
 }
 
@@ -95,7 +100,7 @@ bool WorldImpl::may_spin_fast(std::size_t i, const FreeSpeedBound& bound) const
 {
   // Nothing changes a free body's spin.
   const double omega = velocity_[i].omega;
-  return std::abs(omega) > bound.spin_floor && turn_outruns(i, omega * bound.substep, swept_reach_sq_[i]);
+  return turn_outruns(i, omega, bound.substep, bound.spin_floor, swept_reach_sq_[i]);
 }
 
 void WorldImpl::note_touching(std::size_t i)
@@ -144,14 +149,14 @@ bool WorldImpl::mark_every_body(double h, bool stored, bool rotation)
     const bool moving = d.x != 0.0 || d.y != 0.0;
     const bool fast = reach_sq >= 0.0 && (mode == Toggle::On ? moving : length_sq(d) > reach_sq);
     const double omega = stored ? bodies_[i].omega() : velocity_[i].omega;
-    const bool turns = std::abs(omega) > least_spin && turn_outruns(i, omega * h, reach_sq);
+    const bool turns = turn_outruns(i, omega, h, least_spin, reach_sq);
     swept_[i] = turns ? kSweptTurning : fast ? kSweptMoving : kNotSwept;
   });
   if (body_pass_full_)
   {
     return std::any_of(swept_.begin(), swept_.end(), [](unsigned char s) { return s != kNotSwept; });
   }
-  return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != 0; });
+  return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != kNotSwept; });
 }
 
 bool WorldImpl::mark_sweep_candidates(double h, bool rotation)
@@ -166,9 +171,9 @@ bool WorldImpl::mark_sweep_candidates(double h, bool rotation)
     {
       const std::size_t i = sweep_candidates_[k];
       const double omega = velocity_[i].omega;
-      const bool turns = std::abs(omega) > least_spin && turn_outruns(i, omega * h, swept_reach_sq_[i]);
+      const bool turns = turn_outruns(i, omega, h, least_spin, swept_reach_sq_[i]);
       swept_[i] = turns ? kSweptTurning : length_sq(velocity_[i].v * h) > swept_reach_sq_[i] ? kSweptMoving : kNotSwept;
-      part_any = part_any || swept_[i] != 0;
+      part_any = part_any || swept_[i] != kNotSwept;
     }
     if (part_any)
     {
@@ -189,7 +194,7 @@ bool WorldImpl::mark_turning_faces(double h)
       const double move = length(substep_displacement(i, h)) + std::abs(turn) * bodies_[i].radius();
       const bool fast = settings_.time_of_impact == Toggle::On || move * move > sweep_reach_sq(i);
       swept_[i] = fast ? kSweptMoving : kNotSwept;
-      any = any || swept_[i] != 0;
+      any = any || swept_[i] != kNotSwept;
     }
   }
   return any;

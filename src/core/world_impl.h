@@ -87,6 +87,23 @@ struct WorldImpl : WorldState
   /// the movers (a resting body's state and scratch stay as that frame left them).
   template <class F>
   void for_each_body(F f);
+  /// The same bodies on this thread, in ascending order.
+  template <class F>
+  void visit_bodies(F f)
+  {
+    if (body_pass_full_)
+    {
+      for (std::size_t i = 0; i < bodies_.size(); ++i)
+      {
+        f(i);
+      }
+      return;
+    }
+    for (const std::size_t i : movers_)
+    {
+      f(i);
+    }
+  }
   /// A dynamic body that is awake: gravity and contacts move it.
   bool awake_dynamic(std::size_t i) const { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; }
   /// How many bodies sleep now (counted again after a sleep, wake or edit).
@@ -111,6 +128,8 @@ struct WorldImpl : WorldState
   /// After move_body: a stopped body held, a free one on its parabola,
   /// and the pose change its contacts follow.
   void follow_body(std::size_t i, const StepContext& ctx);
+  /// The pose change since prepare that body i's contact points follow.
+  void follow_pose(std::size_t i);
   /// How body i moves in this frame's substeps (world_step.cpp).
   FrameMotion frame_motion(std::size_t i) const;
   /// Whether a body that moves so, at spin omega, turns in a substep.
@@ -147,9 +166,11 @@ struct WorldImpl : WorldState
   /// past `slop` from where it stuck. publish_contacts asks on its way
   /// through the points; the outcome goes to the contact, not the point.
   CarriedSlip carry_slip(const ContactPoint& p, bool sliding, Vec2 offset) const;
-  /// `kick_free`: another substep follows, whose gravity kick a body no
-  /// contact touches takes here (integrate_velocities then skips it).
-  void integrate_positions(StepContext& ctx, StepReport& report, bool kick_free);
+  /// Unless `last`, another substep follows, whose gravity kick a body no
+  /// contact touches takes here (integrate_velocities then skips it). On the
+  /// last, returns whether some body has moved far in the frame (moved_far):
+  /// then stop_soft_crossings may have work.
+  bool integrate_positions(StepContext& ctx, StepReport& report, bool last);
   // world_turning_faces.cpp: disks on the faces of turning kinematic bodies.
   /// After prepare, before the rows are packed: the frame's disks on such
   /// faces, kept on the point verbs. Inline: most frames have none.
@@ -232,6 +253,23 @@ struct WorldImpl : WorldState
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
   /// against the other body of pair (i, j) moved by di and dj, else 1.
   double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
+
+  // world_static_crossing.cpp: no centroid passes into a static body.
+  /// Earliest time of impact in (0, 1) of body i's centroid core (or, if
+  /// that touches already, its centroid), moved from `from` by d, against
+  /// the static bodies; 1 if none, or if d is too short to need it.
+  double static_crossing_time(std::size_t i, Vec2 from, Vec2 d);
+  /// Whether a move by d could carry body i's centroid into a static body
+  /// it was clear of (static_crossing_time checks only such moves).
+  bool moved_far(std::size_t i, Vec2 d) const;
+  /// When body i's centroid, moved from `from` by d, would first pass into
+  /// static `obstacle`: the fraction of d its core (or centroid) moves clear; 1 if never.
+  double centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const;
+  /// After the soft step's substeps: each body's frame move stopped where
+  /// static_crossing_time says, its contacts following.
+  void stop_soft_crossings(StepContext& ctx, StepReport& report);
+  /// The same after an Fx2D substep, from the substep's start.
+  void stop_fx2d_crossings(StepContext& ctx, StepReport& report);
 
   // world_sweep_marks.cpp: which bodies a substep sweeps.
   /// The squared substep move above which body i is swept in Auto (m^2);

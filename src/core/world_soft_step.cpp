@@ -9,7 +9,8 @@
 // substep's end, restitution drives the contacts the substep pushed to their
 // Newton targets (e times the approach speed at the substep's start), iterated
 // to the fixed point: a body that meets several others in turn within one
-// frame bounces off each as it meets it.
+// frame bounces off each as it meets it. After the substeps no body's
+// centroid may have passed into a static body (world_static_crossing.cpp).
 // A disk on the face of a turning kinematic body is the one contact whose
 // normal and point follow its face before each pass (world_turning_faces.cpp).
 // Static friction holds position, not only velocity: a sticking point
@@ -63,17 +64,22 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
     soft_rows_.pack(points_, velocity_, ctx.effects.friction, springs_, workers_, frame_block_);  // soft_rows.cpp
   }
   find_bounce_points();                                   // world_soft_restitution.cpp
-  // 3. Substeps.
+  // 3. Substeps, and no centroid passed into a static body on the way.
+  bool moved_far = false;
   for (int k = 0; k < settings_.substeps; ++k)
   {
     const bool last = k + 1 == settings_.substeps;
     aim_bounces();
     integrate_velocities(ctx, k == 0);
     solve_contacts(ctx, true, report);
-    integrate_positions(ctx, report, !last);
+    moved_far = integrate_positions(ctx, report, last);
     solve_contacts(ctx, false, report);                   // relax
     restitute(report);
     ++report.substeps;
+  }
+  if (moved_far)
+  {
+    stop_soft_crossings(ctx, report);                     // world_static_crossing.cpp
   }
   follow_turning_faces(ctx.h, true);                      // as prepared, for the publish
   // 4. The poses and velocities onto the bodies, checked finite before the
@@ -287,7 +293,7 @@ CarriedSlip WorldImpl::carry_slip(const ContactPoint& p, bool sliding, Vec2 offs
   return {slides, slides ? 0.0 : drift};
 }
 
-void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool kick_free)
+bool WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool last)
 {
   // As advance() (world_step.cpp): fast bodies swept for time of impact
   // (world_toi.cpp, on one thread: it pairs bodies), then every body moved
@@ -298,6 +304,8 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool k
   ctx.effects.time_of_impact = ctx.effects.time_of_impact || swept;
   poses_pending_ = true;
   const Vec2 gravity_kick = settings_.gravity * ctx.h;
+  const bool kick_free = !last;
+  std::atomic<bool> far{false};
   // The poses stay in frame_position_ and frame_theta_ and go onto the
   // bodies once per frame (place_bodies), as do the velocities: a substep
   // reads and writes no body record, which a large world streams from memory.
@@ -309,7 +317,13 @@ void WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool k
       // Nothing reads its velocity before the next substep's kick would.
       velocity_[i].v = velocity_[i].v + gravity_kick;
     }
+    // Checked while the poses are in cache: stop_soft_crossings is rarely needed.
+    if (last && frame_motion_[i] == FrameMotion::Dynamic && moved_far(i, frame_position_[i] - prepared_position_[i]))
+    {
+      far.store(true, std::memory_order_relaxed);
+    }
   });
+  return far.load();
 }
 
 void WorldImpl::move_in_frame(std::size_t i, const StepContext& ctx, bool swept)
@@ -383,12 +397,16 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
     // its gravity kick: a thrown body follows its parabola exactly.
     position = position - (0.5 * ctx.h * ctx.h) * settings_.gravity;
   }
-  if (!touching_[i])
+  if (touching_[i])  // only contact points read a body's motion since prepare
   {
-    return;  // only contact points read a body's motion since prepare
+    follow_pose(i);
   }
+}
+
+void WorldImpl::follow_pose(std::size_t i)
+{
   BodyVelocity& state = velocity_[i];
-  state.moved = position - prepared_position_[i];
+  state.moved = frame_position_[i] - prepared_position_[i];
   turn_of(frame_theta_[i] - prepared_theta_[i], state.turned_cos, state.turned_sin);
 }
 

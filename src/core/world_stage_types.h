@@ -97,6 +97,11 @@ constexpr std::size_t kMinSharedPoints = 1024;
 /// Broad-phase pairs below which filling their contact rows stays on the
 /// calling thread.
 constexpr std::size_t kMinSharedPairs = 1024;
+/// A centroid core's radius as a fraction of its body's inner radius
+/// (world_toi.cpp, world_static_crossing.cpp): small enough that an outline
+/// stopped there overlaps its obstacle mostly on the centroid's side, so the
+/// push out goes back the way the body came.
+constexpr double kCoreFraction = 0.25;
 /// kept_from_ of a pair whose manifold was found by the narrow phase.
 constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);
 

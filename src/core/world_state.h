@@ -130,6 +130,7 @@ struct WorldState
   std::vector<std::size_t> sweep_candidates_;
   bool sweep_every_body_ = true;
   std::vector<double> toi_;           ///< fraction of the substep each body travels
+  std::vector<BodyPair> crossing_pairs_;  ///< static_crossing_time's grid query
   bool clamping_ = false;             ///< some body stopped at its time of impact in the last sweep (toi_ follows edits)
   /// A fast kinematic body was swept this substep (world_kinematic_push.cpp).
   bool pushing_ = false;

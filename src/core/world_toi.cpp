@@ -13,6 +13,8 @@
 // fast body shrunk to a small disk at its centroid: a spin can carry an
 // outline's far side through a thin body the sweep saw touching, but never
 // the centroid, which moves on a line.
+// The static bodies are swept once more after the frame's moves
+// (world_static_crossing.cpp).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -30,10 +32,6 @@ namespace detail
 {
 namespace
 {
-/// A centroid core's radius as a fraction of its body's inner radius: small
-/// enough that an outline stopped there overlaps its obstacle mostly on the
-/// centroid's side, so the push out goes back the way the body came.
-constexpr double kCoreFraction = 0.25;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 }  // namespace

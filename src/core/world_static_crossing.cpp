@@ -1,0 +1,176 @@
+// A dynamic body's centroid never passes into a static body it was clear
+// of. The substeps' sweeps (world_toi.cpp) stop a body fast enough to skip a
+// thin body in one substep; a body crushed into a static one by a heavy or
+// fast neighbour the contacts cannot hold can still go deep over a frame's
+// substeps. So after the frame's moves (after each substep in the Fx2D
+// order) a body that moved far for its size has its centroid core swept
+// along its path against the static bodies and stops where it first touches
+// one; the contact then pushes it back out the way it came. Its velocity is
+// kept: the next frame's contact takes the impact.
+#include <algorithm>
+#include <limits>
+
+#include "collision2d/time_of_impact.h"
+#include "world_impl.h"
+
+namespace collision2d
+{
+namespace detail
+{
+namespace
+{
+/// Moves shorter than this fraction of a body's inner radius are not swept:
+/// one cannot carry the centroid of a body resting on a static face (the
+/// centroid an inner radius away) past that face.
+constexpr double kCrossingMoveFraction = 0.5;
+/// Once the core already touches a static body, the centroid itself is
+/// swept: a disk this fraction of the inner radius.
+constexpr double kCentroidFraction = 1e-3;
+
+/// A point's signed distance to an outline (m, negative inside) and the
+/// outward normal it is measured along: the nearest face's for a polygon (its
+/// largest face separation: exact inside, at most the distance outside).
+struct PointGap
+{
+  double gap;
+  Vec2 normal;
+};
+
+PointGap point_gap(const Body& b, Vec2 p)
+{
+  if (b.shape() == Shape::Disk)
+  {
+    const Vec2 r = p - b.position();
+    const double distance = length(r);
+    return {distance - b.radius(), distance > 0.0 ? r * (1.0 / distance) : Vec2{0.0, 1.0}};
+  }
+  PointGap best{-std::numeric_limits<double>::infinity(), Vec2{0.0, 1.0}};
+  for (std::size_t k = 0; k < b.vertex_count(); ++k)
+  {
+    const Vec2 normal = b.world_face_normal(k);
+    const double gap = dot(normal, p - b.world_vertex(k));
+    if (gap > best.gap)
+    {
+      best = {gap, normal};
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d)
+{
+  if (!moved_far(i, d) || !is_finite(from) || !is_finite(d))
+  {
+    return 1.0;  // a pose that overflowed is the finiteness check's
+  }
+  const double r = kCoreFraction * inner_radius_[i];
+  const Aabb path = Aabb{from - Vec2{r, r}, from + Vec2{r, r}}.swept(d);
+  crossing_pairs_.clear();
+  resting_grid_.query(path, i, crossing_pairs_);
+  double earliest = 1.0;
+  const auto sweep_against = [&](std::size_t j) {
+    const Body& obstacle = bodies_[j];
+    if (obstacle.type() == BodyType::Static && obstacle.aabb().overlaps(path))
+    {
+      earliest = std::min(earliest, centroid_entry_time(i, from, d, obstacle));
+    }
+  };
+  for (const BodyPair& pair : crossing_pairs_)
+  {
+    sweep_against(pair.first == i ? pair.second : pair.first);
+  }
+  for (const std::size_t j : resting_grid_.large())
+  {
+    sweep_against(j);
+  }
+  return earliest;
+}
+
+bool WorldImpl::moved_far(std::size_t i, Vec2 d) const
+{
+  const double least = kCrossingMoveFraction * inner_radius_[i];
+  return length_sq(d) > least * least;
+}
+
+double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const
+{
+  const double inner = inner_radius_[i];
+  const double t = time_of_impact(Body(bodies_[i].mass(), kCoreFraction * inner, from, Vec2{0.0, 0.0}), d, obstacle,
+                                  Vec2{0.0, 0.0});
+  if (t > 0.0)
+  {
+    return t;
+  }
+  // The core touches already: the centroid may come up to the surface, not
+  // past it; a centroid already inside is the contacts' to push out.
+  const double tolerance = kCentroidFraction * inner;
+  const PointGap gap = point_gap(obstacle, from);
+  if (gap.gap > tolerance)
+  {
+    const double u = time_of_impact(Body(bodies_[i].mass(), tolerance, from, Vec2{0.0, 0.0}), d, obstacle,
+                                    Vec2{0.0, 0.0});
+    return u > 0.0 ? u : 1.0;
+  }
+  const bool on_surface = gap.gap >= -tolerance;
+  return on_surface && dot(d, gap.normal) < 0.0 ? 0.0 : 1.0;
+}
+
+void WorldImpl::stop_soft_crossings(StepContext& ctx, StepReport& report)
+{
+  if (settings_.time_of_impact == Toggle::Off || resting_.empty())
+  {
+    return;
+  }
+  const auto stop = [&](std::size_t i) {
+    if (frame_motion_[i] != FrameMotion::Dynamic)
+    {
+      return;
+    }
+    const Vec2 from = prepared_position_[i];
+    const Vec2 d = frame_position_[i] - from;
+    const double t = static_crossing_time(i, from, d);
+    if (t < 1.0)
+    {
+      frame_position_[i] = from + t * d;
+      frame_theta_[i] = prepared_theta_[i] + t * (frame_theta_[i] - prepared_theta_[i]);
+      if (touching_[i])
+      {
+        follow_pose(i);
+      }
+      ++report.toi_clamps;
+      ctx.effects.time_of_impact = true;
+    }
+  };
+  visit_bodies(stop);
+}
+
+void WorldImpl::stop_fx2d_crossings(StepContext& ctx, StepReport& report)
+{
+  if (settings_.time_of_impact == Toggle::Off || resting_.empty())
+  {
+    return;
+  }
+  const auto stop = [&](std::size_t i) {
+    if (!awake_dynamic(i))
+    {
+      return;
+    }
+    Body& b = bodies_[i];
+    const Vec2 from = prev_position_[i];
+    const Vec2 d = b.position() - from;
+    const double t = static_crossing_time(i, from, d);
+    if (t < 1.0)
+    {
+      b.set_position(from + t * d);
+      b.set_theta(prev_theta_[i] + t * (b.theta() - prev_theta_[i]));
+      ++report.toi_clamps;
+      ctx.effects.time_of_impact = true;
+    }
+  };
+  visit_bodies(stop);
+}
+
+}  // namespace detail
+}  // namespace collision2d

@@ -13,6 +13,7 @@
 #include "collision2d/world.h"
 #include "contact_kernel.h"
 #include "posed_polygon.h"
+#include "turn.h"
 #include "world_stage_types.h"
 #include "world_state.h"
 
@@ -129,7 +130,13 @@ struct WorldImpl : WorldState
   /// and the pose change its contacts follow.
   void follow_body(std::size_t i, const StepContext& ctx);
   /// The pose change since prepare that body i's contact points follow.
-  void follow_pose(std::size_t i);
+  /// Inline: the move pass calls it for every touching body.
+  void follow_pose(std::size_t i)
+  {
+    BodyVelocity& state = velocity_[i];
+    state.moved = frame_position_[i] - prepared_position_[i];
+    turn_of(frame_theta_[i] - prepared_theta_[i], state.turned_cos, state.turned_sin);
+  }
   /// How body i moves in this frame's substeps (world_step.cpp).
   FrameMotion frame_motion(std::size_t i) const;
   /// Whether a body that moves so, at spin omega, turns in a substep.
@@ -168,8 +175,8 @@ struct WorldImpl : WorldState
   CarriedSlip carry_slip(const ContactPoint& p, bool sliding, Vec2 offset) const;
   /// Unless `last`, another substep follows, whose gravity kick a body no
   /// contact touches takes here (integrate_velocities then skips it). On the
-  /// last, returns whether some body has moved far in the frame (moved_far):
-  /// then stop_soft_crossings may have work.
+  /// last, returns whether some body moved far in the frame
+  /// (moved_far_in_frame): only then may stop_soft_crossings have work.
   bool integrate_positions(StepContext& ctx, StepReport& report, bool last);
   // world_turning_faces.cpp: disks on the faces of turning kinematic bodies.
   /// After prepare, before the rows are packed: the frame's disks on such
@@ -261,7 +268,16 @@ struct WorldImpl : WorldState
   double static_crossing_time(std::size_t i, Vec2 from, Vec2 d);
   /// Whether a move by d could carry body i's centroid into a static body
   /// it was clear of (static_crossing_time checks only such moves).
-  bool moved_far(std::size_t i, Vec2 d) const;
+  bool moved_far(std::size_t i, Vec2 d) const
+  {
+    const double least = kCrossingMoveFraction * inner_radius_[i];
+    return length_sq(d) > least * least;
+  }
+  /// Soft step: moved_far for a dynamic body's move since prepare.
+  bool moved_far_in_frame(std::size_t i) const
+  {
+    return frame_motion_[i] == FrameMotion::Dynamic && moved_far(i, frame_position_[i] - prepared_position_[i]);
+  }
   /// When body i's centroid, moved from `from` by d, would first pass into
   /// static `obstacle`: the fraction of d its core (or centroid) moves clear; 1 if never.
   double centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const;

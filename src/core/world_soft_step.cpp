@@ -309,7 +309,8 @@ bool WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool l
   // The poses stay in frame_position_ and frame_theta_ and go onto the
   // bodies once per frame (place_bodies), as do the velocities: a substep
   // reads and writes no body record, which a large world streams from memory.
-  for_each_body([&](std::size_t i) {
+  // Inlined by request: the crossing check made the compiler call it per body.
+  for_each_body([&](std::size_t i) __attribute__((always_inline)) {
     move_in_frame(i, ctx, swept);
     follow_body(i, ctx);
     if (kick_free && !touching_[i] && frame_motion_[i] == FrameMotion::Dynamic)
@@ -318,7 +319,7 @@ bool WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool l
       velocity_[i].v = velocity_[i].v + gravity_kick;
     }
     // Checked while the poses are in cache: stop_soft_crossings is rarely needed.
-    if (last && frame_motion_[i] == FrameMotion::Dynamic && moved_far(i, frame_position_[i] - prepared_position_[i]))
+    if (last && moved_far_in_frame(i))
     {
       far.store(true, std::memory_order_relaxed);
     }
@@ -401,13 +402,6 @@ void WorldImpl::follow_body(std::size_t i, const StepContext& ctx)
   {
     follow_pose(i);
   }
-}
-
-void WorldImpl::follow_pose(std::size_t i)
-{
-  BodyVelocity& state = velocity_[i];
-  state.moved = frame_position_[i] - prepared_position_[i];
-  turn_of(frame_theta_[i] - prepared_theta_[i], state.turned_cos, state.turned_sin);
 }
 
 double WorldImpl::followed_penetration()

@@ -102,6 +102,11 @@ constexpr std::size_t kMinSharedPairs = 1024;
 /// stopped there overlaps its obstacle mostly on the centroid's side, so the
 /// push out goes back the way the body came.
 constexpr double kCoreFraction = 0.25;
+/// Moves shorter than this fraction of a body's inner radius are not swept
+/// against the static bodies (world_static_crossing.cpp): one cannot carry
+/// the centroid of a body resting on a static face (the centroid an inner
+/// radius away) past that face.
+constexpr double kCrossingMoveFraction = 0.5;
 /// kept_from_ of a pair whose manifold was found by the narrow phase.
 constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);
 

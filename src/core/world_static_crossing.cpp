@@ -19,10 +19,6 @@ namespace detail
 {
 namespace
 {
-/// Moves shorter than this fraction of a body's inner radius are not swept:
-/// one cannot carry the centroid of a body resting on a static face (the
-/// centroid an inner radius away) past that face.
-constexpr double kCrossingMoveFraction = 0.5;
 /// Once the core already touches a static body, the centroid itself is
 /// swept: a disk this fraction of the inner radius.
 constexpr double kCentroidFraction = 1e-3;
@@ -88,12 +84,6 @@ double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d)
   return earliest;
 }
 
-bool WorldImpl::moved_far(std::size_t i, Vec2 d) const
-{
-  const double least = kCrossingMoveFraction * inner_radius_[i];
-  return length_sq(d) > least * least;
-}
-
 double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const
 {
   const double inner = inner_radius_[i];
@@ -124,7 +114,7 @@ void WorldImpl::stop_soft_crossings(StepContext& ctx, StepReport& report)
     return;
   }
   const auto stop = [&](std::size_t i) {
-    if (frame_motion_[i] != FrameMotion::Dynamic)
+    if (!moved_far_in_frame(i))
     {
       return;
     }

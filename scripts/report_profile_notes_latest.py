@@ -281,4 +281,18 @@ before the change above): first frame 1.39 us against 0.35 us for the
 extra. Taking those buffers from one block would shorten it; they are
 kept between frames, so that is left for a change of the body arrays'
 layout.
+
+The static crossing sweep's cost, and why its move test rides in the last
+substep's move pass (callgrind on the release build, same driver;
+instructions a steady frame, 7b2795b -> f47a60e -> f24b893):
+bouncing_disks at 1 substep 5878.2 -> 6030.0 -> 6034.8, incline_slide
+at 1 substep 4890.5 -> 5031.3 -> 5038.7, bouncing_disks at 4 substeps
+10204.2 -> 10486.0 -> 10526.2, the base-20 pyramid 2448821 -> 2464675 ->
+2454630; bullet_wall in the Fx2D order at 1x2 2752.0 -> 2814.0. The
+small scenes pay for the sweeps their fast bodies need (incline_slide's
+box is swept in about one frame in five). At f47a60e the pyramid paid
+0.65% for a test it never passes: the compiler had stopped inlining the
+move pass's per-body function. A separate pass for the test, inlined,
+cost the pyramid 0.23% and the small scenes 3.7 to 4.2%; the test inside
+the last move pass, inlined, costs 0.24% and 2.7 to 3.1%.
 """

@@ -176,7 +176,7 @@ struct WorldImpl : WorldState
   /// Unless `last`, another substep follows, whose gravity kick a body no
   /// contact touches takes here (integrate_velocities then skips it). On the
   /// last, returns whether some body moved far in the frame
-  /// (moved_far_in_frame): only then may stop_soft_crossings have work.
+  /// (moved_far_in_frame): only then may stop_static_crossings have work.
   bool integrate_positions(StepContext& ctx, StepReport& report, bool last);
   // world_turning_faces.cpp: disks on the faces of turning kinematic bodies.
   /// After prepare, before the rows are packed: the frame's disks on such
@@ -281,11 +281,10 @@ struct WorldImpl : WorldState
   /// When body i's centroid, moved from `from` by d, would first pass into
   /// static `obstacle`: the fraction of d its core (or centroid) moves clear; 1 if never.
   double centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const;
-  /// After the soft step's substeps: each body's frame move stopped where
-  /// static_crossing_time says, its contacts following.
-  void stop_soft_crossings(StepContext& ctx, StepReport& report);
-  /// The same after an Fx2D substep, from the substep's start.
-  void stop_fx2d_crossings(StepContext& ctx, StepReport& report);
+  /// Each body's move stopped where static_crossing_time says: after the
+  /// soft step's substeps (`soft`; its frame move, its contacts following)
+  /// or after an Fx2D substep (its move from the substep's start).
+  void stop_static_crossings(StepContext& ctx, StepReport& report, bool soft);
 
   // world_sweep_marks.cpp: which bodies a substep sweeps.
   /// The squared substep move above which body i is swept in Auto (m^2);

@@ -79,7 +79,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   }
   if (moved_far)
   {
-    stop_soft_crossings(ctx, report);                     // world_static_crossing.cpp
+    stop_static_crossings(ctx, report, true);             // world_static_crossing.cpp
   }
   follow_turning_faces(ctx.h, true);                      // as prepared, for the publish
   // 4. The poses and velocities onto the bodies, checked finite before the
@@ -318,7 +318,7 @@ bool WorldImpl::integrate_positions(StepContext& ctx, StepReport& report, bool l
       // Nothing reads its velocity before the next substep's kick would.
       velocity_[i].v = velocity_[i].v + gravity_kick;
     }
-    // Checked while the poses are in cache: stop_soft_crossings is rarely needed.
+    // Checked while the poses are in cache: stop_static_crossings is rarely needed.
     if (last && moved_far_in_frame(i))
     {
       far.store(true, std::memory_order_relaxed);

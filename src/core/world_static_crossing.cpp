@@ -107,59 +107,47 @@ double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Bo
   return on_surface && dot(d, gap.normal) < 0.0 ? 0.0 : 1.0;
 }
 
-void WorldImpl::stop_soft_crossings(StepContext& ctx, StepReport& report)
+void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool soft)
 {
   if (settings_.time_of_impact == Toggle::Off || resting_.empty())
   {
     return;
   }
-  const auto stop = [&](std::size_t i) {
-    if (!moved_far_in_frame(i))
+  // The soft step moves the frame's poses from prepare; the Fx2D order the
+  // bodies themselves from the substep's start.
+  const std::vector<Vec2>& start = soft ? prepared_position_ : prev_position_;
+  const std::vector<double>& start_theta = soft ? prepared_theta_ : prev_theta_;
+  visit_bodies([&](std::size_t i) {
+    if (soft ? !moved_far_in_frame(i) : !awake_dynamic(i))
     {
       return;
     }
-    const Vec2 from = prepared_position_[i];
-    const Vec2 d = frame_position_[i] - from;
-    const double t = static_crossing_time(i, from, d);
-    if (t < 1.0)
+    const Vec2 end = soft ? frame_position_[i] : bodies_[i].position();
+    const double end_theta = soft ? frame_theta_[i] : bodies_[i].theta();
+    const double t = static_crossing_time(i, start[i], end - start[i]);
+    if (t >= 1.0)
     {
-      frame_position_[i] = from + t * d;
-      frame_theta_[i] = prepared_theta_[i] + t * (frame_theta_[i] - prepared_theta_[i]);
+      return;
+    }
+    const Vec2 at = start[i] + t * (end - start[i]);
+    const double theta = start_theta[i] + t * (end_theta - start_theta[i]);
+    if (soft)
+    {
+      frame_position_[i] = at;
+      frame_theta_[i] = theta;
       if (touching_[i])
       {
         follow_pose(i);
       }
-      ++report.toi_clamps;
-      ctx.effects.time_of_impact = true;
     }
-  };
-  visit_bodies(stop);
-}
-
-void WorldImpl::stop_fx2d_crossings(StepContext& ctx, StepReport& report)
-{
-  if (settings_.time_of_impact == Toggle::Off || resting_.empty())
-  {
-    return;
-  }
-  const auto stop = [&](std::size_t i) {
-    if (!awake_dynamic(i))
+    else
     {
-      return;
+      bodies_[i].set_position(at);
+      bodies_[i].set_theta(theta);
     }
-    Body& b = bodies_[i];
-    const Vec2 from = prev_position_[i];
-    const Vec2 d = b.position() - from;
-    const double t = static_crossing_time(i, from, d);
-    if (t < 1.0)
-    {
-      b.set_position(from + t * d);
-      b.set_theta(prev_theta_[i] + t * (b.theta() - prev_theta_[i]));
-      ++report.toi_clamps;
-      ctx.effects.time_of_impact = true;
-    }
-  };
-  visit_bodies(stop);
+    ++report.toi_clamps;
+    ctx.effects.time_of_impact = true;
+  });
 }
 
 }  // namespace detail

@@ -158,7 +158,7 @@ void WorldImpl::substep(StepContext& ctx, StepReport& report)
   solve_velocity_stage(ctx, report);
   store_velocities();
   // 7. No centroid passed into a static body in the substep.
-  stop_fx2d_crossings(ctx, report);                       // world_static_crossing.cpp
+  stop_static_crossings(ctx, report, false);              // world_static_crossing.cpp
   ++report.substeps;
   report.contact_count = points_.size() + sleeping_contacts_.size();
 }

@@ -118,7 +118,8 @@ void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool
   const std::vector<Vec2>& start = soft ? prepared_position_ : prev_position_;
   const std::vector<double>& start_theta = soft ? prepared_theta_ : prev_theta_;
   visit_bodies([&](std::size_t i) {
-    if (soft ? !moved_far_in_frame(i) : !awake_dynamic(i))
+    // static_crossing_time returns 1 at once for a short move.
+    if (soft ? frame_motion_[i] != FrameMotion::Dynamic : !awake_dynamic(i))
     {
       return;
     }

@@ -117,7 +117,9 @@ void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool
   // bodies themselves from the substep's start.
   const std::vector<Vec2>& start = soft ? prepared_position_ : prev_position_;
   const std::vector<double>& start_theta = soft ? prepared_theta_ : prev_theta_;
-  visit_bodies([&](std::size_t i) {
+  // Inlined by request: called per body, the lambda cost a large falling
+  // world a fifth as much again as the sweeps it calls.
+  visit_bodies([&](std::size_t i) __attribute__((always_inline)) {
     // static_crossing_time returns 1 at once for a short move.
     if (soft ? frame_motion_[i] != FrameMotion::Dynamic : !awake_dynamic(i))
     {

@@ -27,8 +27,8 @@ struct BodyVelocity
   double omega = 0.0;
   // Soft step only: the pose change since the frame's contacts were prepared.
   Vec2 moved;                ///< translation (m)
-  double turned_cos = 1.0;   ///< rotation, as its cosine and sine
-  double turned_sin = 0.0;
+  double turned_cos = 1.0;   ///< rotation, as its cosine and sine (a disk's:
+  double turned_sin = 0.0;   ///< 1 and the turn in rad, see follow_pose)
   double inv_mass = 0.0;
   double inv_inertia = 0.0;
 };

@@ -277,6 +277,7 @@ void WorldImpl::append_body(BodyId id, const Body& body, const Material& materia
   make_room(island_label_, n);
   make_room(rest_time_, n);
   make_room(inner_radius_, n);
+  make_room(disk_, n);
   if (clamping_)
   {
     make_room(toi_, n);
@@ -292,7 +293,7 @@ void WorldImpl::append_body(BodyId id, const Body& body, const Material& materia
   {
     toi_.push_back(1.0);  // the next detection reads it: a new body was not stopped
   }
-  append_inner_radius(bodies_.back());
+  append_body_shape(bodies_.back());
 }
 
 void WorldImpl::remove_body(BodyId id)
@@ -342,7 +343,7 @@ void WorldImpl::remove_body(BodyId id)
     }
   }
   measure_sleeping_penetration();
-  refresh_inner_radii();
+  refresh_body_shapes();
 }
 
 std::size_t WorldImpl::index_of(BodyId id) const
@@ -379,7 +380,7 @@ void WorldImpl::clear()
   sleeping_penetration_ = 0.0;
   points_.clear();
   clamping_ = false;
-  refresh_inner_radii();
+  refresh_body_shapes();
 }
 
 }  // namespace detail

@@ -135,7 +135,17 @@ struct WorldImpl : WorldState
   {
     BodyVelocity& state = velocity_[i];
     state.moved = frame_position_[i] - prepared_position_[i];
-    turn_of(frame_theta_[i] - prepared_theta_[i], state.turned_cos, state.turned_sin);
+    const double turn = frame_theta_[i] - prepared_theta_[i];
+    if (disk_[i])
+    {
+      // A disk's lever arms lie along its contacts' normals: turned by the
+      // arc it rolls, not rotated, its gaps stay put and its slips count
+      // that arc, at any spin.
+      state.turned_cos = 1.0;
+      state.turned_sin = turn;
+      return;
+    }
+    turn_of(turn, state.turned_cos, state.turned_sin);
   }
   /// How body i moves in this frame's substeps (world_step.cpp).
   FrameMotion frame_motion(std::size_t i) const;
@@ -236,9 +246,11 @@ struct WorldImpl : WorldState
   void restore_velocities();
 
   // world_toi.cpp
-  void refresh_inner_radii();
+  /// What the step keeps of each body's shape: its inner radius (and the
+  /// smallest of them) and whether it is a disk.
+  void refresh_body_shapes();
   /// O(1) update for a body just appended: building a world stays O(n).
-  void append_inner_radius(const Body& body);
+  void append_body_shape(const Body& body);
   Vec2 substep_displacement(std::size_t i, double h) const;
   /// How far body i's outline turns in a sweep of h seconds (rad): a
   /// kinematic polygon's spin (face_turn) or a dynamic polygon's marked

@@ -40,9 +40,9 @@ constexpr double kMaxHertzPerSubstepRate = 0.25;
 /// Contacts with a body that cannot move are this much stiffer, so a stack
 /// is not pressed into the ground by its own weight.
 constexpr double kStaticStiffnessFactor = 2.0;
-/// A touching body turns at most this much per substep (rad): the frame's
+/// A touching polygon turns at most this much per substep (rad): the frame's
 /// contacts follow its pose from lever arms fixed at prepare, which a faster
-/// spin would swing through the surface it touches.
+/// spin would swing through the surface it touches (a disk's do not swing).
 constexpr double kMaxTurnPerSubstep = 0.25 * 3.14159265358979323846;
 
 }  // namespace
@@ -234,7 +234,7 @@ void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)
     if ((first || touching_[i]) && frame_motion_[i] == FrameMotion::Dynamic)
     {
       velocity_[i].v = velocity_[i].v + gravity_kick;
-      if (touching_[i])
+      if (touching_[i] && !disk_[i])  // a disk's contacts do not swing (follow_pose)
       {
         velocity_[i].omega = std::clamp(velocity_[i].omega, -max_spin, max_spin);
       }

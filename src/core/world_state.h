@@ -72,6 +72,7 @@ struct WorldState
   std::vector<unsigned char> asleep_;  ///< 1 while the body's island sleeps (bytes: read in every body pass)
   std::vector<double> rest_time_;     ///< how long each body has been resting (s)
   std::vector<double> inner_radius_;  ///< m, for the time-of-impact speed test
+  std::vector<unsigned char> disk_;   ///< 1 for a disk: the soft step's contacts stay put as it turns (follow_pose)
   double min_inner_radius_ = 0.0;
 
   // Scratch reused across substeps and steps (no allocation once warmed up).

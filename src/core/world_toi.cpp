@@ -36,13 +36,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-void WorldImpl::refresh_inner_radii()
+void WorldImpl::refresh_body_shapes()
 {
   inner_radius_.resize(bodies_.size());
+  disk_.resize(bodies_.size());
   min_inner_radius_ = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
     inner_radius_[i] = inner_radius(bodies_[i]);
+    disk_[i] = bodies_[i].shape() == Shape::Disk;
     min_inner_radius_ = std::min(min_inner_radius_, inner_radius_[i]);
   }
   if (bodies_.empty())
@@ -51,9 +53,10 @@ void WorldImpl::refresh_inner_radii()
   }
 }
 
-void WorldImpl::append_inner_radius(const Body& body)
+void WorldImpl::append_body_shape(const Body& body)
 {
   inner_radius_.push_back(inner_radius(body));
+  disk_.push_back(body.shape() == Shape::Disk);
   min_inner_radius_ = inner_radius_.size() == 1 ? inner_radius_.back() : std::min(min_inner_radius_, inner_radius_.back());
 }
 

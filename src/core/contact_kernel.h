@@ -269,6 +269,14 @@ inline Vec2 anchor_offset(const ContactPoint& p, const std::vector<BodyVelocity>
 /// an anchor offset.
 inline double separation_at(const ContactPoint& p, Vec2 offset) { return p.base_separation + dot(offset, p.normal); }
 inline double slip_at(const ContactPoint& p, Vec2 offset) { return dot(offset - (p.r_b - p.r_a), p.tangent()); }
+/// Soft step, a point whose normal or lever arms were moved during the
+/// frame: its gap and its slip since it stuck set to these at the anchors'
+/// offset now, which separation_at and slip_at then read.
+inline void set_followed(ContactPoint& p, Vec2 offset, double gap, double drift)
+{
+  p.base_separation = gap - dot(offset, p.normal);
+  p.anchor_drift = drift - slip_at(p, offset);
+}
 /// Both normals and the midpoint friction row solved at once assuming the pair
 /// sticks; false, changing nothing, unless that keeps both normal impulses
 /// >= 0 and the friction inside its cone.

@@ -30,6 +30,7 @@ void BodyCensus::add(const BodyCensus& other)
   dynamic_polygons += other.dynamic_polygons;
   widest_dynamic_polygon = std::max(widest_dynamic_polygon, other.widest_dynamic_polygon);
   spinning_disks += other.spinning_disks;
+  disks += other.disks;
   turning_face_bodies += other.turning_face_bodies;
   moving_kinematic_bodies += other.moving_kinematic_bodies;
 }
@@ -91,6 +92,7 @@ void WorldImpl::count_body(std::size_t i, BodyCensus& census) const
   census.dynamic_polygons += dynamic && polygon ? 1 : 0;
   census.widest_dynamic_polygon = std::max(census.widest_dynamic_polygon, dynamic && polygon ? b.radius() : 0.0);
   census.spinning_disks += dynamic && !polygon && b.omega() != 0.0 ? 1 : 0;
+  census.disks += polygon ? 0 : 1;
   census.turning_face_bodies += b.type() == BodyType::Kinematic && polygon && b.omega() != 0.0 ? 1 : 0;
   census.moving_kinematic_bodies += b.type() == BodyType::Kinematic && b.velocity() != Vec2{0.0, 0.0} ? 1 : 0;
 }

@@ -214,6 +214,34 @@ struct WorldImpl : WorldState
   }
   __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
   void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);
+  // world_round_points.cpp: contacts between a disk and a vertex or a disk.
+  /// After prepare, before the rows are packed: the frame's such contacts
+  /// whose centres slide past each other fast enough that the straight gap
+  /// would err, kept on the point verbs. Inline: most frames have none.
+  void find_round_points()
+  {
+    round_points_.clear();
+    // Counted at each edit (census_for_frame): a pair bounces (and is not
+    // followed) unless one of its bodies does not.
+    if (census_.disks > 0 && census_.bouncy < bodies_.size())
+    {
+      list_round_points();
+    }
+  }
+  __attribute__((noinline, cold)) void list_round_points();
+  /// Before each pass (substeps of h seconds): those points' normals along
+  /// the line between their centres now, their gaps the centres' distance
+  /// less the radii, a speculative gap only as far as their path closes
+  /// before they touch. `as_prepared`: after the passes, the gaps on the
+  /// normals and lever arms they were prepared with, which the contacts publish.
+  void follow_round_points(double h, bool as_prepared = false)
+  {
+    if (!round_points_.empty())
+    {
+      follow_round_gaps(h, as_prepared);
+    }
+  }
+  __attribute__((noinline, cold)) void follow_round_gaps(double h, bool as_prepared);
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();

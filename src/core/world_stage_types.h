@@ -87,6 +87,23 @@ struct TurningFacePoint
   double anchor_drift = 0.0;  ///< slip since it stuck (m)
 };
 
+/// Soft step: a one-point contact between a disk and a vertex or another
+/// disk, whose gap is followed as the distance between the two centres of
+/// curvature (world_round_points.cpp).
+struct RoundPoint
+{
+  std::size_t point = 0;
+  Vec2 normal;          ///< as prepared: unit, from a to b
+  Vec2 r_a;             ///< as prepared: lever arms (m)
+  Vec2 r_b;
+  double anchor_drift = 0.0;  ///< as prepared: slip since it stuck (m)
+  Vec2 arm_a;           ///< from each body's centre to its centre of curvature (m): 0 for a disk
+  Vec2 arm_b;
+  double reach = 0.0;   ///< the centres' distance at prepare (m)
+  double radius_a = 0.0;  ///< a disk's radius, 0 for a vertex (m)
+  double radius_b = 0.0;
+};
+
 /// Bodies below which a per-body stage stays on the calling thread: each
 /// body's update is a few operations, less than waking the workers costs.
 constexpr std::size_t kMinSharedBodies = 2048;
@@ -123,6 +140,7 @@ struct BodyCensus
   std::size_t dynamic_polygons = 0;
   double widest_dynamic_polygon = 0.0;  ///< m: the largest bounding radius of a dynamic polygon
   std::size_t spinning_disks = 0;  ///< dynamic disks with a spin of their own
+  std::size_t disks = 0;          ///< disks of any type (world_round_points.cpp)
   std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp, world_toi.cpp)
   std::size_t moving_kinematic_bodies = 0;  ///< kinematic bodies with a velocity (world_kinematic_push.cpp)
   void add(const BodyCensus& other);

@@ -167,6 +167,7 @@ struct WorldState
   bool bounces_ = false;               ///< soft step: some point of the frame can bounce
   std::vector<BouncePoint> bounce_points_;  ///< ... those points
   std::vector<TurningFacePoint> turning_faces_;  ///< soft step: the frame's disks on turning kinematic faces
+  std::vector<RoundPoint> round_points_;  ///< soft step: the frame's round contacts followed exactly
   std::vector<std::size_t> bouncing_;   ///< scratch: the bounce_points_ a substep's restitution drives
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).

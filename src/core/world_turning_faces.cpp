@@ -97,9 +97,7 @@ void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool a
   }
   // The gap and the slip the point verbs read from the anchors' offset are
   // the ones above at these poses (no pass moves a body).
-  const Vec2 offset = anchor_offset(p, velocity_);
-  p.base_separation = gap - dot(offset, p.normal);
-  p.anchor_drift = t.anchor_drift + slip - slip_at(p, offset);
+  set_followed(p, anchor_offset(p, velocity_), gap, t.anchor_drift + slip);
 }
 
 }  // namespace detail

@@ -188,60 +188,53 @@ struct WorldImpl : WorldState
   /// last, returns whether some body moved far in the frame
   /// (moved_far_in_frame): only then may stop_static_crossings have work.
   bool integrate_positions(StepContext& ctx, StepReport& report, bool last);
-  // world_turning_faces.cpp: disks on the faces of turning kinematic bodies.
-  /// After prepare, before the rows are packed: the frame's disks on such
-  /// faces, kept on the point verbs. Inline: most frames have none.
-  void find_turning_faces()
+  // Points the frame follows exactly, kept on the point verbs: disks on the
+  // faces of turning kinematic bodies (world_turning_faces.cpp), and
+  // contacts between a disk and a vertex or a disk whose centres slide past
+  // each other (world_round_points.cpp).
+  /// After prepare, before the rows are packed. Inline: most frames have
+  /// neither, by the census (counted at each edit, census_for_frame); a
+  /// pair bounces, and is not followed, unless one of its bodies does not.
+  void find_followed_points()
   {
     turning_faces_.clear();
-    if (census_.turning_face_bodies > 0)  // counted at each edit (census_for_frame)
+    round_points_.clear();
+    if (census_.turning_face_bodies > 0)
     {
       list_turning_faces();
     }
-  }
-  __attribute__((noinline, cold)) void list_turning_faces();
-  /// Before each pass: those points' normals turned with their faces, their
-  /// face anchors moved under the disk's nearest point, their gaps and slips
-  /// measured on the turned faces (substeps of h seconds). `as_prepared`:
-  /// after the passes, the same gaps and slips on the normals and lever arms
-  /// they were prepared with, which the contacts publish.
-  void follow_turning_faces(double h, bool as_prepared = false)
-  {
-    if (!turning_faces_.empty())
-    {
-      follow_turning_points(h, as_prepared);
-    }
-  }
-  __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
-  void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);
-  // world_round_points.cpp: contacts between a disk and a vertex or a disk.
-  /// After prepare, before the rows are packed: the frame's such contacts
-  /// whose centres slide past each other fast enough that the straight gap
-  /// would err, kept on the point verbs. Inline: most frames have none.
-  void find_round_points()
-  {
-    round_points_.clear();
-    // Counted at each edit (census_for_frame): a pair bounces (and is not
-    // followed) unless one of its bodies does not.
     if (census_.disks > 0 && census_.bouncy < bodies_.size())
     {
       list_round_points();
     }
   }
-  __attribute__((noinline, cold)) void list_round_points();
-  /// Before each pass (substeps of h seconds): those points' normals along
-  /// the line between their centres now, their gaps the centres' distance
-  /// less the radii, a speculative gap only as far as their path closes
-  /// before they touch. `as_prepared`: after the passes, the gaps on the
-  /// normals and lever arms they were prepared with, which the contacts publish.
-  void follow_round_points(double h, bool as_prepared = false)
+  /// Before each pass (substeps of h seconds). `as_prepared`: after the
+  /// passes, their gaps and slips on the normals and lever arms they were
+  /// prepared with, which the contacts publish.
+  void follow_points(double h, bool as_prepared = false)
   {
+    if (!turning_faces_.empty())
+    {
+      follow_turning_points(h, as_prepared);
+    }
     if (!round_points_.empty())
     {
-      follow_round_gaps(h, as_prepared);
+      follow_round_points(h, as_prepared);
     }
   }
-  __attribute__((noinline, cold)) void follow_round_gaps(double h, bool as_prepared);
+  __attribute__((noinline, cold)) void list_turning_faces();
+  /// Disks on turning faces: their normals turned with their faces, their
+  /// face anchors moved under the disk's nearest point, their gaps and slips
+  /// measured on the turned faces.
+  __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
+  void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);
+  /// Round contacts whose centres slide past each other by more than
+  /// kRoundSlideFraction of their distance in a frame (the straight gap would err).
+  __attribute__((noinline, cold)) void list_round_points();
+  /// Round contacts: their normals along the line between their centres now,
+  /// their gaps the centres' distance less the radii, a speculative gap only
+  /// as far as their path closes before they touch.
+  __attribute__((noinline, cold)) void follow_round_points(double h, bool as_prepared);
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();

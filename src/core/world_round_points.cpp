@@ -99,7 +99,7 @@ void WorldImpl::list_round_points()
   }
 }
 
-void WorldImpl::follow_round_gaps(double h, bool as_prepared)
+void WorldImpl::follow_round_points(double h, bool as_prepared)
 {
   for (const RoundPoint& r : round_points_)
   {

@@ -58,8 +58,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   // 2. Prepare the bodies (velocities, poses, which touch); the rows from
   // the prepared points.
   prepare_soft_bodies(ctx.effects.rotation);
-  find_turning_faces();                                   // world_turning_faces.cpp
-  find_round_points();                                    // world_round_points.cpp
+  find_followed_points();                                 // world_turning_faces.cpp, world_round_points.cpp
   if (rows_on())
   {
     soft_rows_.pack(points_, velocity_, ctx.effects.friction, springs_, workers_, frame_block_);  // soft_rows.cpp
@@ -82,8 +81,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   {
     stop_static_crossings(ctx, report, true);             // world_static_crossing.cpp
   }
-  follow_turning_faces(ctx.h, true);                      // as prepared, for the publish
-  follow_round_points(ctx.h, true);
+  follow_points(ctx.h, true);                             // as prepared, for the publish
   // 4. The poses and velocities onto the bodies, checked finite before the
   // contacts are published; the impulses kept for next frame: publishing
   // reads each point's back from its row.
@@ -246,8 +244,7 @@ void WorldImpl::integrate_velocities(const StepContext& ctx, bool first)
 
 void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report)
 {
-  follow_turning_faces(ctx.h);                            // world_turning_faces.cpp
-  follow_round_points(ctx.h);                             // world_round_points.cpp
+  follow_points(ctx.h);                                   // world_turning_faces.cpp, world_round_points.cpp
   if (settings_.solver_mode == SolverMode::Exact)
   {
     // Each island at once by pivoting, from scratch (no warm start); an

@@ -24,8 +24,8 @@ namespace
 {
 /// A round point is followed only when its centres slide past each other by
 /// more than this fraction of their distance in a frame: the straight gap
-/// then misses the true one by more than half its square of that distance
-/// (5e-5 of it). Slower slides keep the rows.
+/// then misses the true one (by the slide squared over twice the distance)
+/// by more than 5e-5 of that distance. Slower slides keep the rows.
 constexpr double kRoundSlideFraction = 0.01;
 
 /// When a point `apart` from a centre, moving at `slide`, first comes

@@ -290,6 +290,9 @@ struct WorldImpl : WorldState
   __attribute__((noinline, cold)) void grow_stopped_boxes();
   /// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
   bool has_frame_contact(std::size_t i, std::size_t j) const;
+  /// time_of_impact of a disk of `radius` at `from` standing for body i (a
+  /// centroid core, or its centroid), moved by d, against `other` moved by d_other.
+  double disk_time_of_impact(std::size_t i, double radius, Vec2 from, Vec2 d, const Body& other, Vec2 d_other) const;
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
   /// against the other body of pair (i, j) moved by di and dj, else 1.
   double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;

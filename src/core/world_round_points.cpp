@@ -68,10 +68,8 @@ void WorldImpl::list_round_points()
     {
       continue;
     }
-    const Body& a = bodies_[p.a];
-    const Body& b = bodies_[p.b];
-    const double radius_a = a.shape() == Shape::Disk ? a.radius() : 0.0;
-    const double radius_b = b.shape() == Shape::Disk ? b.radius() : 0.0;
+    const double radius_a = disk_[p.a] ? bodies_[p.a].radius() : 0.0;
+    const double radius_b = disk_[p.b] ? bodies_[p.b].radius() : 0.0;
     const double reach = radius_a + radius_b + p.separation;  // the centres' distance at prepare
     if (!(reach > 0.0))
     {

@@ -11,8 +11,10 @@
 // to the fixed point: a body that meets several others in turn within one
 // frame bounces off each as it meets it. After the substeps no body's
 // centroid may have passed into a static body (world_static_crossing.cpp).
-// A disk on the face of a turning kinematic body is the one contact whose
-// normal and point follow its face before each pass (world_turning_faces.cpp).
+// Two kinds of contact follow their geometry before each pass instead: a disk
+// on the face of a turning kinematic body (world_turning_faces.cpp), and a
+// disk and a vertex or another disk whose centres slide past each other
+// (world_round_points.cpp).
 // Static friction holds position, not only velocity: a sticking point
 // remembers how far it has slipped since it stuck (across frames, with its
 // impulses) and its friction pulls that back at the contact's rate, so a stack

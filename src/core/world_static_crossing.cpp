@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "collision2d/time_of_impact.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -87,8 +86,7 @@ double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d)
 double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const
 {
   const double inner = inner_radius_[i];
-  const double t = time_of_impact(Body(bodies_[i].mass(), kCoreFraction * inner, from, Vec2{0.0, 0.0}), d, obstacle,
-                                  Vec2{0.0, 0.0});
+  const double t = disk_time_of_impact(i, kCoreFraction * inner, from, d, obstacle, Vec2{0.0, 0.0});
   if (t > 0.0)
   {
     return t;
@@ -99,8 +97,7 @@ double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Bo
   const PointGap gap = point_gap(obstacle, from);
   if (gap.gap > tolerance)
   {
-    const double u = time_of_impact(Body(bodies_[i].mass(), tolerance, from, Vec2{0.0, 0.0}), d, obstacle,
-                                    Vec2{0.0, 0.0});
+    const double u = disk_time_of_impact(i, tolerance, from, d, obstacle, Vec2{0.0, 0.0});
     return u > 0.0 ? u : 1.0;
   }
   const bool on_surface = gap.gap >= -tolerance;

@@ -187,6 +187,12 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored, bool rotation)
   return true;
 }
 
+double WorldImpl::disk_time_of_impact(std::size_t i, double radius, Vec2 from, Vec2 d, const Body& other,
+                                      Vec2 d_other) const
+{
+  return time_of_impact(Body(bodies_[i].mass(), radius, from, Vec2{0.0, 0.0}), d, other, d_other);
+}
+
 bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
 {
   const std::uint32_t a = static_cast<std::uint32_t>(std::min(i, j));
@@ -214,8 +220,8 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
     {
       continue;
     }
-    const Body core(bodies_[k].mass(), kCoreFraction * inner_radius_[k], bodies_[k].position(), Vec2{0.0, 0.0});
-    const double t = time_of_impact(core, dk, bodies_[other], d_other);
+    const double t =
+        disk_time_of_impact(k, kCoreFraction * inner_radius_[k], bodies_[k].position(), dk, bodies_[other], d_other);
     if (t > 0.0)  // a core already inside stays the detection's
     {
       earliest = std::min(earliest, t);

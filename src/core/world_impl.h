@@ -299,11 +299,13 @@ struct WorldImpl : WorldState
 
   // world_static_crossing.cpp: no centroid passes into a static body.
   /// Earliest time of impact in (0, 1) of body i's centroid core (or, if
-  /// that touches already, its centroid), moved from `from` by d, against
-  /// the static bodies; 1 if none, or if d is too short to need it.
-  double static_crossing_time(std::size_t i, Vec2 from, Vec2 d);
+  /// that touches already, its centroid), moved from `from` by d (a move
+  /// that moved_far), against the static bodies; 1 if none. Exactly
+  /// 0 when the centroid is on a static face already and d goes into it;
+  /// `face` is then that face's outward normal.
+  double static_crossing_time(std::size_t i, Vec2 from, Vec2 d, Vec2& face);
   /// Whether a move by d could carry body i's centroid into a static body
-  /// it was clear of (static_crossing_time checks only such moves).
+  /// it was clear of (stop_static_crossings sweeps only such moves).
   bool moved_far(std::size_t i, Vec2 d) const
   {
     const double least = kCrossingMoveFraction * inner_radius_[i];
@@ -315,8 +317,9 @@ struct WorldImpl : WorldState
     return frame_motion_[i] == FrameMotion::Dynamic && moved_far(i, frame_position_[i] - prepared_position_[i]);
   }
   /// When body i's centroid, moved from `from` by d, would first pass into
-  /// static `obstacle`: the fraction of d its core (or centroid) moves clear; 1 if never.
-  double centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const;
+  /// static `obstacle`: the fraction of d its core (or centroid) moves clear;
+  /// 1 if never; 0 on the obstacle's face (its normal into `face`), as static_crossing_time.
+  double centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle, Vec2& face) const;
   /// Each body's move stopped where static_crossing_time says: after the
   /// soft step's substeps (`soft`; its frame move, its contacts following)
   /// or after an Fx2D substep (its move from the substep's start).

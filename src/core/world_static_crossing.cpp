@@ -6,7 +6,10 @@
 // order) a body that moved far for its size has its centroid core swept
 // along its path against the static bodies and stops where it first touches
 // one; the contact then pushes it back out the way it came. Its velocity is
-// kept: the next frame's contact takes the impact.
+// kept: the next frame's contact takes the impact. A centroid already on a
+// static face (the contacts did not hold the body) keeps only the part of
+// its move along the face, and its turn: its velocity into the face goes,
+// or the body would stay frozen there with a velocity that never moves it.
 #include <algorithm>
 #include <limits>
 
@@ -52,11 +55,14 @@ PointGap point_gap(const Body& b, Vec2 p)
   return best;
 }
 
+/// v less its part into a face of outward normal n (unit).
+Vec2 without_inward(Vec2 v, Vec2 n) { return v - std::min(0.0, dot(v, n)) * n; }
+
 }  // namespace
 
-double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d)
+double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d, Vec2& face)
 {
-  if (!moved_far(i, d) || !is_finite(from) || !is_finite(d))
+  if (!is_finite(from) || !is_finite(d))
   {
     return 1.0;  // a pose that overflowed is the finiteness check's
   }
@@ -69,7 +75,7 @@ double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d)
     const Body& obstacle = bodies_[j];
     if (obstacle.type() == BodyType::Static && obstacle.aabb().overlaps(path))
     {
-      earliest = std::min(earliest, centroid_entry_time(i, from, d, obstacle));
+      earliest = std::min(earliest, centroid_entry_time(i, from, d, obstacle, face));
     }
   };
   for (const BodyPair& pair : crossing_pairs_)
@@ -83,7 +89,7 @@ double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d)
   return earliest;
 }
 
-double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle) const
+double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle, Vec2& face) const
 {
   const double inner = inner_radius_[i];
   const double t = disk_time_of_impact(i, kCoreFraction * inner, from, d, obstacle, Vec2{0.0, 0.0});
@@ -101,7 +107,12 @@ double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Bo
     return u > 0.0 ? u : 1.0;
   }
   const bool on_surface = gap.gap >= -tolerance;
-  return on_surface && dot(d, gap.normal) < 0.0 ? 0.0 : 1.0;
+  if (on_surface && dot(d, gap.normal) < 0.0)
+  {
+    face = gap.normal;
+    return 0.0;
+  }
+  return 1.0;
 }
 
 void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool soft)
@@ -117,20 +128,37 @@ void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool
   // Inlined by request: called per body, the lambda cost a large falling
   // world a fifth as much again as the sweeps it calls.
   visit_bodies([&](std::size_t i) __attribute__((always_inline)) {
-    // static_crossing_time returns 1 at once for a short move.
     if (soft ? frame_motion_[i] != FrameMotion::Dynamic : !awake_dynamic(i))
     {
       return;
     }
     const Vec2 end = soft ? frame_position_[i] : bodies_[i].position();
+    if (!moved_far(i, end - start[i]))
+    {
+      return;  // checked here: the sweep's own call would save registers first
+    }
     const double end_theta = soft ? frame_theta_[i] : bodies_[i].theta();
-    const double t = static_crossing_time(i, start[i], end - start[i]);
+    Vec2 face;
+    const double t = static_crossing_time(i, start[i], end - start[i], face);
     if (t >= 1.0)
     {
       return;
     }
-    const Vec2 at = start[i] + t * (end - start[i]);
-    const double theta = start_theta[i] + t * (end_theta - start_theta[i]);
+    Vec2 at = start[i] + t * (end - start[i]);
+    double theta = start_theta[i] + t * (end_theta - start_theta[i]);
+    if (t == 0.0)  // on a face: only the move and velocity into it stop
+    {
+      at = start[i] + without_inward(end - start[i], face);
+      theta = end_theta;
+      if (soft)
+      {
+        velocity_[i].v = without_inward(velocity_[i].v, face);
+      }
+      else
+      {
+        bodies_[i].set_velocity(without_inward(bodies_[i].velocity(), face));
+      }
+    }
     if (soft)
     {
       frame_position_[i] = at;

@@ -79,5 +79,84 @@ TEST(WorldStaticCrossing, StruckBodyStaysOutOfTheGround)
   EXPECT_GT(stopped, 0) << "no strike needed the sweep: the test no longer exercises it";
 }
 
+// A thin rod (2.8 m x 4 cm) half inside the ground: its centroid on the
+// ground's top face, tilted 0.9 rad, moving into the ground and spinning. Its
+// contacts are 1.1 m deep and do not stop the centroid, so the crossing check
+// does. Until this was fixed (0ba2ab9) the check stopped the whole move, turn
+// and all, and kept the velocity, every frame: the rod stayed frozen in the
+// ground for good, its velocity kept (and growing under gravity).
+//
+// What holds (asserted below), both pipelines, 1 and 4 substeps, with and
+// without gravity: the rod never ends a frame where it began while it moves
+// faster than kStill; its centroid never goes below the top; under gravity
+// it comes out and rests on the ground within kSettleFrames (or has slid off
+// the ground's end).
+TEST(WorldStaticCrossing, ACentroidOnTheFaceIsNotFrozenThere)
+{
+  constexpr double kRodLength = 2.8;   // m
+  constexpr double kRodThick = 0.04;   // m
+  constexpr double kRodMass = 9.4;     // kg
+  constexpr double kTilt = 0.9;        // rad
+  constexpr double kStill = 0.5;       // m/s, rad/s: slower than this, a frame may leave it in place
+  constexpr double kGroundHalfWidth = 20.0;  // m
+  constexpr int kSettleFrames = 180;
+  struct Throw
+  {
+    Vec2 velocity;  // m/s
+    double spin;    // rad/s
+  };
+  for (const bool soft : {false, true})
+    for (const int substeps : {1, 4})
+      for (const double gravity : {0.0, -10.0})
+        for (const Throw t : {Throw{{-20.0, -40.0}, 0.0}, Throw{{0.0, -5.0}, 3.0}, Throw{{5.0, -10.0}, -2.0}})
+        {
+          const std::string what = std::string(soft ? "soft step" : "Fx2D") + ", " + std::to_string(substeps) +
+                                   " substeps, gravity " + std::to_string(gravity) + ", v (" +
+                                   std::to_string(t.velocity.x) + ", " + std::to_string(t.velocity.y) + "), spin " +
+                                   std::to_string(t.spin);
+          SCOPED_TRACE(what);
+          WorldSettings settings;
+          settings.soft_step = soft;
+          settings.substeps = substeps;
+          settings.gravity = Vec2{0.0, gravity};
+          World world(settings);
+          Material rough;
+          rough.static_friction = 0.5;
+          rough.kinetic_friction = 0.5;
+          Body ground = scenes::make_box(1.0, 2 * kGroundHalfWidth, 1.0, {0.0, kGroundTop - 0.5}, 0.0, {0.0, 0.0}, 0.0);
+          ground.set_type(BodyType::Static);
+          world.add_body(ground, rough);
+          const BodyId id = world.add_body(
+              scenes::make_box(kRodMass, kRodLength, kRodThick, {0.0, kGroundTop}, kTilt, t.velocity, t.spin), rough);
+          int frozen = 0;  // frames that left the moving rod where it was
+          double lowest = kGroundTop;
+          for (int f = 0; f < kSettleFrames; ++f)
+          {
+            const Body before = world.body(id);
+            world.step();
+            const Body& after = world.body(id);
+            const bool moving = length(after.velocity()) > kStill || std::abs(after.omega()) > kStill;
+            if (moving && after.position().x == before.position().x && after.position().y == before.position().y &&
+                after.theta() == before.theta())
+            {
+              ++frozen;
+            }
+            if (std::abs(after.position().x) < kGroundHalfWidth)  // off the ground's end it may fall
+            {
+              lowest = std::min(lowest, after.position().y);
+            }
+          }
+          EXPECT_EQ(frozen, 0);
+          EXPECT_GE(lowest, kGroundTop - kDeepest);
+          const Body& rod = world.body(id);
+          if (gravity != 0.0 && std::abs(rod.position().x) < kGroundHalfWidth - kRodLength)
+          {
+            // At rest on the ground: flat on it, neither in it nor moving.
+            EXPECT_NEAR(rod.position().y, kGroundTop + 0.5 * kRodThick, kDeepest);
+            EXPECT_LT(length(rod.velocity()), 0.05);
+          }
+        }
+}
+
 }  // namespace
 }  // namespace collision2d

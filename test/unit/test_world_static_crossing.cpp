@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "collision2d/scenes/scene_parts.h"
@@ -82,15 +83,15 @@ TEST(WorldStaticCrossing, StruckBodyStaysOutOfTheGround)
 // A thin rod (2.8 m x 4 cm) half inside the ground: its centroid on the
 // ground's top face, tilted 0.9 rad, moving into the ground and spinning. Its
 // contacts are 1.1 m deep and do not stop the centroid, so the crossing check
-// does. Until this was fixed (0ba2ab9) the check stopped the whole move, turn
-// and all, and kept the velocity, every frame: the rod stayed frozen in the
-// ground for good, its velocity kept (and growing under gravity).
+// does. At 0ba2ab9 the check stopped the whole move, turn and all, and kept
+// the velocity, every frame: the rod stayed frozen in the ground for good,
+// its velocity kept (and growing under gravity).
 //
 // What holds (asserted below), both pipelines, 1 and 4 substeps, with and
 // without gravity: the rod never ends a frame where it began while it moves
-// faster than kStill; its centroid never goes below the top; under gravity
-// it comes out and rests on the ground within kSettleFrames (or has slid off
-// the ground's end).
+// faster than kStill; its centroid never goes more than kDeepest below the
+// top while over the ground; under gravity it comes out and rests on the
+// ground within kSettleFrames (or has slid off the ground's end).
 TEST(WorldStaticCrossing, ACentroidOnTheFaceIsNotFrozenThere)
 {
   constexpr double kRodLength = 2.8;   // m

@@ -26,5 +26,16 @@ struct PosedOutline
 /// disk, the largest separation along a face normal for two polygons.
 double outline_gap(const PosedOutline& a, const PosedOutline& b);
 
+/// A point's signed distance to a body's outline at its pose (m, negative
+/// inside) and the outward normal it is measured along: along the line from
+/// a disk's centre; the nearest face's for a polygon (its largest face
+/// separation: exact inside, at most the distance outside).
+struct PointGap
+{
+  double gap;
+  Vec2 normal;
+};
+PointGap outline_point_gap(const Body& b, Vec2 p);  // world_static_crossing.cpp
+
 }  // namespace detail
 }  // namespace collision2d

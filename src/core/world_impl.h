@@ -294,8 +294,15 @@ struct WorldImpl : WorldState
   /// centroid core, or its centroid), moved by d, against `other` moved by d_other.
   double disk_time_of_impact(std::size_t i, double radius, Vec2 from, Vec2 d, const Body& other, Vec2 d_other) const;
   /// Earliest time of impact in (0, 1) of a fast body's centroid core
-  /// against the other body of pair (i, j) moved by di and dj, else 1.
-  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const;
+  /// against the other body of pair (i, j) moved by di and dj, else 1. A
+  /// core that touches the other body already and closes on it is not
+  /// counted: it is `on_face` (i or j, else kNoBody), for release_core.
+  double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored,
+                             std::size_t& on_face) const;
+  /// Body k's core touches body `other` and closes on it: their approach
+  /// along the normal there leaves both velocities (momentum kept), instead
+  /// of a stop at time 0 that would come again each substep.
+  void release_core(std::size_t k, std::size_t other, bool stored);
 
   // world_static_crossing.cpp: no centroid passes into a static body.
   /// Earliest time of impact in (0, 1) of body i's centroid core (or, if

@@ -124,6 +124,8 @@ constexpr double kCoreFraction = 0.25;
 /// the centroid of a body resting on a static face (the centroid an inner
 /// radius away) past that face.
 constexpr double kCrossingMoveFraction = 0.5;
+/// No body (an index).
+constexpr std::size_t kNoBody = static_cast<std::size_t>(-1);
 /// kept_from_ of a pair whose manifold was found by the narrow phase.
 constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);
 

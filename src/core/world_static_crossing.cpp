@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "outline_gap.h"
 #include "world_impl.h"
 
 namespace collision2d
@@ -25,16 +26,12 @@ namespace
 /// swept: a disk this fraction of the inner radius.
 constexpr double kCentroidFraction = 1e-3;
 
-/// A point's signed distance to an outline (m, negative inside) and the
-/// outward normal it is measured along: the nearest face's for a polygon (its
-/// largest face separation: exact inside, at most the distance outside).
-struct PointGap
-{
-  double gap;
-  Vec2 normal;
-};
+/// v less its part into a face of outward normal n (unit).
+Vec2 without_inward(Vec2 v, Vec2 n) { return v - std::min(0.0, dot(v, n)) * n; }
 
-PointGap point_gap(const Body& b, Vec2 p)
+}  // namespace
+
+PointGap outline_point_gap(const Body& b, Vec2 p)
 {
   if (b.shape() == Shape::Disk)
   {
@@ -54,11 +51,6 @@ PointGap point_gap(const Body& b, Vec2 p)
   }
   return best;
 }
-
-/// v less its part into a face of outward normal n (unit).
-Vec2 without_inward(Vec2 v, Vec2 n) { return v - std::min(0.0, dot(v, n)) * n; }
-
-}  // namespace
 
 double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d, Vec2& face)
 {
@@ -100,7 +92,7 @@ double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Bo
   // The core touches already: the centroid may come up to the surface, not
   // past it; a centroid already inside is the contacts' to push out.
   const double tolerance = kCentroidFraction * inner;
-  const PointGap gap = point_gap(obstacle, from);
+  const PointGap gap = outline_point_gap(obstacle, from);
   if (gap.gap > tolerance)
   {
     const double u = disk_time_of_impact(i, tolerance, from, d, obstacle, Vec2{0.0, 0.0});

@@ -33,6 +33,9 @@ namespace detail
 namespace
 {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// A centroid core that would touch within this fraction of its radius
+/// touches already: stopped there, it would stop again each substep.
+constexpr double kCoreTouchFraction = 1e-3;
 
 }  // namespace
 
@@ -154,7 +157,12 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored, bool rotation)
     const bool turning = stored && pushing_ && (face_turn(i, h) != 0.0 || face_turn(j, h) != 0.0);
     if (t <= 0.0 && !turning)
     {
-      t = core_time_of_impact(i, j, di, dj, stored);
+      std::size_t on_face = kNoBody;
+      t = core_time_of_impact(i, j, di, dj, stored, on_face);
+      if (on_face != kNoBody)
+      {
+        release_core(on_face, on_face == i ? j : i, stored);
+      }
     }
     if (t <= 0.0 || t >= 1.0)
     {
@@ -204,7 +212,8 @@ bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
   return found != points_.end() && found->a == a && found->b == b;
 }
 
-double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored) const
+double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored,
+                                      std::size_t& on_face) const
 {
   // Only a body fast against the other (as Auto judges fast) can carry its
   // centroid that far: resting pairs swept with time_of_impact On skip this.
@@ -220,14 +229,43 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
     {
       continue;
     }
-    const double t =
-        disk_time_of_impact(k, kCoreFraction * inner_radius_[k], bodies_[k].position(), dk, bodies_[other], d_other);
-    if (t > 0.0)  // a core already inside stays the detection's
+    const double core = kCoreFraction * inner_radius_[k];
+    const double t = disk_time_of_impact(k, core, bodies_[k].position(), dk, bodies_[other], d_other);
+    if (t > 0.0 && t * std::sqrt(relative_sq) <= kCoreTouchFraction * core)
+    {
+      on_face = k;
+    }
+    else if (t > 0.0)  // a core already inside stays the detection's
     {
       earliest = std::min(earliest, t);
     }
   }
   return earliest;
+}
+
+void WorldImpl::release_core(std::size_t k, std::size_t other, bool stored)
+{
+  Body& a = bodies_[k];
+  Body& b = bodies_[other];
+  const PointGap at = outline_point_gap(b, a.position());  // outline_gap.h: normal from b out to a's centroid
+  const Vec2 n = at.normal;
+  const Vec2 r = a.position() - at.gap * n - b.position();  // b's surface point under the centroid
+  const Vec2 v_surface = b.velocity() + b.omega() * perp(r);
+  const double closing = dot(a.velocity() - v_surface, n);
+  const double inv_a = a.inv_mass();
+  const double inv_b = asleep_[other] ? 0.0 : b.inv_mass();  // a sleeping body stays as it is
+  if (closing >= 0.0 || inv_a + inv_b == 0.0)
+  {
+    return;
+  }
+  const double impulse = -closing / (inv_a + inv_b);  // N s, along n on a
+  a.set_velocity(a.velocity() + (impulse * inv_a) * n);
+  b.set_velocity(b.velocity() - (impulse * inv_b) * n);
+  if (!stored)  // the soft step's velocities live in velocity_
+  {
+    velocity_[k].v = a.velocity();
+    velocity_[other].v = b.velocity();
+  }
 }
 
 void WorldImpl::grow_stopped_boxes()

@@ -12,7 +12,10 @@
 // touches (or that the soft step's solver holds) is swept again with each
 // fast body shrunk to a small disk at its centroid: a spin can carry an
 // outline's far side through a thin body the sweep saw touching, but never
-// the centroid, which moves on a line.
+// the centroid, which moves on a line. A centroid's disk that touches the
+// other body already is not stopped (that stop would come again each
+// substep, freezing the pair): the pair's approach along the normal there
+// leaves both velocities instead.
 // The static bodies are swept once more after the frame's moves
 // (world_static_crossing.cpp).
 #include <algorithm>

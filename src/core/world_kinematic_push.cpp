@@ -59,7 +59,7 @@ void WorldImpl::note_pusher(std::size_t i, std::size_t other)
 {
   // The pair with body i's earliest impact decides whether it is pushed.
   const bool pushed = bodies_[other].type() == BodyType::Kinematic && awake_dynamic(i);
-  pusher_[i] = pushed ? other : kNoPusher;
+  pusher_[i] = pushed ? other : kNoBody;
   pushed_at_[i] = toi_[i];
 }
 
@@ -97,7 +97,7 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
     {
       continue;
     }
-    if (t >= 1.0 || (pusher_[body] != kNoPusher && pushed_at_[body] <= t))
+    if (t >= 1.0 || (pusher_[body] != kNoBody && pushed_at_[body] <= t))
     {
       continue;
     }
@@ -129,7 +129,7 @@ void WorldImpl::find_pushes(double h)
   for (std::size_t i = 0; i < n; ++i)
   {
     const std::size_t face = pusher_[i];
-    if (face != kNoPusher)
+    if (face != kNoBody)
     {
       push_[i] = push_ahead(i, face, pushed_at_[i], substep_displacement(i, h) * toi_[i],
                             FaceMove{substep_displacement(face, h), face_turn(face, h)});
@@ -150,7 +150,7 @@ void WorldImpl::apply_pushes(double h, bool stored)
   // adds each body's own move up to its stop.
   for (std::size_t i = 0; i < bodies_.size(); ++i)
   {
-    if (pusher_[i] == kNoPusher)
+    if (pusher_[i] == kNoBody)
     {
       continue;
     }
@@ -206,7 +206,7 @@ void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
   // stops (a stop at the same time, up to round-off, is this impact's).
   const Vec2 path = pushed_path(p, h);
   const double t = time_of_impact(bodies_[p], path, bodies_[q], substep_displacement(q, h));
-  if (!(t <= toi_[q] + kSameImpact) || (pusher_[q] != kNoPusher && pushed_at_[q] < t))
+  if (!(t <= toi_[q] + kSameImpact) || (pusher_[q] != kNoBody && pushed_at_[q] < t))
   {
     return;
   }

@@ -107,8 +107,9 @@ struct RoundPoint
 /// Bodies below which a per-body stage stays on the calling thread: each
 /// body's update is a few operations, less than waking the workers costs.
 constexpr std::size_t kMinSharedBodies = 2048;
-/// pusher_ of a body nothing pushes this substep (world_kinematic_push.cpp).
-constexpr std::size_t kNoPusher = static_cast<std::size_t>(-1);
+/// No body (an index): pusher_ of a body nothing pushes this substep (world_kinematic_push.cpp),
+/// and a core sweep that found no core touching already (world_toi.cpp).
+constexpr std::size_t kNoBody = static_cast<std::size_t>(-1);
 /// Contact points below which a per-point stage stays on the calling thread.
 constexpr std::size_t kMinSharedPoints = 1024;
 /// Broad-phase pairs below which filling their contact rows stays on the
@@ -124,8 +125,6 @@ constexpr double kCoreFraction = 0.25;
 /// the centroid of a body resting on a static face (the centroid an inner
 /// radius away) past that face.
 constexpr double kCrossingMoveFraction = 0.5;
-/// No body (an index).
-constexpr std::size_t kNoBody = static_cast<std::size_t>(-1);
 /// kept_from_ of a pair whose manifold was found by the narrow phase.
 constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);
 

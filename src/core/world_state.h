@@ -135,7 +135,7 @@ struct WorldState
   bool clamping_ = false;             ///< some body stopped at its time of impact in the last sweep (toi_ follows edits)
   /// A fast kinematic body was swept this substep (world_kinematic_push.cpp).
   bool pushing_ = false;
-  std::vector<std::size_t> pusher_;   ///< ... what pushes each body (a face or a pushed body), or kNoPusher
+  std::vector<std::size_t> pusher_;   ///< ... what pushes each body (a face or a pushed body), or kNoBody
   std::vector<double> pushed_at_;     ///< ... when in the substep (fraction) it meets the body
   std::vector<Vec2> push_;            ///< ... how far it pushes that body on (m)
   std::vector<BodyPair> touching_faces_;  ///< ... (face, body) pairs with no impact in the substep (they may touch)

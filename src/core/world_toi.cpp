@@ -127,7 +127,7 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored, bool rotation)
   sweep_phase_.find_pairs(boxes_, pairs_);
   if (pushing_)
   {
-    pusher_.assign(n, kNoPusher);
+    pusher_.assign(n, kNoBody);
     pushed_at_.resize(n);
     touching_faces_.clear();
   }

@@ -300,9 +300,15 @@ struct WorldImpl : WorldState
   double core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored,
                              std::size_t& on_face) const;
   /// Body k's core touches body `other` and closes on it: their approach
-  /// along the normal there leaves both velocities (momentum kept), instead
-  /// of a stop at time 0 that would come again each substep.
+  /// along the normal there leaves both velocities (take_out_approach),
+  /// instead of a stop at time 0 that would come again each substep.
   void release_core(std::size_t k, std::size_t other, bool stored);
+  /// Body k's centroid touches `other` at `point` (kNoBody: a static face)
+  /// and closes on it along n (unit, from `other` out to k): that approach
+  /// leaves both velocities, shared by inverse mass so momentum is kept; a
+  /// static, kinematic or sleeping `other` keeps its own. `stored`: the
+  /// bodies hold the velocities (the Fx2D order), else velocity_ does.
+  void take_out_approach(std::size_t k, std::size_t other, Vec2 n, Vec2 point, bool stored);
 
   // world_static_crossing.cpp: no centroid passes into a static body.
   /// Earliest time of impact in (0, 1) of body i's centroid core (or, if

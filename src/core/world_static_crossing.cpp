@@ -26,8 +26,8 @@ namespace
 /// swept: a disk this fraction of the inner radius.
 constexpr double kCentroidFraction = 1e-3;
 
-/// v less its part into a face of outward normal n (unit).
-Vec2 without_inward(Vec2 v, Vec2 n) { return v - std::min(0.0, dot(v, n)) * n; }
+/// d less its part into a face of outward normal n (unit).
+Vec2 without_inward(Vec2 d, Vec2 n) { return d - std::min(0.0, dot(d, n)) * n; }
 
 }  // namespace
 
@@ -142,14 +142,7 @@ void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool
     {
       at = start[i] + without_inward(end - start[i], face);
       theta = end_theta;
-      if (soft)
-      {
-        velocity_[i].v = without_inward(velocity_[i].v, face);
-      }
-      else
-      {
-        bodies_[i].set_velocity(without_inward(bodies_[i].velocity(), face));
-      }
+      take_out_approach(i, kNoBody, face, start[i], !soft);  // world_toi.cpp
     }
     if (soft)
     {

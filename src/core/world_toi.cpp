@@ -248,26 +248,43 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
 
 void WorldImpl::release_core(std::size_t k, std::size_t other, bool stored)
 {
-  Body& a = bodies_[k];
-  Body& b = bodies_[other];
-  const PointGap at = outline_point_gap(b, a.position());  // outline_gap.h: normal from b out to a's centroid
-  const Vec2 n = at.normal;
-  const Vec2 r = a.position() - at.gap * n - b.position();  // b's surface point under the centroid
-  const Vec2 v_surface = b.velocity() + b.omega() * perp(r);
-  const double closing = dot(a.velocity() - v_surface, n);
-  const double inv_a = a.inv_mass();
-  const double inv_b = asleep_[other] ? 0.0 : b.inv_mass();  // a sleeping body stays as it is
-  if (closing >= 0.0 || inv_a + inv_b == 0.0)
+  const PointGap at = outline_point_gap(bodies_[other], bodies_[k].position());  // outline_gap.h
+  take_out_approach(k, other, at.normal, bodies_[k].position() - at.gap * at.normal, stored);
+}
+
+void WorldImpl::take_out_approach(std::size_t k, std::size_t other, Vec2 n, Vec2 point, bool stored)
+{
+  // The soft step's velocities live in velocity_; the bodies get a copy, which
+  // the sweep reads for the pairs after this one.
+  const auto velocity = [&](std::size_t i) { return stored ? bodies_[i].velocity() : velocity_[i].v; };
+  const auto set = [&](std::size_t i, Vec2 v) {
+    bodies_[i].set_velocity(v);
+    if (!stored)
+    {
+      velocity_[i].v = v;
+    }
+  };
+  Vec2 v_surface{0.0, 0.0};
+  double inv_other = 0.0;
+  if (other != kNoBody)
+  {
+    const Body& b = bodies_[other];
+    v_surface = b.velocity() + b.omega() * perp(point - b.position());
+    inv_other = asleep_[other] ? 0.0 : b.inv_mass();  // a sleeping body stays as it is
+  }
+  const double closing = dot(velocity(k) - v_surface, n);
+  const double inv_k = bodies_[k].inv_mass();
+  if (!(closing < 0.0) || inv_k == 0.0)
   {
     return;
   }
-  const double impulse = -closing / (inv_a + inv_b);  // N s, along n on a
-  a.set_velocity(a.velocity() + (impulse * inv_a) * n);
-  b.set_velocity(b.velocity() - (impulse * inv_b) * n);
-  if (!stored)  // the soft step's velocities live in velocity_
+  // Each side's share of the closing speed, by inverse mass: all of it
+  // for k against a body that keeps its velocity.
+  const double share_k = inv_k / (inv_k + inv_other);
+  set(k, velocity(k) - (closing * share_k) * n);
+  if (inv_other > 0.0)
   {
-    velocity_[k].v = a.velocity();
-    velocity_[other].v = b.velocity();
+    set(other, velocity(other) + (closing * (1.0 - share_k)) * n);
   }
 }
 

@@ -356,4 +356,36 @@ every golden hash of the soft step and added state to every snapshot for no
 gain in time or in drift. Kept colours would pay only as part of a contact
 record that keeps each manifold's row in place from frame to frame, so that
 filling and publishing the rows move fewer bytes.
+
+Where the base-100 pyramid's time goes, and what a smaller contact point
+buys (this host, HEAD 7b4f3f4; scratch changes to the core, not kept). The
+profiles in the notes above recorded whole runs of the stack bench, whose
+accuracy run measures every pair's overlap each frame with the narrow
+phase: that probe put the polygon tests near 15% of the samples. Only the
+timed rounds (`perf record` of `collision2d_stack_bench --scene
+stack_pyramid_100 --seconds 1.1 --timing-seconds 8 --reps 1`, 1 worker):
+solving the rows 30.0%, their warm start 6.6%, publishing the contacts
+9.1%, filling the rows 8.9%, keeping manifolds 7.1%, adding the points
+7.0%, preparing them 6.3%, moving the bodies 2.8%, posing the outlines
+2.1%, sorting 2.0%; the narrow phase under 2%, since 99.2% of the pairs
+kept their manifold (3558066 kept against 29934 detected over a run,
+counted by a scratch counter). The stages that carry a point from one
+layout to the next (keep, add, prepare, fill, publish) are 38%. Whole
+processes, new / old, in 15 alternating pairs pinned to one core (the
+accuracy run of 1.1 s and 3 s timed): 64 bytes added to the 256-byte
+point, 1.075 (0.877 to 1.243); the point cut to 224 bytes with the same
+bits (where a manifold was detected moved beside the points, the kept
+flag a local, the island key computed in the sort), 1.008 (0.853 to
+1.254), peak memory 37.1 against 37.2 MiB; the published contacts fetched
+eight ahead, 1.011 (0.901 to 1.105). Publishing each point's own impulses
+instead of reading them from its row (a timing probe, its impulses wrong)
+took publishing from 9.1% to 7.8%. Not kept: filling the rows already
+reads only the point's first 192 bytes, and splitting the rest out moves
+the same bytes in the same passes. A contact record pays only where it
+removes a pass and a copy: contacts kept from frame to frame and updated in
+place, created and ended with their pairs' overlap as Box2D v3 keeps its
+contacts, the impulses stored back into them and `World::contacts()` built
+from them. That changes how the World keeps its pairs, not a layout; on
+these shares it could save publishing and part of keeping and adding, some
+6 to 8% of the frame: about 1.47x -> 1.36x Box2D v3 here, not 1.0x alone.
 """

@@ -1,0 +1,80 @@
+"""The profile notes on the contact record: what keeping colours, a smaller
+point and the stages between the layouts cost. report_profile_notes.py joins
+them after the others."""
+
+PROFILE_NOTES_RECORD = """Colours kept from frame to frame (this host, HEAD 0ba2ab9; a scratch change
+to the core, not kept). The soft step colours its manifolds again each
+frame, from the top of the scene down. A constraint graph instead keeps a
+contact's colour while the contact lasts, and that needs the colour in the
+World's state and in its snapshots. The change tried: each published contact
+carried its manifold's colour; a manifold kept it where both its bodies were
+still free in it (in point order); the new ones, and those whose colour had
+been taken, took the lowest free colour, from the top down. In the base-100
+pyramid's profile (`perf record`, 1 worker) sorting the manifolds by height
+was 0.93% of the samples and packing the rows 0.72%, so that is the most
+kept colours could save. Measured, new / old, whole processes in alternating
+pairs: the base-100 pyramid for 3 s on 1 worker 0.996 (9 pairs, 0.884 to
+1.066), on 2 workers 0.983 (9 pairs, 0.904 to 1.347); the rain of 1e4 on 2
+workers 0.988 (11 pairs, 0.943 to 1.380). Stacks over 20 s, drift 1 s ->
+20 s / largest penetration, old -> new: base-20 0.407 / 2.84 -> 0.406 /
+2.85 mm, column 0.0471 / 6.02 -> 0.0471 / 6.02 mm, base-60 6.58 / 10.9 ->
+6.17 / 11.1 mm. On the conveyor of the round-contact test (a plank on
+kinematic rollers spinning at 60 rad/s, 4 substeps) the plank's speed
+jumped by up to 0.25% of the rollers' each time a roller began or ended its
+contact, against 0.03% coloured by height: the new roller contact took the
+colour the old one had freed, and so was solved first. Not kept: it changed
+every golden hash of the soft step and added state to every snapshot for no
+gain in time or in drift. Kept colours would pay only as part of a contact
+record that keeps each manifold's row in place from frame to frame, so that
+filling and publishing the rows move fewer bytes.
+
+Where the base-100 pyramid's time goes, and what a smaller contact point
+buys (this host, HEAD 7b4f3f4; scratch changes to the core, not kept). The
+profiles in the notes above recorded whole runs of the stack bench, whose
+accuracy run measures every pair's overlap each frame with the narrow
+phase: that probe put the polygon tests near 15% of the samples. Only the
+timed rounds (`perf record` of `collision2d_stack_bench --scene
+stack_pyramid_100 --seconds 1.1 --timing-seconds 8 --reps 1`, 1 worker):
+solving the rows 30.0%, their warm start 6.6%, publishing the contacts
+9.1%, filling the rows 8.9%, keeping manifolds 7.1%, adding the points
+7.0%, preparing them 6.3%, moving the bodies 2.8%, posing the outlines
+2.1%, sorting 2.0%; the narrow phase under 2%, since 99.2% of the pairs
+kept their manifold (3558066 kept against 29934 detected over a run,
+counted by a scratch counter). The stages that carry a point from one
+layout to the next (keep, add, prepare, fill, publish) are 38%. Whole
+processes, new / old, in 15 alternating pairs pinned to one core (the
+accuracy run of 1.1 s and 3 s timed): 64 bytes added to the 256-byte
+point, 1.075 (0.877 to 1.243); the point cut to 224 bytes with the same
+bits (where a manifold was detected moved beside the points, the kept
+flag a local, the island key computed in the sort), 1.008 (0.853 to
+1.254), peak memory 37.1 against 37.2 MiB; the published contacts fetched
+eight ahead, 1.011 (0.901 to 1.105). Publishing each point's own impulses
+instead of reading them from its row (a timing probe, its impulses wrong)
+took publishing from 9.1% to 7.8%. Not kept: filling the rows already
+reads only the point's first 192 bytes, and splitting the rest out moves
+the same bytes in the same passes. A contact record pays only where it
+removes a pass and a copy: contacts kept from frame to frame and updated in
+place, created and ended with their pairs' overlap as Box2D v3 keeps its
+contacts, the impulses stored back into them and `World::contacts()` built
+from them. That changes how the World keeps its pairs, not a layout; on
+these shares it could save publishing and part of keeping and adding, some
+6 to 8% of the frame: about 1.47x -> 1.36x Box2D v3 here, not 1.0x alone.
+
+The same pyramid stage by stage against Box2D v3 (this host, HEAD
+4906ead). Box2D v3's own profile (`b2World_GetProfile`, summed over frames
+1 to 480 of the base-100 pyramid in a scratch driver of v3's API, sleeping
+off, 4 substeps, one thread) gave 3.35 ms a step; the stack bench's 8 s
+timed round in the same hour gave ours 5.64 and Box2D v3 3.56 ms a frame
+(1.58x), and ours is split here by the shares of the profile above. Ours
+/ Box2D v3, ms a frame: the solve and relax passes 1.69 / 1.66, the warm
+start 0.37 / 0.29, keeping and adding the manifolds with the outlines
+posed 0.92 / 0.60 (v3 runs its narrow phase on every touching pair),
+preparing the points, sorting and filling the rows 0.96 / 0.26, and
+publishing the contacts 0.51 against v3's storing of impulses 0.09. The
+solver passes, in double precision, cost what v3's do in float; of the
+2.1 ms between the engines, preparing accounts for 0.70 ms, publishing for
+0.42 and collision for 0.32. A trial prefetching the points twelve
+manifolds ahead of the fill (not kept): 0.979 of the time (15 pairs, 0.904
+to 1.039), the fill's share 8.9% -> 7.0% with 2.6% moved to the loop that
+issues the prefetches.
+"""

@@ -76,5 +76,8 @@ solver passes, in double precision, cost what v3's do in float; of the
 0.42 and collision for 0.32. A trial prefetching the points twelve
 manifolds ahead of the fill (not kept): 0.979 of the time (15 pairs, 0.904
 to 1.039), the fill's share 8.9% -> 7.0% with 2.6% moved to the loop that
-issues the prefetches.
+issues the prefetches. Nor does writing less of each published contact: a
+contact that already held the same pair and feature at its place got only
+the fields that change (its point, depth, impulses and slip), 0.999 of the
+time (15 pairs, 0.974 to 1.105): the lines are fetched all the same.
 """

@@ -136,12 +136,12 @@ void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool
     {
       return;
     }
-    Vec2 at = start[i] + t * (end - start[i]);
-    double theta = start_theta[i] + t * (end_theta - start_theta[i]);
-    if (t == 0.0)  // on a face: only the move and velocity into it stop
+    // On a face (t exactly 0) only the move and the velocity into it stop.
+    const bool on_face = t == 0.0;
+    const Vec2 at = on_face ? start[i] + without_inward(end - start[i], face) : start[i] + t * (end - start[i]);
+    const double theta = on_face ? end_theta : start_theta[i] + t * (end_theta - start_theta[i]);
+    if (on_face)
     {
-      at = start[i] + without_inward(end - start[i], face);
-      theta = end_theta;
       take_out_approach(i, kNoBody, face, start[i], !soft);  // world_toi.cpp
     }
     if (soft)

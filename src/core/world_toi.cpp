@@ -234,14 +234,16 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
     }
     const double core = kCoreFraction * inner_radius_[k];
     const double t = disk_time_of_impact(k, core, bodies_[k].position(), dk, bodies_[other], d_other);
-    if (t > 0.0 && t * std::sqrt(relative_sq) <= kCoreTouchFraction * core)
+    if (t <= 0.0)
+    {
+      continue;  // a core already inside stays the detection's
+    }
+    if (t * std::sqrt(relative_sq) <= kCoreTouchFraction * core)
     {
       on_face = k;
+      continue;
     }
-    else if (t > 0.0)  // a core already inside stays the detection's
-    {
-      earliest = std::min(earliest, t);
-    }
+    earliest = std::min(earliest, t);
   }
   return earliest;
 }

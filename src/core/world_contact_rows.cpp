@@ -165,6 +165,8 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
   return deepest;
 }
 
+/// Pair k's first cached contact: where its kept manifold came from, else
+/// cached_pair's answer; `cursor` as cached_pair's.
 std::size_t WorldImpl::first_cached(std::size_t k, std::size_t& cursor) const
 {
   // A kept manifold knows where its cached contacts start.
@@ -192,6 +194,7 @@ std::size_t WorldImpl::cached_pair(std::size_t& cursor, BodyId a, BodyId b) cons
   return cursor;
 }
 
+/// The contact of pair (a, b) with `feature` among its cached contacts from contacts_[first] on.
 const WorldContact* WorldImpl::find_cached(std::size_t first, BodyId a, BodyId b, std::uint32_t feature) const
 {
   for (auto it = contacts_.begin() + first; it != contacts_.end() && it->a == a && it->b == b; ++it)

@@ -110,6 +110,7 @@ void WorldImpl::detect(const StepContext& ctx, double margin, StepReport& report
   }
 }
 
+/// Broad and narrow phase of the pairs with a mover, within margin_.
 void WorldImpl::find_mover_pairs()
 {
   if (refresh_resting_grid())
@@ -189,6 +190,7 @@ void WorldImpl::place_pair_buffers(std::size_t n)
 
 void set_full_body_passes(bool full) { g_full_body_passes.store(full, std::memory_order_relaxed); }
 
+/// pairs_: the movers' pairs merged with the resting grid's, in (i, j) order.
 void WorldImpl::merge_pairs()
 {
   std::sort(resting_pairs_.begin(), resting_pairs_.end());
@@ -235,6 +237,8 @@ bool WorldImpl::refresh_resting_grid()
   return true;
 }
 
+/// With `posed`, the polygons' outlines come from pose_bodies (the poses
+/// must not have changed since).
 bool WorldImpl::collide_pair(std::size_t i, std::size_t j, double tolerance, Manifold& m, bool posed_now) const
 {
   const Body& a = bodies_[i];
@@ -273,11 +277,6 @@ void WorldImpl::collide_range(std::size_t begin, std::size_t end)
     }
     result = collide_pair(i, j, pair_tolerance(i, j), manifolds_[k], true) ? Collided::Hit : Collided::Miss;
   }
-}
-
-bool WorldImpl::dynamic_pair(std::size_t i, std::size_t j) const
-{
-  return bodies_[i].type() == BodyType::Dynamic || bodies_[j].type() == BodyType::Dynamic;
 }
 
 double WorldImpl::pair_tolerance(std::size_t i, std::size_t j) const
@@ -345,6 +344,7 @@ void WorldImpl::publish_contacts(bool soft_frame)
   followed_deepest_ = deepest.load();
 }
 
+/// contacts_ resized to n contacts, to be overwritten.
 void WorldImpl::size_contacts(std::size_t n)
 {
   // The last contacts are dead here, but a new block is taken before the old

@@ -35,6 +35,7 @@ void BodyCensus::add(const BodyCensus& other)
   moving_kinematic_bodies += other.moving_kinematic_bodies;
 }
 
+/// take_census, kept while no edit changes the bodies (census_).
 const BodyCensus& WorldImpl::census_for_frame()
 {
   // Types, shapes and materials change only by an edit, so their counts hold

@@ -22,7 +22,7 @@
 #include "collision2d/time_of_impact.h"
 #include "collision2d/touch_tolerance.h"
 #include "turn.h"
-#include "world_impl.h"
+#include "world_motion.h"
 
 namespace collision2d
 {
@@ -55,7 +55,7 @@ double deepest_separation(const Manifold& m)
 
 }  // namespace
 
-void WorldImpl::note_pusher(std::size_t i, std::size_t other)
+void WorldMotion::note_pusher(std::size_t i, std::size_t other)
 {
   // The pair with body i's earliest impact decides whether it is pushed.
   const bool pushed = bodies_[other].type() == BodyType::Kinematic && awake_dynamic(i);
@@ -63,7 +63,7 @@ void WorldImpl::note_pusher(std::size_t i, std::size_t other)
   pushed_at_[i] = toi_[i];
 }
 
-void WorldImpl::note_touching_face(std::size_t i, std::size_t j)
+void WorldMotion::note_touching_face(std::size_t i, std::size_t j)
 {
   const std::size_t face = bodies_[i].type() == BodyType::Kinematic ? i : j;
   const std::size_t body = face == i ? j : i;
@@ -73,7 +73,7 @@ void WorldImpl::note_touching_face(std::size_t i, std::size_t j)
   }
 }
 
-void WorldImpl::press_touching_faces(double h, bool soft_substep)
+void WorldMotion::press_touching_faces(double h, bool soft_substep)
 {
   // A body near a fast face moves with it once the velocity stage has run
   // (the soft step's contact holds the gap). One that an impact has slowed
@@ -111,7 +111,9 @@ void WorldImpl::press_touching_faces(double h, bool soft_substep)
   }
 }
 
-bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 face_move, Vec2 path)
+/// Whether the face, touching the body now, closes on it as it moves
+/// `face_move` (m) while the body moves `path` (m).
+bool WorldMotion::closes_now(std::size_t face, std::size_t body, Vec2 face_move, Vec2 path)
 {
   // A closing within the touch tolerance is round-off of a body that moves
   // with the face.
@@ -121,7 +123,7 @@ bool WorldImpl::closes_now(std::size_t face, std::size_t body, Vec2 face_move, V
          dot(face_move - path, m.normal) > tolerance;
 }
 
-void WorldImpl::find_pushes(double h)
+void WorldMotion::find_pushes(double h)
 {
   const std::size_t n = bodies_.size();
   push_.assign(n, Vec2{0.0, 0.0});
@@ -144,7 +146,7 @@ void WorldImpl::find_pushes(double h)
   }
 }
 
-void WorldImpl::apply_pushes(double h, bool stored)
+void WorldMotion::apply_pushes(double h, bool stored)
 {
   // Added before the substep's move (move_body, move_in_frame), which
   // adds each body's own move up to its stop.
@@ -168,7 +170,8 @@ void WorldImpl::apply_pushes(double h, bool stored)
   }
 }
 
-bool WorldImpl::pass_pushes_on(double h)
+/// One round of that chain: the bodies last_pushed_ strike; false if none.
+bool WorldMotion::pass_pushes_on(double h)
 {
   if (last_pushed_.empty())
   {
@@ -200,7 +203,8 @@ bool WorldImpl::pass_pushes_on(double h)
   return !last_pushed_.empty();
 }
 
-void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
+/// Pushed body p meets body q on its way: q is pushed if p reaches it first.
+void WorldMotion::push_on(std::size_t p, std::size_t q, double h)
 {
   // A body is pushed by what reaches it first: no later than where it
   // stops (a stop at the same time, up to round-off, is this impact's).
@@ -222,7 +226,7 @@ void WorldImpl::push_on(std::size_t p, std::size_t q, double h)
   next_pushed_.push_back(q);
 }
 
-Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face)
+Vec2 WorldMotion::push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face)
 {
   // A free body touching a turning face moves on (press_touching_faces):
   // it meets the face at the substep's start.
@@ -245,7 +249,7 @@ Vec2 WorldImpl::push_ahead(std::size_t i, std::size_t k, double t, Vec2 body_mov
   return !(advance > 0.0) ? Vec2{0.0, 0.0} : carry_on_turning_face(i, k, t, body_move, face, m.normal);
 }
 
-Vec2 WorldImpl::lift_on_turning_face(std::size_t i, std::size_t k, Vec2 body_move, FaceMove face, const Manifold& m)
+Vec2 WorldMotion::lift_on_turning_face(std::size_t i, std::size_t k, Vec2 body_move, FaceMove face, const Manifold& m)
 {
   // In the face's frame the body's own straight move falls behind the
   // turning face; it is lifted back to touching, where detection finds it.
@@ -260,7 +264,7 @@ Vec2 WorldImpl::lift_on_turning_face(std::size_t i, std::size_t k, Vec2 body_mov
   return std::max(0.0, touching_height - dot(end, turned_normal)) * turned_normal;
 }
 
-Vec2 WorldImpl::carry_on_turning_face(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face,
+Vec2 WorldMotion::carry_on_turning_face(std::size_t i, std::size_t k, double t, Vec2 body_move, FaceMove face,
                                       Vec2 normal)
 {
   // A struck body is carried round with the face (a push along the first
@@ -280,7 +284,10 @@ Vec2 WorldImpl::carry_on_turning_face(std::size_t i, std::size_t k, double t, Ve
   return push - deepest_separation(end) * end.normal;
 }
 
-double WorldImpl::face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, Vec2 move, double turn) const
+/// How far the material points of face k at manifold m's points move
+/// along its normal (m) as the face, offset by `k_offset`, moves `move`
+/// and turns `turn` (rad): the fastest of them.
+double WorldMotion::face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, Vec2 move, double turn) const
 {
   if (turn == 0.0)
   {
@@ -297,12 +304,17 @@ double WorldImpl::face_advance(std::size_t k, const Manifold& m, Vec2 k_offset, 
   return advance;
 }
 
-double WorldImpl::impact_tolerance(std::size_t i, std::size_t k) const
+/// How near (m) bodies i and k count as touching at a time of impact:
+/// the touch tolerance, widened for the round-off of posing them there.
+double WorldMotion::impact_tolerance(std::size_t i, std::size_t k) const
 {
   return kImpactNormalToleranceScale * kRelativeTouchTolerance * (bodies_[i].radius() + bodies_[k].radius());
 }
 
-bool WorldImpl::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m)
+/// The manifold from body k into body i with i moved by `i_move`, k by
+/// `k_move` and turned by `k_turn`, if they touch there within
+/// impact_tolerance (false otherwise).
+bool WorldMotion::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k_move, double k_turn, Manifold& m)
 {
   // Both bodies posed for the narrow phase, then put back. Two disks on one
   // centre have no normal (collide would throw).
@@ -329,7 +341,7 @@ bool WorldImpl::touch_manifold(std::size_t i, std::size_t k, Vec2 i_move, Vec2 k
   return touching;
 }
 
-Vec2 WorldImpl::pushed_path(std::size_t i, double h) const
+Vec2 WorldMotion::pushed_path(std::size_t i, double h) const
 {
   return substep_displacement(i, h) * toi_[i] + push_[i];
 }

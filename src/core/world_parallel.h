@@ -63,26 +63,5 @@ double WorldImpl::max_over(std::size_t count, std::size_t min_shared, double sta
                        [](double best, double part) { return std::max(best, part); });
 }
 
-template <class F>
-void WorldImpl::for_each_body(F f)
-{
-  if (body_pass_full_)
-  {
-    workers_.parallel_for(bodies_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        f(i);
-      }
-    });
-    return;
-  }
-  workers_.parallel_for(movers_.size(), kMinSharedBodies, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      f(movers_[k]);
-    }
-  });
-}
-
 }  // namespace detail
 }  // namespace collision2d

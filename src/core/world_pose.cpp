@@ -40,6 +40,7 @@ void WorldImpl::pose_bodies()
   });
 }
 
+/// Poses bodies [begin, end), all but the static ones with `skip_static`.
 void WorldImpl::pose_range(std::size_t begin, std::size_t end, bool skip_static)
 {
   for (std::size_t i = begin; i < end; ++i)

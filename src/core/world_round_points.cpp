@@ -52,6 +52,8 @@ bool round_kind(std::uint32_t feature)
 
 }  // namespace
 
+/// Round contacts whose centres slide past each other by more than
+/// kRoundSlideFraction of their distance in a frame (the straight gap would err).
 void WorldImpl::list_round_points()
 {
   if (round_points_.capacity() < points_.size())
@@ -97,6 +99,9 @@ void WorldImpl::list_round_points()
   }
 }
 
+/// Round contacts: their normals along the line between their centres now,
+/// their gaps the centres' distance less the radii, a speculative gap only
+/// as far as their path closes before they touch.
 void WorldImpl::follow_round_points(double h, bool as_prepared)
 {
   for (const RoundPoint& r : round_points_)

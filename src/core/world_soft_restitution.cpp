@@ -73,6 +73,8 @@ void WorldImpl::aim_bounces()
   }
 }
 
+/// How fast gravity closes p's gap (m/s^2, > 0 closing): only bodies that
+/// fall feel it.
 double WorldImpl::closing_gravity(const ContactPoint& p) const
 {
   const Vec2 none{0.0, 0.0};
@@ -107,6 +109,7 @@ void WorldImpl::restitute(StepReport& report)
   }
 }
 
+/// The points restitute drives, into bouncing_; returns their fastest |target| (m/s).
 double WorldImpl::take_bouncing()
 {
   // A point bounces if the substep pushed it: it ends the substep holding an

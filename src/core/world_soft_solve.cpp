@@ -55,6 +55,8 @@ void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
       soft_rows_.coloured() >= kMinSharedManifolds);
 }
 
+/// Stage `stage` of a soft pass (a colour, or the overflow after the
+/// colours; the warm start's stages first), part `part` of `parts` of it.
 void WorldImpl::soft_stage(const SoftPass& pass, std::size_t stage, std::size_t part, std::size_t parts)
 {
   const bool warming = stage < pass.warm_stages;

@@ -16,26 +16,11 @@ void WorldImpl::load_velocities()
   for_each_body([this](std::size_t i) { load_velocity(i); });
 }
 
-void WorldImpl::load_velocity(std::size_t i)
-{
-  const Body& b = bodies_[i];
-  set_body_velocity(velocity_[i], b.velocity(), b.omega(), b.inv_mass(), b.inv_inertia());
-}
-
 void WorldImpl::store_velocities()
 {
   // Impulses never change a static or kinematic body (its points carry zero
   // inverse mass), so only dynamic bodies are written back.
   for_each_body([this](std::size_t i) { store_velocity(i); });
-}
-
-void WorldImpl::store_velocity(std::size_t i)
-{
-  if (bodies_[i].type() == BodyType::Dynamic)
-  {
-    bodies_[i].set_velocity(velocity_[i].v);
-    bodies_[i].set_omega(velocity_[i].omega);
-  }
 }
 
 void WorldImpl::prepare_points(const ActiveEffects& effects)

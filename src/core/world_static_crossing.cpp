@@ -14,7 +14,7 @@
 #include <limits>
 
 #include "outline_gap.h"
-#include "world_impl.h"
+#include "world_motion.h"
 
 namespace collision2d
 {
@@ -52,7 +52,7 @@ PointGap outline_point_gap(const Body& b, Vec2 p)
   return best;
 }
 
-double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d, Vec2& face)
+double WorldMotion::static_crossing_time(std::size_t i, Vec2 from, Vec2 d, Vec2& face)
 {
   if (!is_finite(from) || !is_finite(d))
   {
@@ -81,7 +81,10 @@ double WorldImpl::static_crossing_time(std::size_t i, Vec2 from, Vec2 d, Vec2& f
   return earliest;
 }
 
-double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle, Vec2& face) const
+/// When body i's centroid, moved from `from` by d, would first pass into
+/// static `obstacle`: the fraction of d its core (or centroid) moves clear;
+/// 1 if never; 0 on the obstacle's face (its normal into `face`), as static_crossing_time.
+double WorldMotion::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Body& obstacle, Vec2& face) const
 {
   const double inner = inner_radius_[i];
   const double t = disk_time_of_impact(i, kCoreFraction * inner, from, d, obstacle, Vec2{0.0, 0.0});
@@ -107,7 +110,7 @@ double WorldImpl::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const Bo
   return 1.0;
 }
 
-void WorldImpl::stop_static_crossings(StepContext& ctx, StepReport& report, bool soft)
+void WorldMotion::stop_static_crossings(StepContext& ctx, StepReport& report, bool soft)
 {
   if (settings_.time_of_impact == Toggle::Off || resting_.empty())
   {

@@ -186,41 +186,13 @@ void WorldImpl::advance(StepContext& ctx, StepReport& report)
   advance_bodies(0, bodies_.size(), ctx, swept);
 }
 
+/// Bodies [begin, end) moved over the substep (up to their time of impact when `swept`).
 void WorldImpl::advance_bodies(std::size_t begin, std::size_t end, const StepContext& ctx, bool swept)
 {
   for (std::size_t i = begin; i < end; ++i)
   {
     advance_body(i, ctx, swept);
   }
-}
-
-FrameMotion WorldImpl::frame_motion(std::size_t i) const
-{
-  const BodyType type = bodies_[i].type();
-  if (type == BodyType::Static || asleep_[i])
-  {
-    return FrameMotion::Still;
-  }
-  return type == BodyType::Kinematic ? FrameMotion::Kinematic : FrameMotion::Dynamic;
-}
-
-bool WorldImpl::turns(const StepContext& ctx, FrameMotion motion, double omega)
-{
-  // Kinematic bodies follow their set spin whatever the rotation toggle says.
-  return (ctx.effects.rotation || motion == FrameMotion::Kinematic) && omega != 0.0;
-}
-
-bool WorldImpl::move_body(std::size_t i, const StepContext& ctx, bool swept)
-{
-  const FrameMotion motion = frame_motion(i);
-  if (motion == FrameMotion::Still)
-  {
-    return false;
-  }
-  Body& b = bodies_[i];
-  const double travel = swept ? toi_[i] * ctx.h : ctx.h;
-  b.set_position(b.position() + b.velocity() * travel);
-  return turns(ctx, motion, b.omega());
 }
 
 void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
@@ -230,12 +202,6 @@ void WorldImpl::advance_body(std::size_t i, const StepContext& ctx, bool swept)
     Body& b = bodies_[i];
     b.set_theta(b.theta() + b.omega() * turn_time(i, ctx, swept));
   }
-}
-
-double WorldImpl::turn_time(std::size_t i, const StepContext& ctx, bool swept) const
-{
-  // A body swept with its turn stops turning where its sweep stopped it.
-  return swept && swept_[i] == kSweptTurning ? toi_[i] * ctx.h : ctx.h;
 }
 
 void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
@@ -331,15 +297,6 @@ void WorldImpl::require_finite_state()
   if (first_bad.load() != bodies_.size())
   {
     throw_non_finite(first_bad.load());
-  }
-}
-
-void WorldImpl::note_non_finite(std::size_t i, std::atomic<std::size_t>& first_bad) const
-{
-  // The lowest index, whichever worker finds it: the same body for any split.
-  if (!has_finite_state(bodies_[i]))
-  {
-    lower_to(first_bad, i);
   }
 }
 

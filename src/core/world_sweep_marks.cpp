@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-#include "world_impl.h"
+#include "world_motion.h"
 
 namespace collision2d
 {
@@ -27,7 +27,7 @@ constexpr std::size_t kMinBodiesToChooseSweepCandidates = 16;
 
 }  // namespace
 
-double WorldImpl::sweep_reach_sq(std::size_t i) const
+double WorldMotion::sweep_reach_sq(std::size_t i) const
 {
   // A kinematic body is swept too: what it strikes is pushed ahead of it
   // (world_kinematic_push.cpp).
@@ -41,13 +41,16 @@ double WorldImpl::sweep_reach_sq(std::size_t i) const
   return reach * reach;
 }
 
-double WorldImpl::fast_reach_sq(std::size_t i, bool stored) const
+double WorldMotion::fast_reach_sq(std::size_t i, bool stored) const
 {
   // The soft step set its thresholds for the frame (reset_body_motion).
   return stored ? sweep_reach_sq(i) : swept_reach_sq_[i];
 }
 
-bool WorldImpl::turn_outruns(std::size_t i, double omega, double h, double floor, double reach_sq) const
+/// Whether body i spinning at `omega` (rad/s) for h seconds moves its far
+/// points past `reach_sq` (its fast_reach_sq): then its sweep turns it.
+/// `floor`: the spin_floor, below which no body can.
+bool WorldMotion::turn_outruns(std::size_t i, double omega, double h, double floor, double reach_sq) const
 {
   // Below the floor no body's turn can outrun its reach, so most bodies stop
   // at the first compare and never read their record. Above it: a polygon's
@@ -63,7 +66,7 @@ bool WorldImpl::turn_outruns(std::size_t i, double omega, double h, double floor
   return reach_sq >= 0.0 && b.type() == BodyType::Dynamic && b.shape() == Shape::Polygon && far * far > reach_sq;
 }
 
-double WorldImpl::spin_floor(double h, bool rotation) const
+double WorldMotion::spin_floor(double h, bool rotation) const
 {
   // Every reach is at least two of the thinnest half-widths' share, every
   // turning outline at most the widest dynamic polygon's: most worlds' spins
@@ -77,7 +80,7 @@ double WorldImpl::spin_floor(double h, bool rotation) const
   return settings_.toi_displacement_fraction * 2.0 * min_inner_radius_ / (widest * h);
 }
 
-FreeSpeedBound WorldImpl::free_speed_bound(double h, bool rotation) const
+FreeSpeedBound WorldMotion::free_speed_bound(double h, bool rotation) const
 {
   // A body no contact touches gains at most one frame of gravity's speed,
   // and keeps its spin; the margin covers the round-off of the substeps'
@@ -86,7 +89,7 @@ FreeSpeedBound WorldImpl::free_speed_bound(double h, bool rotation) const
                         length(settings_.gravity) * settings_.dt, spin_floor(h, rotation), h};
 }
 
-bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
+bool WorldMotion::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
 {
   if (swept_reach_sq_[i] < 0.0)  // set for the frame (reset_body_motion)
   {
@@ -96,14 +99,14 @@ bool WorldImpl::may_turn_fast(std::size_t i, const FreeSpeedBound& bound) const
   return !(slowest_fast > 0.0 && length_sq(velocity_[i].v) <= slowest_fast * slowest_fast);
 }
 
-bool WorldImpl::may_spin_fast(std::size_t i, const FreeSpeedBound& bound) const
+bool WorldMotion::may_spin_fast(std::size_t i, const FreeSpeedBound& bound) const
 {
   // Nothing changes a free body's spin.
   const double omega = velocity_[i].omega;
   return turn_outruns(i, omega, bound.substep, bound.spin_floor, swept_reach_sq_[i]);
 }
 
-void WorldImpl::note_touching(std::size_t i)
+void WorldMotion::note_touching(std::size_t i)
 {
   // A visited body was reset to untouched, so it is listed once; a resting
   // body outside the frame's pass is never a candidate.
@@ -114,20 +117,20 @@ void WorldImpl::note_touching(std::size_t i)
   touching_[i] = true;
 }
 
-void WorldImpl::choose_sweep_pass(bool any_may_turn_fast)
+void WorldMotion::choose_sweep_pass(bool any_may_turn_fast)
 {
   // With most bodies touched, the plain pass over them is the cheaper.
   sweep_every_body_ = sweep_every_body_ || any_may_turn_fast || 2 * sweep_candidates_.size() > visited_count();
 }
 
-bool WorldImpl::sweep_candidates_pay() const
+bool WorldMotion::sweep_candidates_pay() const
 {
   // With toi On every moving body is swept; in a world of a few bodies the
   // plain check of each costs less than choosing them.
   return settings_.time_of_impact == Toggle::Auto && visited_count() >= kMinBodiesToChooseSweepCandidates;
 }
 
-bool WorldImpl::mark_swept_bodies(double h, bool stored, bool rotation)
+bool WorldMotion::mark_swept_bodies(double h, bool stored, bool rotation)
 {
   // A resting body's flag stays 0 from the frame that made it rest.
   swept_.resize(bodies_.size());
@@ -137,7 +140,8 @@ bool WorldImpl::mark_swept_bodies(double h, bool stored, bool rotation)
   return census_.turning_face_bodies > 0 ? mark_turning_faces(h) || any : any;
 }
 
-bool WorldImpl::mark_every_body(double h, bool stored, bool rotation)
+/// mark_swept_bodies over every body by its translation and spin.
+bool WorldMotion::mark_every_body(double h, bool stored, bool rotation)
 {
   const Toggle mode = settings_.time_of_impact;
   const double least_spin = spin_floor(h, rotation);
@@ -159,7 +163,8 @@ bool WorldImpl::mark_every_body(double h, bool stored, bool rotation)
   return std::any_of(movers_.begin(), movers_.end(), [this](std::size_t i) { return swept_[i] != kNotSwept; });
 }
 
-bool WorldImpl::mark_sweep_candidates(double h, bool rotation)
+/// mark_swept_bodies over sweep_candidates_ only.
+bool WorldMotion::mark_sweep_candidates(double h, bool rotation)
 {
   // The other bodies' flags were cleared for the frame (prepare_soft_bodies)
   // and no substep this frame can make them fast (may_turn_fast).
@@ -183,7 +188,9 @@ bool WorldImpl::mark_sweep_candidates(double h, bool rotation)
   return any.load();
 }
 
-bool WorldImpl::mark_turning_faces(double h)
+/// Marks the turning kinematic polygons whose points move past their
+/// reach in a substep of h seconds; true if any.
+bool WorldMotion::mark_turning_faces(double h)
 {
   bool any = false;
   for (std::size_t i = 0; i < bodies_.size(); ++i)

@@ -27,7 +27,7 @@
 #include "collision2d/time_of_impact.h"
 #include "collision2d/touch_tolerance.h"
 #include "outline_gap.h"
-#include "world_impl.h"
+#include "world_motion.h"
 
 namespace collision2d
 {
@@ -42,7 +42,7 @@ constexpr double kCoreTouchFraction = 1e-3;
 
 }  // namespace
 
-void WorldImpl::refresh_body_shapes()
+void WorldMotion::refresh_body_shapes()
 {
   inner_radius_.resize(bodies_.size());
   disk_.resize(bodies_.size());
@@ -59,27 +59,30 @@ void WorldImpl::refresh_body_shapes()
   }
 }
 
-void WorldImpl::append_body_shape(const Body& body)
+void WorldMotion::append_body_shape(const Body& body)
 {
   inner_radius_.push_back(inner_radius(body));
   disk_.push_back(body.shape() == Shape::Disk);
   min_inner_radius_ = inner_radius_.size() == 1 ? inner_radius_.back() : std::min(min_inner_radius_, inner_radius_.back());
 }
 
-Vec2 WorldImpl::substep_displacement(std::size_t i, double h) const
+Vec2 WorldMotion::substep_displacement(std::size_t i, double h) const
 {
   const Body& b = bodies_[i];
   return b.type() == BodyType::Static || asleep_[i] ? Vec2{0.0, 0.0} : b.velocity() * h;
 }
 
-double WorldImpl::substep_turn(std::size_t i, double h) const
+/// How far body i's outline turns in a sweep of h seconds (rad): a
+/// kinematic polygon's spin (face_turn) or a dynamic polygon's marked
+/// kSweptTurning, 0 for any other body.
+double WorldMotion::substep_turn(std::size_t i, double h) const
 {
   // A dynamic polygon's sweep keeps its orientation unless its spin alone
   // could carry its far points past a thin body; a disk's outline has none.
   return swept_[i] == kSweptTurning ? bodies_[i].omega() * h : face_turn(i, h);
 }
 
-double WorldImpl::face_turn(std::size_t i, double h) const
+double WorldMotion::face_turn(std::size_t i, double h) const
 {
   // A kinematic polygon follows its set spin, whatever the rotation toggle.
   const Body& b = bodies_[i];
@@ -88,7 +91,9 @@ double WorldImpl::face_turn(std::size_t i, double h) const
   return turning ? b.omega() * h : 0.0;
 }
 
-Aabb WorldImpl::sweep_box(std::size_t i, double h) const
+/// Body i's box for the sweep's broad phase: a turning outline's is its
+/// bounding circle's.
+Aabb WorldMotion::sweep_box(std::size_t i, double h) const
 {
   // A turning outline stays inside its bounding circle.
   const Vec2 d = substep_displacement(i, h);
@@ -101,7 +106,7 @@ Aabb WorldImpl::sweep_box(std::size_t i, double h) const
   return Aabb{at - half, at + half}.swept(d);
 }
 
-bool WorldImpl::sweep(double h, StepReport& report, bool stored, bool rotation)
+bool WorldMotion::sweep(double h, StepReport& report, bool stored, bool rotation)
 {
   clamping_ = false;
   pushing_ = false;
@@ -198,13 +203,14 @@ bool WorldImpl::sweep(double h, StepReport& report, bool stored, bool rotation)
   return true;
 }
 
-double WorldImpl::disk_time_of_impact(std::size_t i, double radius, Vec2 from, Vec2 d, const Body& other,
+double WorldMotion::disk_time_of_impact(std::size_t i, double radius, Vec2 from, Vec2 d, const Body& other,
                                       Vec2 d_other) const
 {
   return time_of_impact(Body(bodies_[i].mass(), radius, from, Vec2{0.0, 0.0}), d, other, d_other);
 }
 
-bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
+/// Soft step: whether the frame's contact points (in pair order) hold pair (i, j).
+bool WorldMotion::has_frame_contact(std::size_t i, std::size_t j) const
 {
   const std::uint32_t a = static_cast<std::uint32_t>(std::min(i, j));
   const std::uint32_t b = static_cast<std::uint32_t>(std::max(i, j));
@@ -215,7 +221,11 @@ bool WorldImpl::has_frame_contact(std::size_t i, std::size_t j) const
   return found != points_.end() && found->a == a && found->b == b;
 }
 
-double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored,
+/// Earliest time of impact in (0, 1) of a fast body's centroid core
+/// against the other body of pair (i, j) moved by di and dj, else 1. A
+/// core that touches the other body already and closes on it is not
+/// counted: it is `on_face` (i or j, else kNoBody), for release_core.
+double WorldMotion::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec2 dj, bool stored,
                                       std::size_t& on_face) const
 {
   // Only a body fast against the other (as Auto judges fast) can carry its
@@ -248,13 +258,16 @@ double WorldImpl::core_time_of_impact(std::size_t i, std::size_t j, Vec2 di, Vec
   return earliest;
 }
 
-void WorldImpl::release_core(std::size_t k, std::size_t other, bool stored)
+/// Body k's core touches body `other` and closes on it: their approach
+/// along the normal there leaves both velocities (take_out_approach),
+/// instead of a stop at time 0 that would come again each substep.
+void WorldMotion::release_core(std::size_t k, std::size_t other, bool stored)
 {
   const PointGap at = outline_point_gap(bodies_[other], bodies_[k].position());  // outline_gap.h
   take_out_approach(k, other, at.normal, bodies_[k].position() - at.gap * at.normal, stored);
 }
 
-void WorldImpl::take_out_approach(std::size_t k, std::size_t other, Vec2 n, Vec2 point, bool stored)
+void WorldMotion::take_out_approach(std::size_t k, std::size_t other, Vec2 n, Vec2 point, bool stored)
 {
   // The soft step's velocities live in velocity_; the bodies get a copy, which
   // the sweep reads for the pairs after this one.
@@ -290,7 +303,7 @@ void WorldImpl::take_out_approach(std::size_t k, std::size_t other, Vec2 n, Vec2
   }
 }
 
-void WorldImpl::grow_stopped_boxes()
+void WorldMotion::grow_stopped_boxes()
 {
   // A body stopped at its time of impact touches its obstacle only up to
   // round-off: its box grows by its share of the touch tolerance, or the
@@ -305,7 +318,7 @@ void WorldImpl::grow_stopped_boxes()
   }
 }
 
-bool WorldImpl::clamped(std::size_t i) const
+bool WorldMotion::clamped(std::size_t i) const
 {
   return clamping_ && toi_[i] < 1.0;
 }

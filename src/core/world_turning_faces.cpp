@@ -44,6 +44,9 @@ void WorldImpl::list_turning_faces()
   }
 }
 
+/// Disks on turning faces: their normals turned with their faces, their
+/// face anchors moved under the disk's nearest point, their gaps and slips
+/// measured on the turned faces.
 void WorldImpl::follow_turning_points(double h, bool as_prepared)
 {
   for (const TurningFacePoint& t : turning_faces_)

@@ -37,7 +37,7 @@ void WorldMotion::prepare_soft_bodies(bool rotation)
     swept_reach_sq_.resize(n);
   }
   // One pass over the body records, which a large world streams from memory.
-  sweep_every_body_ = !sweep_candidates_pay();            // world_toi.cpp
+  sweep_every_body_ = !sweep_candidates_pay();            // world_sweep_marks.cpp
   const bool candidates = !sweep_every_body_;
   if (candidates)
   {
@@ -66,7 +66,7 @@ void WorldMotion::prepare_soft_bodies(bool rotation)
   {
     if (pair_touches(k))
     {
-      note_touching(pairs_[k].first);                     // world_toi.cpp
+      note_touching(pairs_[k].first);                     // world_sweep_marks.cpp
       note_touching(pairs_[k].second);
     }
   }

@@ -110,36 +110,8 @@ struct WorldImpl : WorldMotion
   // faces of turning kinematic bodies (world_turning_faces.cpp), and
   // contacts between a disk and a vertex or a disk whose centres slide past
   // each other (world_round_points.cpp).
-  /// After prepare, before the rows are packed. Inline: most frames have
-  /// neither, by the census (counted at each edit, census_for_frame); a
-  /// pair bounces, and is not followed, unless one of its bodies does not.
-  void find_followed_points()
-  {
-    turning_faces_.clear();
-    round_points_.clear();
-    if (census_.turning_face_bodies > 0)
-    {
-      list_turning_faces();
-    }
-    if (census_.disks > 0 && census_.bouncy < bodies_.size())
-    {
-      list_round_points();
-    }
-  }
-  /// Before each pass (substeps of h seconds). `as_prepared`: after the
-  /// passes, their gaps and slips on the normals and lever arms they were
-  /// prepared with, which the contacts publish.
-  void follow_points(double h, bool as_prepared = false)
-  {
-    if (!turning_faces_.empty())
-    {
-      follow_turning_points(h, as_prepared);
-    }
-    if (!round_points_.empty())
-    {
-      follow_round_points(h, as_prepared);
-    }
-  }
+  void find_followed_points();
+  void follow_points(double h, bool as_prepared = false);
   __attribute__((noinline, cold)) void list_turning_faces();
   __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
   void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);

@@ -100,6 +100,38 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
 
 /// The frame's two contact springs (springs_), at most a quarter of the
 /// substep rate in frequency, twice that against a body that cannot move.
+/// After prepare, before the rows are packed. Inline: most frames have
+/// neither, by the census (counted at each edit, census_for_frame); a
+/// pair bounces, and is not followed, unless one of its bodies does not.
+inline void WorldImpl::find_followed_points()
+{
+  turning_faces_.clear();
+  round_points_.clear();
+  if (census_.turning_face_bodies > 0)
+  {
+    list_turning_faces();
+  }
+  if (census_.disks > 0 && census_.bouncy < bodies_.size())
+  {
+    list_round_points();
+  }
+}
+
+/// Before each pass (substeps of h seconds). `as_prepared`: after the
+/// passes, their gaps and slips on the normals and lever arms they were
+/// prepared with, which the contacts publish.
+inline void WorldImpl::follow_points(double h, bool as_prepared)
+{
+  if (!turning_faces_.empty())
+  {
+    follow_turning_points(h, as_prepared);
+  }
+  if (!round_points_.empty())
+  {
+    follow_round_points(h, as_prepared);
+  }
+}
+
 ContactSprings WorldImpl::contact_springs(const StepContext& ctx) const
 {
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);

@@ -98,8 +98,6 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   cache_h_ = ctx.h;
 }
 
-/// The frame's two contact springs (springs_), at most a quarter of the
-/// substep rate in frequency, twice that against a body that cannot move.
 /// After prepare, before the rows are packed. Inline: most frames have
 /// neither, by the census (counted at each edit, census_for_frame); a
 /// pair bounces, and is not followed, unless one of its bodies does not.
@@ -132,6 +130,8 @@ inline void WorldImpl::follow_points(double h, bool as_prepared)
   }
 }
 
+/// The frame's two contact springs (springs_), at most a quarter of the
+/// substep rate in frequency, twice that against a body that cannot move.
 ContactSprings WorldImpl::contact_springs(const StepContext& ctx) const
 {
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);

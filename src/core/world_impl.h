@@ -14,7 +14,6 @@
 #include "collision2d/world.h"
 #include "contact_kernel.h"
 #include "posed_polygon.h"
-#include "turn.h"
 #include "world_motion.h"
 #include "world_stage_types.h"
 
@@ -59,8 +58,8 @@ struct WorldImpl : WorldMotion
   /// Body i's motion and rest time into the rollback buffers.
   void keep_body(std::size_t i);
 
-  // Sharing a stage among the workers (worker_pool.h): results are the same
-  // for any number of them.
+  // Sharing a stage among the workers (worker_pool.h; the per-body passes
+  // are world_motion.h's): results are the same for any number of them.
   /// Calls f(begin, end) over the contact points split across the workers
   /// at body-pair boundaries, so each manifold's points stay on one worker.
   template <class F>

@@ -6,16 +6,12 @@
 // touch and the frame's contact points, and solves no contact.
 #pragma once
 
-#include <algorithm>
 #include <atomic>
 #include <cstddef>
-#include <cstdint>
-#include <vector>
 
 #include "collision2d/body.h"
 #include "collision2d/collide.h"
 #include "collision2d/world.h"
-#include "posed_polygon.h"
 #include "turn.h"
 #include "world_stage_types.h"
 #include "world_state.h"

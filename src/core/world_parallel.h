@@ -1,5 +1,7 @@
 // Internal to the core: how the World shares a stage among its workers
 // (worker_pool.h), declared in world_impl.h, which includes this at its end.
+// The per-body passes (for_each_body) are world_motion.h's: the motion
+// layer below the contacts runs them too.
 // Results are the same for any number of workers.
 #pragma once
 

@@ -101,7 +101,7 @@ struct ContactPoint
   double anchor_drift = 0.0;     ///< tangential slip since the point last stuck, at prepare (m)
   double base_separation = 0.0;  ///< m
   double pair_k12 = 0.0;         ///< first point of a manifold: pair_coupling, fixed for the frame (1/kg)
-  int count = 1;                 ///< points in this pair's manifold
+  std::uint8_t count = 1;        ///< points in this pair's manifold (1 or 2)
   bool pair_block = false;       ///< first point of a manifold: whether its 2x2 block is solvable
   bool kinetic = false;          ///< slid before: the kinetic bound applies
   bool sliding = false;          ///< friction at its bound in the last solve
@@ -110,6 +110,7 @@ struct ContactPoint
   bool position_solved = false;  ///< World: penetration corrected by its island's LCP
   bool kept = false;             ///< World, soft step: its manifold kept from an earlier frame (lever arms set)
   bool origin_known = false;     ///< World, soft step: the origin fields below are set
+  bool against_static = false;   ///< World, soft step: one body is static (the stiffer spring)
   std::uint32_t feature = 0;     ///< detection's feature id (beside the flags: no padding)
 
   // Detection.
@@ -142,17 +143,21 @@ struct ContactPoint
   double depth() const { return std::max(0.0, -separation); }
 };
 
-/// A soft frame's two contact springs: between two bodies that move, and
-/// stiffer against one that cannot (static or kinematic). A point's spring
-/// follows from its masses, so the point does not keep a copy.
+/// A soft frame's two contact springs: the stiffer one against a static
+/// body, so a stack is not pressed into the ground by its own weight, and
+/// the other for the rest. A kinematic body gets the other: a body it
+/// presses on the ground is squeezed between two springs, and pressed into
+/// the ground by the stiffness ratio times the pusher's overlap; with equal
+/// springs the two shared the squeeze and the body went through the ground.
 struct ContactSprings
 {
+  /// The static spring's frequency over the other's (its stiffness goes
+  /// with the square).
+  static constexpr double kStaticHertzFactor = 2.0;
   Softness moving;
-  Softness fixed;
-  /// The spring of a contact that touches a body that cannot move, or not.
-  const Softness& against(bool fixed_body) const { return fixed_body ? fixed : moving; }
-  /// Only a dynamic body has an inverse mass (> 0, Body checks it).
-  const Softness& of(const ContactPoint& p) const { return against(p.inv_mass_a == 0.0 || p.inv_mass_b == 0.0); }
+  Softness on_static;
+  /// A point's spring, from whether it touches a static body.
+  const Softness& of(const ContactPoint& p) const { return p.against_static ? on_static : moving; }
 };
 
 /// The contact points of a frame or a solve: a per-frame buffer, written

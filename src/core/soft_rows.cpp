@@ -86,7 +86,7 @@ void fill_common(Batch& r, int j, const ContactPoint& p, bool friction, const Co
   const bool b_fixed = fixed(p.inv_mass_b);
   r.a[j] = static_cast<std::uint32_t>(p.a) | (a_fixed ? kFixedBody : 0u);
   r.b[j] = static_cast<std::uint32_t>(p.b) | (b_fixed ? kFixedBody : 0u);
-  const Softness& spring = springs.against(a_fixed || b_fixed);  // springs.of(p), from the flags at hand
+  const Softness& spring = springs.of(p);
   r.nx[j] = p.normal.x;
   r.ny[j] = p.normal.y;
   r.inv_mass_a[j] = p.inv_mass_a;

@@ -145,7 +145,8 @@ public:
   /// At prepare, for each active manifold's first point k (its second point,
   /// if any, prepared): what colouring needs, read while the points are in
   /// cache. `up` is against gravity, any length (zero keeps point order).
-  /// Safe from several workers for distinct k.
+  /// A manifold against a static body goes after all the others. Safe
+  /// from several workers for distinct k.
   void note_manifold(std::size_t k, const ContactPoint& p, const ContactPoint* second, Vec2 up);
   /// ... and for every other point.
   void note_no_manifold(std::size_t k);
@@ -222,11 +223,12 @@ private:
   /// starts there, and the colour it took.
   struct Note
   {
-    std::uint32_t key = 0;     ///< descending in height
+    std::uint32_t key = 0;     ///< the static ones last, then descending in height
     std::uint32_t a = kFixed;  ///< the bodies the manifold moves
     std::uint32_t b = kFixed;
     std::uint8_t colour = 0;   ///< below kMaxColours
     bool first = false;        ///< an active manifold starts at this point
+    bool against_static = false;  ///< one of its bodies is static
     Kind kind = Kind::Other;   ///< how it is solved (once coloured)
   };
 
@@ -259,8 +261,10 @@ private:
   void fill_lane(const ContactPoints& points, std::size_t first, const Note& m, std::size_t slot,
                  bool friction);
   /// The first colour free of bodies a and b (kFixed: one that cannot
-  /// move), now taken by them; kMaxColours when none is free.
-  std::size_t take_colour(std::uint32_t a, std::uint32_t b);
+  /// move), now taken by them; kMaxColours when none is free. Against a
+  /// static body, the colour after the moving body's last, if there is one:
+  /// the ground then has the last word on a body pressed into it.
+  std::size_t take_colour(std::uint32_t a, std::uint32_t b, bool against_static);
   /// A colour's batches of a kind (Pair or Single).
   RowRange& range_of(std::size_t colour, Kind kind);
   /// Whether a colour has batches (a small frame's colours often have none).

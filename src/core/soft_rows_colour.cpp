@@ -30,15 +30,23 @@ std::size_t batched_lanes(std::size_t lanes)
   return last != 0 && last < kMinBatchLanes ? lanes - last : lanes;
 }
 
-/// A key whose unsigned order is the descending order of h. A float is fine
-/// enough to order contacts by height; equal heights keep point order.
-std::uint32_t descending_key(float h)
+/// The key's top bit: set for a manifold against a static body.
+constexpr std::uint32_t kStaticKeyBit = 0x80000000U;
+
+/// A key whose unsigned order puts the manifolds against a static body
+/// after the others, each in the descending order of h. A float less its
+/// last bit is fine enough to order contacts by height; equal heights keep
+/// point order. A body pressed between a moving one and the ground is then
+/// solved against the ground last: solved in height order, without gravity
+/// (all heights equal) the pusher could have the last word and carry it
+/// through the ground.
+std::uint32_t order_key(float h, bool against_static)
 {
   std::uint32_t bits = 0;
   h = h == 0.0F ? 0.0F : h;  // -0 sorts with +0
   std::memcpy(&bits, &h, sizeof bits);
   const std::uint32_t ascending = (bits & 0x80000000U) != 0 ? ~bits : bits | 0x80000000U;
-  return ~ascending;
+  return (~ascending >> 1) | (against_static ? kStaticKeyBit : 0U);
 }
 
 /// The manifold's first point, the low half of its order_ key.
@@ -46,19 +54,25 @@ std::size_t first_point(std::uint64_t key) { return static_cast<std::size_t>(key
 
 }  // namespace
 
-std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b)
+std::size_t SoftRows::take_colour(std::uint32_t a, std::uint32_t b, bool against_static)
 {
   // a and b are the bodies the manifold moves (kFixed for one that cannot
   // move); the lowest colour neither is in yet.
   const auto colours_of = [&](std::uint32_t i) { return i == kFixed ? 0U : colours_of_[i]; };
   // A bit per colour, for the colours a body is in.
   constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kMaxColours) - 1;
-  const std::uint32_t free = ~(colours_of(a) | colours_of(b)) & kAllColours;
+  const std::uint32_t taken = colours_of(a) | colours_of(b);
+  const std::uint32_t free = ~taken & kAllColours;
   if (free == 0)
   {
     return kMaxColours;
   }
-  const std::size_t colour = static_cast<std::size_t>(__builtin_ctz(free));
+  // Static manifolds are coloured after all the others (order_key), so the
+  // colour after the body's last is solved after every other manifold of it.
+  const std::size_t after_last = taken == 0 ? 0 : static_cast<std::size_t>(32 - __builtin_clz(taken));
+  const std::size_t colour = against_static && after_last < kMaxColours
+                                 ? after_last
+                                 : static_cast<std::size_t>(__builtin_ctz(free));
   for (std::uint32_t i : {a, b})
   {
     if (i != kFixed)
@@ -77,8 +91,8 @@ void SoftRows::note_manifold(std::size_t k, const ContactPoint& p, const Contact
 {
   const Vec2 at = second != nullptr ? 0.5 * (p.point + second->point) : p.point;
   const Kind kind = second == nullptr ? Kind::Single : p.pair_block ? Kind::Pair : Kind::Other;
-  notes_[k] = Note{descending_key(static_cast<float>(dot(at, up))), p.inv_mass_a != 0.0 ? p.a : kFixed,
-                   p.inv_mass_b != 0.0 ? p.b : kFixed, 0, true, kind};
+  notes_[k] = Note{order_key(static_cast<float>(dot(at, up)), p.against_static), p.inv_mass_a != 0.0 ? p.a : kFixed,
+                   p.inv_mass_b != 0.0 ? p.b : kFixed, 0, true, p.against_static, kind};
 }
 
 void SoftRows::note_no_manifold(std::size_t k) { notes_[k].first = false; }
@@ -95,7 +109,7 @@ void SoftRows::colour_manifolds(std::size_t bodies)
   {
     const std::size_t first = first_point(key);
     Note& m = notes_[first];
-    const std::size_t colour = take_colour(m.a, m.b);
+    const std::size_t colour = take_colour(m.a, m.b, m.against_static);
     if (colour == kMaxColours)
     {
       overflow_.push_back(first);

@@ -134,7 +134,7 @@ double WorldImpl::add_manifold(std::size_t k, double warm_scale, bool friction)
     row.point = m.points[c].point;
     row.separation = m.points[c].separation;
     row.feature = m.points[c].feature;
-    row.count = m.count;
+    row.count = static_cast<std::uint8_t>(m.count);
     if (reuse_distance_ > 0.0)
     {
       // The lever arms are fixed for the frame from here.

@@ -37,9 +37,6 @@ namespace
 /// A contact's stiffness is capped at this fraction of the substep rate: a
 /// spring much stiffer than the substeps can follow would ring.
 constexpr double kMaxHertzPerSubstepRate = 0.25;
-/// Contacts with a body that cannot move are this much stiffer, so a stack
-/// is not pressed into the ground by its own weight.
-constexpr double kStaticStiffnessFactor = 2.0;
 }  // namespace
 
 void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
@@ -131,13 +128,13 @@ inline void WorldImpl::follow_points(double h, bool as_prepared)
 }
 
 /// The frame's two contact springs (springs_), at most a quarter of the
-/// substep rate in frequency, twice that against a body that cannot move.
+/// substep rate in frequency, faster against a static body (ContactSprings).
 ContactSprings WorldImpl::contact_springs(const StepContext& ctx) const
 {
   const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
   const double damping = settings_.contact_damping_ratio;
   return ContactSprings{make_softness(hertz, damping, ctx.h),
-                        make_softness(kStaticStiffnessFactor * hertz, damping, ctx.h)};
+                        make_softness(ContactSprings::kStaticHertzFactor * hertz, damping, ctx.h)};
 }
 
 bool WorldImpl::prepare_pair_points(const ActiveEffects& effects, std::size_t k)

@@ -46,6 +46,7 @@ void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t be
       p.r_a = p.point - a.position();
       p.r_b = p.point - b.position();
     }
+    p.against_static = a.type() == BodyType::Static || b.type() == BodyType::Static;
     p.inv_mass_a = a.inv_mass();
     p.inv_mass_b = b.inv_mass();
     const Material& ma = materials_[p.a];

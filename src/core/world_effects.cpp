@@ -33,6 +33,7 @@ void BodyCensus::add(const BodyCensus& other)
   disks += other.disks;
   turning_face_bodies += other.turning_face_bodies;
   moving_kinematic_bodies += other.moving_kinematic_bodies;
+  kinematic_bodies += other.kinematic_bodies;
 }
 
 /// take_census, kept while no edit changes the bodies (census_).
@@ -96,6 +97,7 @@ void WorldImpl::count_body(std::size_t i, BodyCensus& census) const
   census.disks += polygon ? 0 : 1;
   census.turning_face_bodies += b.type() == BodyType::Kinematic && polygon && b.omega() != 0.0 ? 1 : 0;
   census.moving_kinematic_bodies += b.type() == BodyType::Kinematic && b.velocity() != Vec2{0.0, 0.0} ? 1 : 0;
+  census.kinematic_bodies += b.type() == BodyType::Kinematic ? 1 : 0;
 }
 
 StepContext WorldImpl::select_effects()

@@ -240,6 +240,35 @@ struct WorldImpl : WorldMotion
   void warm_start();
   void solve_velocities(bool friction);
   double velocity_residual() const;
+  /// f(k) for each manifold's first point k, those with a kinematic body
+  /// first: the rest, the ground among them, then have the last word on a
+  /// body it presses. The rest keep point order, which carries a stack's
+  /// correction up from the ground in one pass.
+  template <class F>
+  void for_manifolds_kinematic_first(F&& f)
+  {
+    const auto walk = [&](auto&& take) {
+      for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
+      {
+        if (take(points_[k]))
+        {
+          f(k);
+        }
+      }
+    };
+    if (census_.kinematic_bodies == 0)
+    {
+      walk([](const ContactPoint&) { return true; });  // one walk where there are none
+      return;
+    }
+    walk([](const ContactPoint& p) { return touches_kinematic(p); });
+    walk([](const ContactPoint& p) { return !touches_kinematic(p); });
+  }
+  /// Only a dynamic body has an inverse mass, and a static one is flagged.
+  static bool touches_kinematic(const ContactPoint& p)
+  {
+    return (p.inv_mass_a == 0.0 || p.inv_mass_b == 0.0) && !p.against_static;
+  }
 
   // world_position.cpp: penetration resolution (Fx2D step 3).
   void correct_positions(const StepContext& ctx, StepReport& report);

@@ -40,12 +40,11 @@ void WorldImpl::correct_pass(double softness, bool hold, bool resting_only)
   // substep sees, and in the 16-disk elastic gas of test_extremes_long_runs
   // that let the Gauss-Seidel passes gain energy (6.9e-5 of it over 1e5
   // frames with 4 passes on every contact, none with this restriction).
-  for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
-  {
+  for_manifolds_kinematic_first([&](std::size_t k) {
     ContactPoint& row = points_[k];
     if (!row.active || row.position_solved || (resting_only && row.target > 0.0))
     {
-      continue;
+      return;
     }
     const bool pair = row.count == 2;
     // Depths are taken after the corrections already made (so a stack's
@@ -60,14 +59,14 @@ void WorldImpl::correct_pass(double softness, bool hold, bool resting_only)
     const double second = pair ? current_depth(points_[k + 1]) : 0.0;
     if (pair && settings_.position_block && correct_pair(row, points_[k + 1], first, second, softness))
     {
-      continue;
+      return;
     }
     correct_point(row, first, softness);
     if (pair)
     {
       correct_point(points_[k + 1], second, softness);
     }
-  }
+  });
 }
 
 void WorldImpl::hold_all_static_friction(bool friction)

@@ -104,12 +104,11 @@ void WorldImpl::solve_velocities(bool friction)
 {
   for (int pass = 0; pass < settings_.velocity_iterations; ++pass)
   {
-    for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
-    {
+    for_manifolds_kinematic_first([&](std::size_t k) {
       ContactPoint& p = points_[k];
       if (!p.active || p.exact)
       {
-        continue;
+        return;
       }
       const bool rough = friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
       if (p.count == 2)
@@ -117,7 +116,7 @@ void WorldImpl::solve_velocities(bool friction)
         ContactPoint& q = points_[k + 1];
         if (rough && solve_stick_block(p, q, velocity_))
         {
-          continue;
+          return;
         }
         bool changed = false;
         if (!solve_normal_block(p, q, velocity_, changed))
@@ -129,14 +128,14 @@ void WorldImpl::solve_velocities(bool friction)
         {
           solve_friction_pair(p, q, velocity_);
         }
-        continue;
+        return;
       }
       solve_normal(p, velocity_);
       if (rough)
       {
         solve_friction(p, velocity_);
       }
-    }
+    });
   }
 }
 

@@ -144,6 +144,7 @@ struct BodyCensus
   std::size_t disks = 0;          ///< disks of any type (world_round_points.cpp)
   std::size_t turning_face_bodies = 0;  ///< kinematic polygons with a spin (world_turning_faces.cpp, world_toi.cpp)
   std::size_t moving_kinematic_bodies = 0;  ///< kinematic bodies with a velocity (world_kinematic_push.cpp)
+  std::size_t kinematic_bodies = 0;  ///< any (the Fx2D order solves their contacts first)
   void add(const BodyCensus& other);
   /// Pairs combine materials by min, so a pair shows a property only when
   /// both bodies have it; a pair matters only when one of them is dynamic.

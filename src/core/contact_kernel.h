@@ -110,7 +110,7 @@ struct ContactPoint
   bool position_solved = false;  ///< World: penetration corrected by its island's LCP
   bool kept = false;             ///< World, soft step: its manifold kept from an earlier frame (lever arms set)
   bool origin_known = false;     ///< World, soft step: the origin fields below are set
-  bool against_static = false;   ///< World, soft step: one body is static (the stiffer spring)
+  bool against_static = false;   ///< World: one body is static (the soft step's stiffer spring, the Fx2D walk)
   std::uint32_t feature = 0;     ///< detection's feature id (beside the flags: no padding)
 
   // Detection.

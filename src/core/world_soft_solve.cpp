@@ -40,10 +40,8 @@ void WorldImpl::soft_pass(const StepContext& ctx, bool use_bias, bool warm)
     {
       warm_start();                                        // world_solve.cpp
     }
-    for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
-    {
-      solve_soft_manifold(k, ctx, use_bias);
-    }
+    // As in the colours, the ground after a kinematic body that presses on it.
+    for_manifolds_kinematic_first([&](std::size_t k) { solve_soft_manifold(k, ctx, use_bias); });
     return;
   }
   // A stage a colour, then one for the overflow: the warm start's, then the solve's.

@@ -83,11 +83,12 @@ double allowed_ground_overlap(const WorldSettings& s, double speed, double bar_o
   return s.slop + s.position_iterations * share * bar_overlap;
 }
 
-Press press(double speed, double gravity, bool soft_step)
+Press press(double speed, double gravity, bool soft_step, SolverMode mode)
 {
   WorldSettings s;
   s.gravity = {0.0, -gravity};
   s.soft_step = soft_step;
+  s.solver_mode = mode;
   World world(s);
   Body ground = scenes::make_box(1.0, 40.0, 1.0, {0.0, -0.5});
   ground.set_type(BodyType::Static);
@@ -116,16 +117,17 @@ Press press(double speed, double gravity, bool soft_step)
   return out;
 }
 
-void expect_ground_holds(bool soft_step)
+void expect_ground_holds(bool soft_step, SolverMode mode = SolverMode::Iterative)
 {
-  const std::string pipeline = soft_step ? "soft step" : "Fx2D";
+  const std::string pipeline =
+      std::string(soft_step ? "soft step" : "Fx2D") + (mode == SolverMode::Exact ? ", exact mode" : "");
   for (double gravity : {0.0, 9.81})
   {
     for (double speed : {0.5, 1.0, 2.0, 5.0, 20.0})
     {
       SCOPED_TRACE(pipeline + ", bar at " + std::to_string(speed) + " m/s, gravity " + std::to_string(gravity) +
                    " m/s^2");
-      const Press out = press(speed, gravity, soft_step);
+      const Press out = press(speed, gravity, soft_step, mode);
       std::printf("%s: bar %g m/s down, gravity %g m/s^2, deepest bar overlap %.3f m:\n", pipeline.c_str(), speed,
                   gravity, out.deepest_bar);
       test::print_figure("part's centre above the ground, least (m)", out.lowest_centre, 0.0);
@@ -137,6 +139,18 @@ void expect_ground_holds(bool soft_step)
 }
 
 TEST(ExtremesKinematicPress, SoftStepGroundHoldsAPartAKinematicBarPresses) { expect_ground_holds(true); }
+
+// The exact mode's island LCP has no solution here (two bodies that cannot
+// move squeeze a third); the island falls back to the passes, which walk the
+// manifolds without colours, a kinematic body's first. Before, they walked in
+// point order and the part went through the ground (0.66 m below at 1 m/s,
+// without gravity). The Fx2D order's exact mode is not checked: its position
+// LCP, softened by the compliance, splits the overlap between the ground and
+// the bar and leaves the part's centre near the ground's top.
+TEST(ExtremesKinematicPress, SoftStepExactGroundHoldsAPartAKinematicBarPresses)
+{
+  expect_ground_holds(true, SolverMode::Exact);
+}
 
 TEST(ExtremesKinematicPress, Fx2dGroundHoldsAPartAKinematicBarPresses) { expect_ground_holds(false); }
 

@@ -101,7 +101,8 @@ double WorldMotion::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const 
     const double u = disk_time_of_impact(i, tolerance, from, d, obstacle, Vec2{0.0, 0.0});
     return u > 0.0 ? u : 1.0;
   }
-  const bool on_surface = gap.gap >= -tolerance;
+  // A body thinner than `slop` may rest with its centroid that far inside.
+  const bool on_surface = gap.gap >= -std::max(tolerance, settings_.slop);
   if (on_surface && dot(d, gap.normal) < 0.0)
   {
     face = gap.normal;

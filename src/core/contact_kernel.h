@@ -154,6 +154,9 @@ struct ContactSprings
   /// The static spring's frequency over the other's (its stiffness goes
   /// with the square).
   static constexpr double kStaticHertzFactor = 2.0;
+  /// A contact's frequency is capped at this fraction of the substep rate:
+  /// a spring much stiffer than the substeps can follow would ring.
+  static constexpr double kMaxHertzPerSubstepRate = 0.25;
   Softness moving;
   Softness on_static;
   /// A point's spring, from whether it touches a static body.

@@ -32,13 +32,6 @@ namespace collision2d
 {
 namespace detail
 {
-namespace
-{
-/// A contact's stiffness is capped at this fraction of the substep rate: a
-/// spring much stiffer than the substeps can follow would ring.
-constexpr double kMaxHertzPerSubstepRate = 0.25;
-}  // namespace
-
 void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
 {
   ctx.first = true;
@@ -131,7 +124,7 @@ inline void WorldImpl::follow_points(double h, bool as_prepared)
 /// substep rate in frequency, faster against a static body (ContactSprings).
 ContactSprings WorldImpl::contact_springs(const StepContext& ctx) const
 {
-  const double hertz = std::min(settings_.contact_hertz, kMaxHertzPerSubstepRate * ctx.inv_h);
+  const double hertz = std::min(settings_.contact_hertz, ContactSprings::kMaxHertzPerSubstepRate * ctx.inv_h);
   const double damping = settings_.contact_damping_ratio;
   return ContactSprings{make_softness(hertz, damping, ctx.h),
                         make_softness(ContactSprings::kStaticHertzFactor * hertz, damping, ctx.h)};

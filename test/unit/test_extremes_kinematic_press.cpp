@@ -40,9 +40,6 @@ constexpr double kBarHalf = 0.05;    // m, half the link's thickness
 constexpr double kBarLength = 3.0;   // m
 constexpr int kFrames = 60;
 constexpr double kPi = 3.14159265358979323846;
-/// A contact's frequency is capped at this fraction of the substep rate
-/// (world_soft_step.cpp); the springs' stiffness follows from it.
-constexpr double kMaxHertzPerSubstepRate = 0.25;
 /// Round-off allowed beyond what the ground may give (m).
 constexpr double kBalanceTol = 1e-9;
 
@@ -57,7 +54,7 @@ struct Press
 /// kStaticHertzFactor times it.
 double link_omega(const WorldSettings& s)
 {
-  return 2.0 * kPi * std::min(s.contact_hertz, kMaxHertzPerSubstepRate * s.substeps / s.dt);
+  return 2.0 * kPi * std::min(s.contact_hertz, detail::ContactSprings::kMaxHertzPerSubstepRate * s.substeps / s.dt);
 }
 
 /// The most the ground may give under the part (m), with the link

@@ -62,7 +62,7 @@ struct Material
   X(substeps, int, 4, kAtLeastOne, "", "Substeps per frame: more buys stiffer stacks") \
   X(velocity_iterations, int, 2, kAtLeastOne, "", "Fx2D order: passes over the contact points per substep (the soft step: soft_iterations)") \
   X(slop, double, 1e-3, kNonNegative, "m", "Contact error let be: penetration left uncorrected (Fx2D); slip a sticking contact takes before it slides (soft step)") \
-  X(compliance, double, 1e-8, kNonNegative, "m/N", "Contact compliance: softens K_n by compliance/h^2") \
+  X(compliance, double, 1e-8, kNonNegative, "m/N", "Contact compliance: softens K_n by compliance/h^2 (exact position LCP: not against static bodies)") \
   X(restitution_threshold, double, 1e-3, kNonNegative, "m/s", "Approach speed below which restitution is ignored") \
   X(rotation, Toggle, Toggle::Auto, kAnyFinite, "", "Rotation of the bodies") \
   X(friction, Toggle, Toggle::Auto, kAnyFinite, "", "Coulomb friction") \

@@ -18,12 +18,16 @@
 // passes as in iterative mode.
 //
 // Positions (WorldSettings::exact_position_correction): the same island's
-// penetrations beyond slop, linearised as in the penetration pass (world_position.cpp) with compliance on
-// the diagonal, solved at once: K lambda + softness lambda >= depth - slop,
-// lambda >= 0, complementary. A Gauss-Seidel position pass moves the light
-// body of a 1e6 mass-ratio pair and almost never the heavy one, so without
-// this a heavy box on a light one keeps the gravity sag of every substep and
-// sinks steadily even with exact velocities.
+// penetrations beyond slop, linearised as in the penetration pass
+// (world_position.cpp) with compliance on the diagonal, solved at once:
+// K lambda + softness lambda >= depth - slop, lambda >= 0, complementary.
+// A Gauss-Seidel position pass moves the light body of a 1e6 mass-ratio pair
+// and almost never the heavy one, so without this a heavy box on a light one
+// keeps the gravity sag of every substep and sinks steadily even with exact
+// velocities. A static body's contacts take no compliance: the ground does
+// not give, so a body a kinematic one squeezes against it keeps its overlap
+// with the kinematic body (with compliance on both, the two shared it and a
+// press at 1 m/s put the body through the ground).
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -208,8 +212,12 @@ void WorldImpl::solve_position_islands(double softness, StepReport& report)
     {
       const Eigen::Index i = static_cast<Eigen::Index>(r - island.begin);
       const double scale = 1.0 / std::sqrt(islands.rows[r].k_n);
-      lcp.q(i) = -(current_depth(points_[islands.rows[r].contact]) - settings_.slop) * scale;
-      lcp.M(i, i) += softness * scale * scale;
+      const ContactPoint& p = points_[islands.rows[r].contact];
+      lcp.q(i) = -(current_depth(p) - settings_.slop) * scale;
+      if (!p.against_static)
+      {
+        lcp.M(i, i) += softness * scale * scale;
+      }
     }
     int pivots = 0;
     const LcpResult result = detail::pivot_with_retry(lcp.M, lcp.q, pivots);

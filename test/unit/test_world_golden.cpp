@@ -129,7 +129,7 @@ const Golden kGolden[] = {
      },
      60, 0xb42a024f68818025ULL},
     {"pyramid_exact", Pipeline::Fx2d, [] { return scenes::pyramid(5); },
-     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x5adcc8fcb5763744ULL},
+     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 60, 0x4cdd0760d6e94bdeULL},
     {"pyramid_sleeping", Pipeline::Fx2d, [] { return scenes::pyramid(10); },
      [](WorldSettings& s) {
        s.sleeping = Toggle::On;
@@ -171,7 +171,7 @@ const Golden kGolden[] = {
     {"bullet_defaults", Pipeline::Fx2d, [] { return scenes::bullet_wall(); }, defaults, 30, 0x284a3ca8f63749c5ULL},
     {"demo_defaults", Pipeline::Fx2d, [] { return scenes::demo(); }, defaults, 120, 0x3fbdeace0c8fcfc5ULL},
     {"heavy_on_light_exact", Pipeline::Fx2d, [] { return scenes::heavy_on_light(1e6); },
-     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 120, 0xd3e2bd781bf42514ULL},
+     [](WorldSettings& s) { s.solver_mode = SolverMode::Exact; }, 120, 0x1fe96c18f10d53b6ULL},
     {"heavy_on_light_exact_velocity_only", Pipeline::Fx2d, [] { return scenes::heavy_on_light(1e3); },
      [](WorldSettings& s) {
        s.solver_mode = SolverMode::Exact;

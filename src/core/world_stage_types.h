@@ -123,7 +123,8 @@ constexpr double kCoreFraction = 0.25;
 /// Moves shorter than this fraction of a body's inner radius are not swept
 /// against the static bodies (world_static_crossing.cpp): one cannot carry
 /// the centroid of a body resting on a static face (the centroid an inner
-/// radius away) past that face.
+/// radius away) past that face. A body a kinematic face pushes is swept
+/// anyway: the push comes again each substep.
 constexpr double kCrossingMoveFraction = 0.5;
 /// kept_from_ of a pair whose manifold was found by the narrow phase.
 constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);

@@ -3,10 +3,11 @@
 // thin body in one substep; a body crushed into a static one by a heavy or
 // fast neighbour the contacts cannot hold can still go deep over a frame's
 // substeps. So after the frame's moves (after each substep in the Fx2D
-// order) a body that moved far for its size has its centroid core swept
-// along its path against the static bodies and stops where it first touches
-// one; the contact then pushes it back out the way it came. Its velocity is
-// kept: the next frame's contact takes the impact. A centroid already on a
+// order) a body that moved far for its size, or that a kinematic face
+// pushed (Fx2D), has its centroid core swept along its path against the
+// static bodies and stops where it first touches one; the contact then
+// pushes it back out the way it came. Its velocity is kept: the next
+// frame's contact takes the impact. A centroid already on a
 // static face (the contacts did not hold the body) keeps only the part of
 // its move along the face, and its turn: its velocity into the face goes,
 // or the body would stay frozen there with a velocity that never moves it.
@@ -129,7 +130,11 @@ void WorldMotion::stop_static_crossings(StepContext& ctx, StepReport& report, bo
       return;
     }
     const Vec2 end = soft ? frame_position_[i] : bodies_[i].position();
-    if (!moved_far(i, end - start[i]))
+    // A kinematic face pushes again each substep (the Fx2D order), so short
+    // pushes into a static body add up: a pushed body is swept however
+    // little it moved.
+    const bool pushed = !soft && pushing_ && pusher_[i] != kNoBody;
+    if (!pushed && !moved_far(i, end - start[i]))
     {
       return;  // checked here: the sweep's own call would save registers first
     }

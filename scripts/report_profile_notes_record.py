@@ -143,4 +143,17 @@ changed. The base-5 pyramid in exact mode, 120 frames: 313 of 960
 islands fell back to the passes, against 431, and the whole process took
 0.74 of the time (3 alternating pairs, 4.88 to 5.23 s against 6.60 to
 6.80 s, beside a CI run on the other core).
+A fast-turning kinematic bar whose tips dip into the ground, moving along
+it, striking a resting box again and again (commit c315115, Fx2D order;
+`ExtremesKinematicPress`): the box 0.96 m x 0.767 m of 9.58 kg, the bar
+3.34 m x 0.185 m turning at 46.51 or 100 rad/s from six phases, 5
+substeps, 60 frames. Each push was shorter than the move the
+static-crossing check sweeps (half the box's inner radius a substep), and
+at 46.51 rad/s from 0.5 rad the pushes added up and put the box 24.8 m
+below the ground. With a pushed body swept every substep its centroid's
+lowest height over the ground is 0.0004 to 0.38 m in all twelve runs. Over
+6000 random stress worlds (3000 of seed 7, 3000 of seed 8 with slower
+bodies; both pipelines, a turning bar in half of them) no body went
+through the ground, against 1 before; 10 of the trajectories changed, and
+no golden hash did.
 """

@@ -7,10 +7,11 @@
 // pushed (Fx2D), has its centroid core swept along its path against the
 // static bodies and stops where it first touches one; the contact then
 // pushes it back out the way it came. Its velocity is kept: the next
-// frame's contact takes the impact. A centroid already on a
-// static face (the contacts did not hold the body) keeps only the part of
-// its move along the face, and its turn: its velocity into the face goes,
-// or the body would stay frozen there with a velocity that never moves it.
+// frame's contact takes the impact. A centroid already on a static face,
+// or pressed into it by less than the body's inner radius (the contacts did
+// not hold the body), keeps only the part of its move along the face, and
+// its turn: its velocity into the face goes, or the body would stay frozen
+// there with a velocity that never moves it.
 #include <algorithm>
 #include <limits>
 
@@ -94,7 +95,7 @@ double WorldMotion::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const 
     return t;
   }
   // The core touches already: the centroid may come up to the surface, not
-  // past it; a centroid already inside is the contacts' to push out.
+  // past it; a centroid deeper inside is the contacts' to push out.
   const double tolerance = kCentroidFraction * inner;
   const PointGap gap = outline_point_gap(obstacle, from);
   if (gap.gap > tolerance)
@@ -102,8 +103,10 @@ double WorldMotion::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const 
     const double u = disk_time_of_impact(i, tolerance, from, d, obstacle, Vec2{0.0, 0.0});
     return u > 0.0 ? u : 1.0;
   }
-  // A body thinner than `slop` may rest with its centroid that far inside.
-  const bool on_surface = gap.gap >= -std::max(tolerance, settings_.slop);
+  // A body thinner than `slop` may rest with its centroid that far inside,
+  // and contacts that could not hold a body leave it pressed in: up to its
+  // inner radius either moves no deeper (a push would carry it through).
+  const bool on_surface = gap.gap >= -std::max(inner, settings_.slop);
   if (on_surface && dot(d, gap.normal) < 0.0)
   {
     face = gap.normal;

@@ -42,6 +42,45 @@ constexpr int kFrames = 60;
 constexpr double kPi = 3.14159265358979323846;
 /// Round-off allowed beyond what the ground may give (m).
 constexpr double kBalanceTol = 1e-9;
+constexpr double kGroundHalfWidth = 20.0;  // m
+constexpr double kGroundDepth = 1.0;       // m
+
+/// A world of `s` on a static ground, its top at y = 0.
+World world_on_ground(const WorldSettings& s)
+{
+  World world(s);
+  Body ground = scenes::make_box(1.0, 2.0 * kGroundHalfWidth, kGroundDepth, {0.0, -0.5 * kGroundDepth});
+  ground.set_type(BodyType::Static);
+  world.add_body(ground);
+  return world;
+}
+
+/// A kinematic box (the link) of length x thickness (m) at `at`, turned by
+/// `theta` (rad), moving at `velocity` (m/s) and turning at `spin` (rad/s).
+BodyId add_link(World& world, double length, double thickness, Vec2 at, double theta, Vec2 velocity, double spin)
+{
+  Body bar = scenes::make_box(1.0, length, thickness, at, theta, velocity, spin);
+  bar.set_type(BodyType::Kinematic);
+  return world.add_body(bar);
+}
+
+/// Steps kFrames; the body's lowest centroid height while it is over the
+/// ground, `size` (m) from its ends (a body flung off them falls freely).
+double lowest_over_ground(World& world, BodyId body, double size)
+{
+  double lowest = 1e300;
+  for (int f = 0; f < kFrames; ++f)
+  {
+    world.step();
+    EXPECT_TRUE(test::all_finite(world));
+    const Vec2 at = world.body(body).position();
+    if (std::abs(at.x) < kGroundHalfWidth - size)
+    {
+      lowest = std::min(lowest, at.y);
+    }
+  }
+  return lowest;
+}
 
 struct Press
 {
@@ -93,14 +132,10 @@ Press press(double speed, double gravity, bool soft_step, SolverMode mode)
   s.gravity = {0.0, -gravity};
   s.soft_step = soft_step;
   s.solver_mode = mode;
-  World world(s);
-  Body ground = scenes::make_box(1.0, 40.0, 1.0, {0.0, -0.5});
-  ground.set_type(BodyType::Static);
-  world.add_body(ground);
+  World world = world_on_ground(s);
   const BodyId part = world.add_body(Body(kMass, kRadius, {0.0, kRadius}, {0.0, 0.0}));
-  Body bar = scenes::make_box(1.0, kBarLength, 2.0 * kBarHalf, {0.0, 2.0 * kRadius + kBarHalf}, 0.0, {0.0, -speed});
-  bar.set_type(BodyType::Kinematic);
-  const BodyId bar_id = world.add_body(bar);
+  const BodyId bar_id =
+      add_link(world, kBarLength, 2.0 * kBarHalf, {0.0, 2.0 * kRadius + kBarHalf}, 0.0, {0.0, -speed}, 0.0);
   Press out;
   for (int f = 0; f < kFrames; ++f)
   {
@@ -179,22 +214,15 @@ TEST(ExtremesKinematicPress, Fx2dTurningBarDoesNotPushAThinRodThroughTheGround)
 {
   constexpr double kRodHalf = 0.0008;  // m, thinner than slop
   constexpr double kSink = 0.0005;     // m, the rod's centroid inside the ground at rest
-  constexpr double kGroundDepth = 1.0; // m
   for (const double spin : {-30.0, -100.0, -267.0})
   {
     SCOPED_TRACE("bar at " + std::to_string(spin) + " rad/s");
     WorldSettings s;
     s.gravity = {0.0, -9.81};
     s.soft_step = false;
-    World world(s);
-    Body ground = scenes::make_box(1.0, 40.0, kGroundDepth, {0.0, -0.5 * kGroundDepth});
-    ground.set_type(BodyType::Static);
-    world.add_body(ground);
+    World world = world_on_ground(s);
     const BodyId rod = world.add_body(scenes::make_box(1.0, 1.7, 2.0 * kRodHalf, {0.0, -kSink}));
-    // Its tip reaches 0.26 m below the ground's top.
-    Body bar = scenes::make_box(1.0, 3.06, 0.05, {-1.25, 1.27}, 0.3, {0.35, 0.0}, spin);
-    bar.set_type(BodyType::Kinematic);
-    world.add_body(bar);
+    add_link(world, 3.06, 0.05, {-1.25, 1.27}, 0.3, {0.35, 0.0}, spin);  // its tip reaches 0.26 m below the ground's top
     double lowest = 1e300;
     for (int f = 0; f < kFrames; ++f)
     {
@@ -213,13 +241,12 @@ TEST(ExtremesKinematicPress, Fx2dTurningBarDoesNotPushAThinRodThroughTheGround)
 // strikes, world_kinematic_push.cpp). Each push was shorter than the move
 // the static-crossing check sweeps (half the box's inner radius a substep),
 // and they added up: at 46.51 rad/s from a turn of 0.5 rad the box went
-// through the ground (25.6 m below it). A pushed body is now swept however
+// through the ground (24.8 m below it). A pushed body is now swept however
 // little it moved (found by a random stress run). Checked for several
 // phases and spins: while over the ground, the box's centroid never passes
 // below the ground's top by more than slop.
 TEST(ExtremesKinematicPress, Fx2dTurningBarDoesNotPushABoxThroughTheGround)
 {
-  constexpr double kGroundHalfWidth = 20.0;  // m
   constexpr double kBoxMass = 9.58;          // kg
   constexpr double kBoxWidth = 0.96;         // m
   constexpr double kBoxHeight = 0.767;       // m
@@ -234,33 +261,16 @@ TEST(ExtremesKinematicPress, Fx2dTurningBarDoesNotPushABoxThroughTheGround)
       s.gravity = {0.0, -10.0};
       s.soft_step = false;
       s.substeps = kSubsteps;
-      World world(s);
-      Body ground = scenes::make_box(1.0, 2.0 * kGroundHalfWidth, 1.0, {0.0, -0.5});
-      ground.set_type(BodyType::Static);
-      world.add_body(ground);
-      // Its tips reach 0.45 m below the ground's top.
-      Body bar = scenes::make_box(1.0, 3.34, 0.185, {0.987, 1.217}, phase, {kBarSpeed, 0.0}, spin);
-      bar.set_type(BodyType::Kinematic);
-      world.add_body(bar);
+      World world = world_on_ground(s);
+      add_link(world, 3.34, 0.185, {0.987, 1.217}, phase, {kBarSpeed, 0.0}, spin);  // its tips reach 0.45 m below
       const BodyId box = world.add_body(scenes::make_box(kBoxMass, kBoxWidth, kBoxHeight, {-0.88, 0.5 * kBoxHeight}));
-      double lowest = 1e300;
-      for (int f = 0; f < kFrames; ++f)
-      {
-        world.step();
-        EXPECT_TRUE(test::all_finite(world));
-        const Vec2 at = world.body(box).position();
-        if (std::abs(at.x) < kGroundHalfWidth - kBoxWidth)  // not flung off its end
-        {
-          lowest = std::min(lowest, at.y);
-        }
-      }
+      const double lowest = lowest_over_ground(world, box, kBoxWidth);
       std::printf("Fx2D: bar turning at %g rad/s from %g rad over a box:\n", spin, phase);
       test::print_figure("box's centroid over the ground, lowest (m)", lowest, -s.slop);
       EXPECT_GT(lowest, -s.slop) << "the box's centroid went into the ground";
     }
   }
 }
-
 
 // A rod 36 mm thick lying on the ground, struck by a bar turning at 100 or
 // 204.5 rad/s whose tips dip 0.88 m into the ground. The contacts pressed
@@ -289,26 +299,11 @@ TEST(ExtremesKinematicPress, TurningBarDoesNotPushAPressedRodThroughTheGround)
           s.gravity = {0.0, 0.0};
           s.soft_step = soft_step;
           s.substeps = substeps;
-          World world(s);
-          Body ground = scenes::make_box(1.0, 40.0, 1.0, {0.0, -0.5});
-          ground.set_type(BodyType::Static);
-          world.add_body(ground);
-          Body bar = scenes::make_box(1.0, 3.74, 0.2, {-0.04, 1.086}, phase, {-4.0, 0.0}, spin);
-          bar.set_type(BodyType::Kinematic);
-          world.add_body(bar);
+          World world = world_on_ground(s);
+          add_link(world, 3.74, 0.2, {-0.04, 1.086}, phase, {-4.0, 0.0}, spin);  // its tips reach 0.88 m below
           const BodyId rod =
               world.add_body(scenes::make_box(kRodMass, kRodLength, kRodThickness, {-1.2, 0.5 * kRodThickness}));
-          double lowest = 1e300;
-          for (int f = 0; f < kFrames; ++f)
-          {
-            world.step();
-            EXPECT_TRUE(test::all_finite(world));
-            const Vec2 at = world.body(rod).position();
-            if (std::abs(at.x) < 20.0 - kRodLength)  // not flung off the ground's end
-            {
-              lowest = std::min(lowest, at.y);
-            }
-          }
+          const double lowest = lowest_over_ground(world, rod, kRodLength);
           EXPECT_GT(lowest, -0.5 * kRodThickness) << "the rod's centroid went deeper than its inner radius";
           if (lowest <= -0.5 * kRodThickness || (spin == 204.5 && phase == 0.5))
           {

@@ -285,6 +285,7 @@ TEST(ExtremesKinematicPress, TurningBarDoesNotPushAPressedRodThroughTheGround)
   constexpr double kRodThickness = 0.036;  // m: its inner radius is half this
   constexpr double kRodLength = 2.0;       // m
   constexpr double kRodMass = 9.39;        // kg
+  double lowest_of_all = 1e300;
   for (const bool soft_step : {false, true})
   {
     for (const int substeps : {2, 4})
@@ -305,14 +306,12 @@ TEST(ExtremesKinematicPress, TurningBarDoesNotPushAPressedRodThroughTheGround)
               world.add_body(scenes::make_box(kRodMass, kRodLength, kRodThickness, {-1.2, 0.5 * kRodThickness}));
           const double lowest = lowest_over_ground(world, rod, kRodLength);
           EXPECT_GT(lowest, -0.5 * kRodThickness) << "the rod's centroid went deeper than its inner radius";
-          if (lowest <= -0.5 * kRodThickness || (spin == 204.5 && phase == 0.5))
-          {
-            test::print_figure("rod's centroid over the ground, lowest (m)", lowest, -0.5 * kRodThickness);
-          }
+          lowest_of_all = std::min(lowest_of_all, lowest);
         }
       }
     }
   }
+  test::print_figure("rod's centroid over the ground, lowest of all runs (m)", lowest_of_all, -0.5 * kRodThickness);
 }
 
 }  // namespace

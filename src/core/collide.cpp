@@ -36,7 +36,9 @@
 namespace collision2d
 {
 using detail::add_point;
+using detail::DiskFeature;
 using detail::FeatureKind;
+using detail::nearest_feature_to_disk;
 using detail::pack_feature;
 using detail::PosedPolygon;
 using detail::within_reach;
@@ -83,18 +85,10 @@ std::size_t face_of_max_separation(const Body& polygon, Vec2 local_point, double
   return best;
 }
 
-/// The polygon feature nearest a disk, in the polygon frame.
-struct DiskFeature
-{
-  Vec2 normal;
-  Vec2 closest;
-  double depth = 0.0;
-  FeatureKind kind = FeatureKind::PolygonFaceDisk;
-  std::size_t index = 0;
-};
+}  // namespace
 
-/// Normal from the polygon to the disk centre (polygon frame), closest polygon
-/// point and overlap depth; false when the disk is out of reach.
+namespace detail
+{
 bool nearest_feature_to_disk(const Body& polygon, Vec2 centre, double radius, double touch_tolerance,
                              DiskFeature& f)
 {
@@ -128,6 +122,10 @@ bool nearest_feature_to_disk(const Body& polygon, Vec2 centre, double radius, do
   return true;
 }
 
+}  // namespace detail
+
+namespace
+{
 /// Manifold with the normal from the polygon to the disk.
 bool polygon_disk(const Body& polygon, const Body& disk, Manifold& m, double touch_tolerance,
                   bool polygon_is_second)

@@ -50,6 +50,23 @@ inline int reference_side(std::uint32_t feature)
   return ((feature >> kSecondIsReferenceShift) & 1u) != 0 ? 2 : 1;
 }
 
+/// The polygon feature nearest a disk, in the polygon's frame: the normal
+/// from the polygon toward the disk's centre, the polygon's closest point,
+/// the overlap depth (negative apart) and the face's or vertex's index.
+struct DiskFeature
+{
+  Vec2 normal;
+  Vec2 closest;
+  double depth = 0.0;
+  FeatureKind kind = FeatureKind::PolygonFaceDisk;
+  std::size_t index = 0;
+};
+
+/// The feature of `polygon` nearest a disk centred at `centre` (polygon
+/// frame); false when the disk is farther than `touch_tolerance` from it.
+bool nearest_feature_to_disk(const Body& polygon, Vec2 centre, double radius, double touch_tolerance,
+                             DiskFeature& f);
+
 /// Body::world_vertex and Body::world_face_normal with the same arithmetic,
 /// but visible to the compiler (pose_polygon calls them per vertex).
 inline Vec2 world_vertex_of(const Body& b, std::size_t i)

@@ -12,6 +12,7 @@
 #include "collision2d/body.h"
 #include "collision2d/collide.h"
 #include "collision2d/world.h"
+#include "collide_features.h"
 #include "contact_kernel.h"
 #include "posed_polygon.h"
 #include "world_motion.h"
@@ -21,6 +22,11 @@ namespace collision2d
 {
 namespace detail
 {
+/// When a point `apart` from a centre, moving at `slide`, first comes
+/// within `radius` of it in [0, h] (s); h if it does not
+/// (world_round_points.cpp).
+double touch_time(Vec2 apart, Vec2 slide, double radius, double h);
+
 struct WorldImpl : WorldMotion
 {
   explicit WorldImpl(const WorldSettings& settings) : WorldMotion(settings) {}
@@ -114,6 +120,9 @@ struct WorldImpl : WorldMotion
   __attribute__((noinline, cold)) void list_turning_faces();
   __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
   void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);
+  bool nearest_is_followed_face(const TurningFacePoint& t, DiskFeature& nearest) const;
+  void follow_nearest_feature(const TurningFacePoint& t, const DiskFeature& nearest, double slip, double h,
+                              bool as_prepared);
   __attribute__((noinline, cold)) void list_round_points();
   __attribute__((noinline, cold)) void follow_round_points(double h, bool as_prepared);
   // world_soft_restitution.cpp: restitution, substep by substep.

@@ -28,8 +28,14 @@ namespace
 /// by more than 5e-5 of that distance. Slower slides keep the rows.
 constexpr double kRoundSlideFraction = 0.01;
 
-/// When a point `apart` from a centre, moving at `slide`, first comes
-/// within `radius` of it in [0, h] (s); h if it does not.
+bool round_kind(std::uint32_t feature)
+{
+  const auto kind = static_cast<FeatureKind>(feature >> kKindShift);
+  return kind == FeatureKind::DiskDisk || kind == FeatureKind::PolygonVertexDisk;
+}
+
+}  // namespace
+
 double touch_time(Vec2 apart, Vec2 slide, double radius, double h)
 {
   const double a = length_sq(slide);
@@ -43,14 +49,6 @@ double touch_time(Vec2 apart, Vec2 slide, double radius, double h)
   const double t = c / (-half_b + std::sqrt(disc));  // the smaller root, without cancellation
   return std::clamp(t, 0.0, h);
 }
-
-bool round_kind(std::uint32_t feature)
-{
-  const auto kind = static_cast<FeatureKind>(feature >> kKindShift);
-  return kind == FeatureKind::DiskDisk || kind == FeatureKind::PolygonVertexDisk;
-}
-
-}  // namespace
 
 /// Round contacts whose centres slide past each other by more than
 /// kRoundSlideFraction of their distance in a frame (the straight gap would err).

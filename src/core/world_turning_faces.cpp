@@ -10,6 +10,16 @@
 // point verbs, so no other contact pays for them. A polygon lying on a
 // turning face keeps the frame's contact: followed this way, a box sliding
 // with friction pitched into the face more (docs/performance.md).
+// The face's plane stands for the face only while the disk's centre is
+// nearest that face. Once the turn carries the disk past the face's end, or
+// the face past the disk, the point follows the polygon's nearest feature
+// now (a vertex or another face) without the lead below: read off the
+// plane, a disk beside a turning bar's tip sat deep in the face and was
+// struck at the speed the plane would have there, far out along the bar.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "collide_features.h"
 #include "turn.h"
 #include "world_impl.h"
@@ -18,6 +28,12 @@ namespace collision2d
 {
 namespace detail
 {
+namespace
+{
+/// Every feature is within reach: the nearest is wanted however far.
+constexpr double kAnyDistance = std::numeric_limits<double>::infinity();
+}  // namespace
+
 void WorldImpl::list_turning_faces()
 {
   for (std::size_t k = 0; k < points_.size(); k += points_[k].count == 2 ? 2 : 1)
@@ -76,6 +92,12 @@ void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool a
   const Vec2 material = centres + b.moved - a.moved + rotate(t.r_b, b.turned_cos, b.turned_sin) -
                         rotate(t.r_a, a.turned_cos, a.turned_sin);
   const double slip = dot(perp(normal), material) - dot(perp(t.normal), apart_then);
+  DiskFeature nearest;
+  if (!nearest_is_followed_face(t, nearest))
+  {
+    follow_nearest_feature(t, nearest, slip, h, as_prepared);
+    return;
+  }
   if (as_prepared)
   {
     p.normal = t.normal;
@@ -101,6 +123,60 @@ void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool a
   // The gap and the slip the point verbs read from the anchors' offset are
   // the ones above at these poses (no pass moves a body).
   set_followed(p, anchor_offset(p, velocity_), gap, t.anchor_drift + slip);
+}
+
+/// Whether the polygon's feature nearest the disk's centre now is still the
+/// face the point was prepared on; `nearest` is that feature, rotated to the
+/// world's axes.
+bool WorldImpl::nearest_is_followed_face(const TurningFacePoint& t, DiskFeature& nearest) const
+{
+  const ContactPoint& p = points_[t.point];
+  const std::size_t face = t.face_on_a ? p.a : p.b;
+  const std::size_t disk = t.face_on_a ? p.b : p.a;
+  const BodyVelocity& turn = velocity_[face];
+  const double prepared_cos = std::cos(prepared_theta_[face]);
+  const double prepared_sin = std::sin(prepared_theta_[face]);
+  const Vec2 centre = prepared_position_[disk] + velocity_[disk].moved - (prepared_position_[face] + turn.moved);
+  const Vec2 local = rotate_inv(rotate_inv(centre, turn.turned_cos, turn.turned_sin), prepared_cos, prepared_sin);
+  nearest_feature_to_disk(bodies_[face], local, bodies_[disk].radius(), kAnyDistance, nearest);
+  nearest.normal = rotate(rotate(nearest.normal, prepared_cos, prepared_sin), turn.turned_cos, turn.turned_sin);
+  nearest.closest = rotate(rotate(nearest.closest, prepared_cos, prepared_sin), turn.turned_cos, turn.turned_sin);
+  const std::size_t prepared_face = (p.feature >> kReferenceShift) & kIndexMask;
+  return nearest.kind == FeatureKind::PolygonFaceDisk && nearest.index == prepared_face;
+}
+
+/// A disk no longer nearest its face: its gap to the polygon's nearest
+/// feature now, pushed along that feature's normal.
+void WorldImpl::follow_nearest_feature(const TurningFacePoint& t, const DiskFeature& nearest, double slip,
+                                       double h, bool as_prepared)
+{
+  ContactPoint& p = points_[t.point];
+  const double gap = -nearest.depth;
+  double speculative = gap;
+  p.normal = t.normal;
+  p.r_a = t.r_a;
+  p.r_b = t.r_b;
+  if (!as_prepared)
+  {
+    const BodyVelocity& face = velocity_[t.face_on_a ? p.a : p.b];
+    const BodyVelocity& disk = velocity_[t.face_on_a ? p.b : p.a];
+    const double radius = bodies_[t.face_on_a ? p.b : p.a].radius();
+    const Vec2 on_disk = -radius * nearest.normal;  // from its centre
+    p.normal = t.face_on_a ? nearest.normal : -nearest.normal;
+    p.r_a = t.face_on_a ? nearest.closest : on_disk;
+    p.r_b = t.face_on_a ? on_disk : nearest.closest;
+    prepare_masses(p, p.restitution);
+    // As a round point's: a vertex sweeping past the disk closes along the
+    // normal only as far as its path reaches the disk within the substep.
+    const Vec2 slide = disk.v - (face.v + cross(face.omega, nearest.closest));
+    const double closing = -dot(slide, nearest.normal);
+    if (nearest.kind == FeatureKind::PolygonVertexDisk && gap > 0.0 && closing > 0.0)
+    {
+      const Vec2 apart = (radius + gap) * nearest.normal;  // the vertex to the disk's centre
+      speculative = std::max(gap, closing * touch_time(apart, slide, radius, h));
+    }
+  }
+  set_followed(p, anchor_offset(p, velocity_), speculative, t.anchor_drift + slip);
 }
 
 }  // namespace detail

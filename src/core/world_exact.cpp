@@ -44,6 +44,13 @@ namespace detail
 {
 namespace
 {
+/// An island's solve may raise its contacts' speeds (targets included) by
+/// at most this factor. A body squeezed between a kinematic body and a
+/// static one makes the LCP nearly singular; pivoting then answers with
+/// huge impulses that cancel each other, within a residual scaled by those
+/// impulses, and their friction flung a 114 kg box at 6.4e4 m/s.
+constexpr double kMaxSpeedGain = 10.0;
+
 /// One substep's islands in the exact solver's terms; built per call (one
 /// allocation per array, none per contact or pivot).
 struct ExactIslands
@@ -147,9 +154,9 @@ bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, Ex
     const detail::ContactPoint& row = islands.rows[r];
     detail::apply_impulse(row, row.lambda_n * row.normal + row.lambda_t * row.tangent(), islands.state);
   }
-  const double scale = std::max({speed_before, detail::contact_speed_scale(islands.rows, island, islands.state),
-                                 detail::impulse_speed_scale(islands.rows, island)});
-  if (island_residual(islands, island) <= kTrustedResidual * scale)
+  const double speed_after = detail::contact_speed_scale(islands.rows, island, islands.state);
+  const double scale = std::max({speed_before, speed_after, detail::impulse_speed_scale(islands.rows, island)});
+  if (speed_after <= kMaxSpeedGain * speed_before && island_residual(islands, island) <= kTrustedResidual * scale)
   {
     return true;
   }

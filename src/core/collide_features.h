@@ -50,6 +50,9 @@ inline int reference_side(std::uint32_t feature)
   return ((feature >> kSecondIsReferenceShift) & 1u) != 0 ? 2 : 1;
 }
 
+/// The reference face's (or vertex's) index in the reference polygon.
+inline std::size_t reference_index(std::uint32_t feature) { return (feature >> kReferenceShift) & kIndexMask; }
+
 /// The polygon feature nearest a disk, in the polygon's frame: the normal
 /// from the polygon toward the disk's centre, the polygon's closest point,
 /// the overlap depth (negative apart) and the face's or vertex's index.

@@ -141,8 +141,7 @@ bool WorldImpl::nearest_is_followed_face(const TurningFacePoint& t, DiskFeature&
   nearest_feature_to_disk(bodies_[face], local, bodies_[disk].radius(), kAnyDistance, nearest);
   nearest.normal = rotate(rotate(nearest.normal, prepared_cos, prepared_sin), turn.turned_cos, turn.turned_sin);
   nearest.closest = rotate(rotate(nearest.closest, prepared_cos, prepared_sin), turn.turned_cos, turn.turned_sin);
-  const std::size_t prepared_face = (p.feature >> kReferenceShift) & kIndexMask;
-  return nearest.kind == FeatureKind::PolygonFaceDisk && nearest.index == prepared_face;
+  return nearest.kind == FeatureKind::PolygonFaceDisk && nearest.index == reference_index(p.feature);
 }
 
 /// A disk no longer nearest its face: its gap to the polygon's nearest

@@ -274,6 +274,9 @@ bool LemkeSolver::recover_solution(const Eigen::MatrixXd& M, const Eigen::Vector
     if (correction.cwiseAbs().maxCoeff() <= std::numeric_limits<double>::epsilon() * x.cwiseAbs().maxCoeff())
       break;
   }
+  // A NaN would pass the checks below: clamping and the maxima skip it.
+  if (!x.allFinite())
+    return false;
   result.z.setZero();
   for (int i = 0; i < n_; ++i)
     if (basic_[i] >= n_ && basic_[i] < 2 * n_)

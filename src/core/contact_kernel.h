@@ -349,8 +349,8 @@ void solve_soft_normal(ContactPoint& p, const Softness& spring, double gap, std:
 void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, const Softness& spring, double first_gap,
                              double second_gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
                              bool use_bias);
-/// Takes back a point's whole normal impulse.
-void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state);
+/// Takes back a point's whole impulse, normal and tangential.
+void release_point(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// Drives a point toward its Newton target, of either sign (normal impulse
 /// only, accumulated >= 0). Returns its residual before the update.
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state);

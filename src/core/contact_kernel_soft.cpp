@@ -110,11 +110,12 @@ void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, const So
   set_soft_impulse(second, scale2 * y2, state);
 }
 
-void release_normal(ContactPoint& p, std::vector<BodyVelocity>& state)
+void release_point(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
-  const double applied = -p.lambda_n;
+  const Vec2 applied = -(p.lambda_n * p.normal + p.lambda_t * p.tangent());
   p.lambda_n = 0.0;
-  apply_impulse(p, applied * p.normal, state);
+  p.lambda_t = 0.0;
+  apply_impulse(p, applied, state);
 }
 
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)

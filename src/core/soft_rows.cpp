@@ -330,6 +330,13 @@ double* SoftRows::normal_impulse_of(std::size_t k)
   return point == nullptr ? nullptr : &point->normal[slot.lane];
 }
 
+double* SoftRows::tangent_impulse_of(std::size_t k)
+{
+  const RowSlot slot = row_slot(k);
+  RowPoint* point = const_cast<RowPoint*>(slot.point);
+  return point == nullptr ? nullptr : &point->tangent[slot.lane];
+}
+
 namespace
 {
 /// Calls f(batch, lanes) for part `part` of `parts` of a colour's batches of

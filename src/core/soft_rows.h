@@ -179,6 +179,8 @@ public:
   /// packed: its lane of a row, or nullptr when its manifold is solved on
   /// the point verbs (the point's own field is then current).
   double* normal_impulse_of(std::size_t k);
+  /// ... and its accumulated tangential impulse.
+  double* tangent_impulse_of(std::size_t k);
   /// After the passes: the spare body that pack added leaves `velocity`.
   /// The rows stay packed until point_outcome has read each point's.
   void drop_spare_body(std::vector<BodyVelocity>& velocity) const;

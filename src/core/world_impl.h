@@ -136,6 +136,11 @@ struct WorldImpl : WorldMotion
   /// iterated to the fixed point.
   void restitute(StepReport& report);
   double take_bouncing();
+  double hold_and_release();
+  void drive_to_targets(double fastest, StepReport& report);
+  /// Where point k's accumulated normal and tangential impulses live during the substeps.
+  double* normal_impulse(std::size_t k);
+  double* tangent_impulse(std::size_t k);
   /// The deepest overlap of the frame's contact points at the poses now,
   /// followed from the pose changes since they were prepared (m).
   double followed_penetration();

@@ -37,13 +37,25 @@ void WorldImpl::find_bounce_points()
     {
       continue;
     }
-    // Packed rows carry the impulses during the substeps; other points their own.
-    double* normal = rows_on() ? soft_rows_.normal_impulse_of(k) : nullptr;
     BouncePoint bounce;
     bounce.point = k;
-    bounce.normal = normal != nullptr ? normal : &p.lambda_n;
+    bounce.normal = normal_impulse(k);
+    bounce.tangent = tangent_impulse(k);
     bounce_points_.push_back(bounce);
   }
+}
+
+double* WorldImpl::normal_impulse(std::size_t k)
+{
+  // Packed rows carry the impulses during the substeps; other points their own.
+  double* normal = rows_on() ? soft_rows_.normal_impulse_of(k) : nullptr;
+  return normal != nullptr ? normal : &points_[k].lambda_n;
+}
+
+double* WorldImpl::tangent_impulse(std::size_t k)
+{
+  double* tangent = rows_on() ? soft_rows_.tangent_impulse_of(k) : nullptr;
+  return tangent != nullptr ? tangent : &points_[k].lambda_t;
 }
 
 void WorldImpl::aim_bounces()
@@ -84,11 +96,27 @@ double WorldImpl::closing_gravity(const ContactPoint& p) const
 
 void WorldImpl::restitute(StepReport& report)
 {
-  const double fastest = take_bouncing();
-  if (fastest == 0.0)
+  double fastest = take_bouncing();
+  if (!released_.empty())
   {
-    return;  // nothing bounces: the relax already holds every point
+    fastest = std::max(fastest, hold_and_release());
   }
+  if (fastest > 0.0)  // else nothing bounces: the relax already holds every point
+  {
+    drive_to_targets(fastest, report);
+  }
+  for (const HeldPoint& held : held_)
+  {
+    ContactPoint& p = points_[held.point];
+    *held.normal = p.lambda_n;
+    p.target = held.saved_target;
+  }
+}
+
+/// Gauss-Seidel over the bouncing and held points to the fixed point;
+/// `fastest` (m/s) scales the tolerance.
+void WorldImpl::drive_to_targets(double fastest, StepReport& report)
+{
   double residual = 0.0;
   for (int pass = 0; pass < kMaxRestitutionPasses; ++pass)
   {
@@ -96,6 +124,10 @@ void WorldImpl::restitute(StepReport& report)
     for (std::size_t i : bouncing_)
     {
       residual = std::max(residual, apply_restitution(points_[bounce_points_[i].point], velocity_));
+    }
+    for (const HeldPoint& held : held_)
+    {
+      residual = std::max(residual, apply_restitution(points_[held.point], velocity_));
     }
     if (residual <= kRestitutionTolerance * fastest)
     {
@@ -107,6 +139,55 @@ void WorldImpl::restitute(StepReport& report)
   {
     *bounce_points_[i].normal = points_[bounce_points_[i].point].lambda_n;
   }
+}
+
+/// Lets go of the released_ points. A released impulse may have balanced
+/// others on its bodies (a heavy disk pressing a light box into a wall it
+/// was not approaching at the substep's start), so the points of those
+/// bodies that push and cannot bounce are held at their speeds now while
+/// it comes off; alone, the wall's impulse threw the box at 800 m/s.
+/// Returns how far the release moved them from those speeds (m/s).
+double WorldImpl::hold_and_release()
+{
+  released_body_.assign(bodies_.size(), 0);
+  for (std::size_t i : released_)
+  {
+    const ContactPoint& p = points_[bounce_points_[i].point];
+    released_body_[p.a] = released_body_[p.a] || awake_dynamic(p.a);
+    released_body_[p.b] = released_body_[p.b] || awake_dynamic(p.b);
+  }
+  for (std::size_t k = 0; k < points_.size(); ++k)
+  {
+    ContactPoint& p = points_[k];
+    // Points that can bounce are the bounce points' own (bouncing or let go).
+    if (!p.active || p.restitution > 0.0 || !(released_body_[p.a] || released_body_[p.b]))
+    {
+      continue;
+    }
+    double* normal = normal_impulse(k);
+    if (*normal > 0.0)
+    {
+      held_.push_back(HeldPoint{k, normal, p.target});
+      p.lambda_n = *normal;
+      p.target = dot(relative_velocity(p, velocity_), p.normal);
+    }
+  }
+  for (std::size_t i : released_)
+  {
+    const BouncePoint& bounce = bounce_points_[i];
+    ContactPoint& p = points_[bounce.point];
+    p.lambda_t = *bounce.tangent;
+    release_point(p, velocity_);
+    *bounce.normal = p.lambda_n;
+    *bounce.tangent = p.lambda_t;
+  }
+  double moved = 0.0;
+  for (const HeldPoint& held : held_)
+  {
+    const ContactPoint& p = points_[held.point];
+    moved = std::max(moved, std::abs(dot(relative_velocity(p, velocity_), p.normal) - p.target));
+  }
+  return moved;
 }
 
 /// The points restitute drives, into bouncing_; returns their fastest |target| (m/s).
@@ -122,6 +203,8 @@ double WorldImpl::take_bouncing()
   // slowed before it touched bounces a gap short of contact: gravity over
   // that gap comes off its rebound, as the free fall it skips.
   bouncing_.clear();
+  released_.clear();
+  held_.clear();
   double fastest = 0.0;
   for (std::size_t i = 0; i < bounce_points_.size(); ++i)
   {
@@ -134,8 +217,7 @@ double WorldImpl::take_bouncing()
     p.lambda_n = *bounce.normal;  // from its row, while the rows are packed
     if (bounce.apart)
     {
-      release_normal(p, velocity_);
-      *bounce.normal = p.lambda_n;
+      released_.push_back(i);  // hold_and_release
       continue;
     }
     p.target = bounce.target;

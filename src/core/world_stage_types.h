@@ -70,8 +70,18 @@ struct BouncePoint
 {
   std::size_t point = 0;
   double* normal = nullptr;     ///< accumulated normal impulse: in its row, or the point's own
+  double* tangent = nullptr;    ///< ... and tangential impulse
   double target = 0.0;          ///< this substep's Newton target (m/s), from its start
   bool apart = false;           ///< neither touching nor approaching at the substep's start
+};
+
+/// Soft step: a point that cannot bounce (e = 0) held at its speed while a
+/// released point's impulse comes off one of its bodies (world_soft_restitution.cpp).
+struct HeldPoint
+{
+  std::size_t point = 0;
+  double* normal = nullptr;  ///< accumulated normal impulse: in its row, or the point's own
+  double saved_target = 0.0;  ///< the point's own target, put back after restitution
 };
 
 /// Soft step: a disk's contact point on the face of a kinematic body that

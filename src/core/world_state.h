@@ -169,6 +169,9 @@ struct WorldState
   std::vector<TurningFacePoint> turning_faces_;  ///< soft step: the frame's disks on turning kinematic faces
   std::vector<RoundPoint> round_points_;  ///< soft step: the frame's round contacts followed exactly
   std::vector<std::size_t> bouncing_;   ///< scratch: the bounce_points_ a substep's restitution drives
+  std::vector<std::size_t> released_;   ///< scratch: the bounce_points_ it lets go of
+  std::vector<HeldPoint> held_;         ///< scratch: the points it holds while it does
+  std::vector<unsigned char> released_body_;  ///< scratch: a body of a released point
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).
   bool followed_known_ = false;

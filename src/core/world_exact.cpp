@@ -51,6 +51,10 @@ namespace
 /// impulses, and their friction flung a 114 kg box at 6.4e4 m/s.
 constexpr double kMaxSpeedGain = 10.0;
 
+/// A solve whose residual is within this fraction of its speeds, but not
+/// round-off (kTrustedResidual), seeds the passes instead (m/s per m/s).
+constexpr double kSeedResidual = 1e-2;
+
 /// One substep's islands in the exact solver's terms; built per call (one
 /// allocation per array, none per contact or pivot).
 struct ExactIslands
@@ -137,16 +141,24 @@ double island_residual(const ExactIslands& islands, detail::IslandRange island)
              : detail::island_residual(islands.rows, island, islands.state);
 }
 
+/// How an island's velocity solve ended.
+enum class IslandSolve
+{
+  Exact,   ///< impulses in the rows, velocities in the island's state
+  Seed,    ///< not round-off exact, but near: its impulses start the passes
+  Failed,  ///< nothing to keep
+};
+
 /// Velocity solve of one island: impulses in the rows and velocities in
-/// `state`, or false with the island's velocities back where they started.
-/// The residual recomputed from the velocities must be round-off of the
-/// speeds involved, as in solve_exact.
-bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, ExactIslands& islands,
-                           detail::IslandRange island)
+/// `state`, or the island's velocities back where they started. The residual
+/// recomputed from the velocities must be round-off of the speeds involved,
+/// as in solve_exact.
+IslandSolve solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, ExactIslands& islands,
+                                  detail::IslandRange island)
 {
   if (!pivot_velocity_island(islands, island))
   {
-    return false;
+    return IslandSolve::Failed;
   }
   const double speed_before = detail::contact_speed_scale(islands.rows, island, islands.state);
   for (std::size_t r = island.begin; r < island.end; ++r)
@@ -156,9 +168,11 @@ bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, Ex
   }
   const double speed_after = detail::contact_speed_scale(islands.rows, island, islands.state);
   const double scale = std::max({speed_before, speed_after, detail::impulse_speed_scale(islands.rows, island)});
-  if (speed_after <= kMaxSpeedGain * speed_before && island_residual(islands, island) <= kTrustedResidual * scale)
+  const bool calm = speed_after <= kMaxSpeedGain * speed_before;
+  const double residual = island_residual(islands, island);
+  if (calm && residual <= kTrustedResidual * scale)
   {
-    return true;
+    return IslandSolve::Exact;
   }
   for (std::size_t r = island.begin; r < island.end; ++r)
   {
@@ -168,12 +182,12 @@ bool solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, Ex
       islands.state[i].omega = velocity[i].omega;
     }
   }
-  return false;
+  return calm && residual <= kSeedResidual * scale ? IslandSolve::Seed : IslandSolve::Failed;
 }
 
 }  // namespace
 
-void WorldImpl::solve_exact_islands(StepReport& report, const std::vector<double>* targets, bool add)
+void WorldImpl::solve_exact_islands(StepReport& report, bool seed, const std::vector<double>* targets, bool add)
 {
   // A second pass of the substep adds normal impulses only: its cones would
   // hold just what that pass pushes, not the substep's load.
@@ -181,13 +195,18 @@ void WorldImpl::solve_exact_islands(StepReport& report, const std::vector<double
   build_islands(velocity_, points_, !add, targets, islands);
   for (const detail::IslandRange& island : islands.islands)
   {
-    const bool solved = solve_velocity_island(velocity_, islands, island);
+    const IslandSolve solve = solve_velocity_island(velocity_, islands, island);
+    const bool solved = solve == IslandSolve::Exact;
     ++(solved ? report.exact_islands : report.exact_fallbacks);
-    for (std::size_t r = island.begin; solved && r < island.end; ++r)
+    // A near answer replaces the warm start the passes begin from (a light
+    // body squeezed by a heavy one is where pivoting loses digits, and
+    // where a pass from the last substep's impulses goes furthest wrong).
+    const bool seeds = solve == IslandSolve::Seed && seed && !add;
+    for (std::size_t r = island.begin; (solved || seeds) && r < island.end; ++r)
     {
       const detail::ContactPoint& row = islands.rows[r];
       ContactPoint& w = points_[row.contact];
-      w.exact = true;
+      w.exact = solved;
       w.lambda_n = add ? w.lambda_n + row.lambda_n : row.lambda_n;
       w.lambda_t = add ? w.lambda_t : row.lambda_t;
       w.sliding = add ? w.sliding : row.sliding;

@@ -299,7 +299,10 @@ struct WorldImpl : WorldMotion
   // world_exact.cpp
   /// With `targets`, row k aims at (*targets)[k] instead of its Newton target;
   /// with `add`, a second pass of the substep: normal impulses only, added to the points'.
-  void solve_exact_islands(StepReport& report, const std::vector<double>* targets = nullptr, bool add = false);
+  /// With `seed`, the passes that follow warm start: an island solved near
+  /// but not exactly leaves its impulses as their warm start.
+  void solve_exact_islands(StepReport& report, bool seed, const std::vector<double>* targets = nullptr,
+                           bool add = false);
   void solve_position_islands(double softness, StepReport& report);
 
   // world_rest.cpp: a frame at rest repeats the last one, which is replayed.

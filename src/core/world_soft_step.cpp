@@ -188,7 +188,7 @@ void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport
     // Each island at once by pivoting, from scratch (no warm start); an
     // island too large for it goes through the soft passes below.
     aim_exact_targets(ctx, use_bias);
-    solve_exact_islands(report, &exact_targets_, !use_bias);  // world_exact.cpp
+    solve_exact_islands(report, use_bias, &exact_targets_, !use_bias);  // world_exact.cpp: the biased pass warm starts
   }
   // The warm start goes in once; a later pass goes on from the impulses the
   // one before left (more passes carry a tall stack's weight further down).

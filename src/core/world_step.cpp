@@ -208,7 +208,7 @@ void WorldImpl::solve_velocity_stage(const StepContext& ctx, StepReport& report)
 {
   if (settings_.solver_mode == SolverMode::Exact)
   {
-    solve_exact_islands(report);                          // world_exact.cpp
+    solve_exact_islands(report, ctx.warm);                // world_exact.cpp
   }
   if (ctx.warm)
   {

@@ -26,6 +26,7 @@ constexpr int kMaxRestitutionPasses = 64;
 void WorldImpl::find_bounce_points()
 {
   bounce_points_.clear();
+  some_held_ = false;
   if (!bounces_)
   {
     return;  // stacks and other frames without e > 0 skip restitution whole
@@ -35,6 +36,7 @@ void WorldImpl::find_bounce_points()
     ContactPoint& p = points_[k];
     if (!p.active || p.restitution <= 0.0)
     {
+      some_held_ = some_held_ || p.active;
       continue;
     }
     BouncePoint bounce;
@@ -149,6 +151,32 @@ void WorldImpl::drive_to_targets(double fastest, StepReport& report)
 /// Returns how far the release moved them from those speeds (m/s).
 double WorldImpl::hold_and_release()
 {
+  if (some_held_)  // an elastic gas has none to hold: skip the scan
+  {
+    hold_released_bodies();
+  }
+  for (std::size_t i : released_)
+  {
+    const BouncePoint& bounce = bounce_points_[i];
+    ContactPoint& p = points_[bounce.point];
+    p.lambda_t = *bounce.tangent;
+    release_point(p, velocity_);
+    *bounce.normal = p.lambda_n;
+    *bounce.tangent = p.lambda_t;
+  }
+  double moved = 0.0;
+  for (const HeldPoint& held : held_)
+  {
+    const ContactPoint& p = points_[held.point];
+    moved = std::max(moved, std::abs(dot(relative_velocity(p, velocity_), p.normal) - p.target));
+  }
+  return moved;
+}
+
+/// held_: the pushing points that cannot bounce on the dynamic bodies of the
+/// released_ points, each aimed at its normal speed now.
+void WorldImpl::hold_released_bodies()
+{
   released_body_.assign(bodies_.size(), 0);
   for (std::size_t i : released_)
   {
@@ -172,22 +200,6 @@ double WorldImpl::hold_and_release()
       p.target = dot(relative_velocity(p, velocity_), p.normal);
     }
   }
-  for (std::size_t i : released_)
-  {
-    const BouncePoint& bounce = bounce_points_[i];
-    ContactPoint& p = points_[bounce.point];
-    p.lambda_t = *bounce.tangent;
-    release_point(p, velocity_);
-    *bounce.normal = p.lambda_n;
-    *bounce.tangent = p.lambda_t;
-  }
-  double moved = 0.0;
-  for (const HeldPoint& held : held_)
-  {
-    const ContactPoint& p = points_[held.point];
-    moved = std::max(moved, std::abs(dot(relative_velocity(p, velocity_), p.normal) - p.target));
-  }
-  return moved;
 }
 
 /// The points restitute drives, into bouncing_; returns their fastest |target| (m/s).

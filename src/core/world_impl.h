@@ -137,7 +137,7 @@ struct WorldImpl : WorldMotion
   void restitute(StepReport& report);
   double take_bouncing();
   double hold_and_release();
-  void hold_released_bodies();
+  void hold_pushing_points();
   void drive_to_targets(double fastest, StepReport& report);
   /// Where point k's accumulated normal and tangential impulses live during the substeps.
   double* normal_impulse(std::size_t k);

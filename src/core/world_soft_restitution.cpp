@@ -153,7 +153,7 @@ double WorldImpl::hold_and_release()
 {
   if (some_held_)  // an elastic gas has none to hold: skip the scan
   {
-    hold_released_bodies();
+    hold_pushing_points();
   }
   for (std::size_t i : released_)
   {
@@ -178,13 +178,13 @@ double WorldImpl::hold_and_release()
 /// bouncing point's bodies count too: a light disk squeezed between a box
 /// against a wall and a body it parts from, let go of, was thrown with the
 /// box at 1900 m/s by the wall's push.
-void WorldImpl::hold_released_bodies()
+void WorldImpl::hold_pushing_points()
 {
-  released_body_.assign(bodies_.size(), 0);
+  holding_body_.assign(bodies_.size(), 0);
   const auto mark = [this](std::size_t i) {
     const ContactPoint& p = points_[bounce_points_[i].point];
-    released_body_[p.a] = released_body_[p.a] || awake_dynamic(p.a);
-    released_body_[p.b] = released_body_[p.b] || awake_dynamic(p.b);
+    holding_body_[p.a] = holding_body_[p.a] || awake_dynamic(p.a);
+    holding_body_[p.b] = holding_body_[p.b] || awake_dynamic(p.b);
   };
   for (std::size_t i : released_)
   {
@@ -198,7 +198,7 @@ void WorldImpl::hold_released_bodies()
   {
     ContactPoint& p = points_[k];
     // Points that can bounce are the bounce points' own (bouncing or let go).
-    if (!p.active || p.restitution > 0.0 || !(released_body_[p.a] || released_body_[p.b]))
+    if (!p.active || p.restitution > 0.0 || !(holding_body_[p.a] || holding_body_[p.b]))
     {
       continue;
     }

@@ -75,8 +75,8 @@ struct BouncePoint
   bool apart = false;           ///< neither touching nor approaching at the substep's start
 };
 
-/// Soft step: a point that cannot bounce (e = 0) held at its speed while a
-/// released point's impulse comes off one of its bodies (world_soft_restitution.cpp).
+/// Soft step: a point that cannot bounce (e = 0) held at its speed while
+/// restitution lets go of a point (world_soft_restitution.cpp).
 struct HeldPoint
 {
   std::size_t point = 0;

@@ -322,19 +322,12 @@ void SoftRows::fill_lane(const ContactPoints& points, std::size_t first, const N
   lane_of_[first + 1] = static_cast<std::uint32_t>(2 * lane + 1);
 }
 
-double* SoftRows::normal_impulse_of(std::size_t k)
+ImpulseSlots SoftRows::impulses_of(std::size_t k)
 {
   const RowSlot slot = row_slot(k);
   // The rows are this object's own and it is not const here: writable.
   RowPoint* point = const_cast<RowPoint*>(slot.point);
-  return point == nullptr ? nullptr : &point->normal[slot.lane];
-}
-
-double* SoftRows::tangent_impulse_of(std::size_t k)
-{
-  const RowSlot slot = row_slot(k);
-  RowPoint* point = const_cast<RowPoint*>(slot.point);
-  return point == nullptr ? nullptr : &point->tangent[slot.lane];
+  return point == nullptr ? ImpulseSlots{} : ImpulseSlots{&point->normal[slot.lane], &point->tangent[slot.lane]};
 }
 
 namespace

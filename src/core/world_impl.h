@@ -140,8 +140,7 @@ struct WorldImpl : WorldMotion
   void hold_pushing_points();
   void drive_to_targets(double fastest, StepReport& report);
   /// Where point k's accumulated normal and tangential impulses live during the substeps.
-  double* normal_impulse(std::size_t k);
-  double* tangent_impulse(std::size_t k);
+  ImpulseSlots point_impulses(std::size_t k);
   /// The deepest overlap of the frame's contact points at the poses now,
   /// followed from the pose changes since they were prepared (m).
   double followed_penetration();

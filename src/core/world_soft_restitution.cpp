@@ -26,7 +26,7 @@ constexpr int kMaxRestitutionPasses = 64;
 void WorldImpl::find_bounce_points()
 {
   bounce_points_.clear();
-  some_held_ = false;
+  some_cannot_bounce_ = false;
   if (!bounces_)
   {
     return;  // stacks and other frames without e > 0 skip restitution whole
@@ -36,28 +36,23 @@ void WorldImpl::find_bounce_points()
     ContactPoint& p = points_[k];
     if (!p.active || p.restitution <= 0.0)
     {
-      some_held_ = some_held_ || p.active;
+      some_cannot_bounce_ = some_cannot_bounce_ || p.active;
       continue;
     }
     BouncePoint bounce;
     bounce.point = k;
-    bounce.normal = normal_impulse(k);
-    bounce.tangent = tangent_impulse(k);
+    const ImpulseSlots impulses = point_impulses(k);
+    bounce.normal = impulses.normal;
+    bounce.tangent = impulses.tangent;
     bounce_points_.push_back(bounce);
   }
 }
 
-double* WorldImpl::normal_impulse(std::size_t k)
+ImpulseSlots WorldImpl::point_impulses(std::size_t k)
 {
   // Packed rows carry the impulses during the substeps; other points their own.
-  double* normal = rows_on() ? soft_rows_.normal_impulse_of(k) : nullptr;
-  return normal != nullptr ? normal : &points_[k].lambda_n;
-}
-
-double* WorldImpl::tangent_impulse(std::size_t k)
-{
-  double* tangent = rows_on() ? soft_rows_.tangent_impulse_of(k) : nullptr;
-  return tangent != nullptr ? tangent : &points_[k].lambda_t;
+  const ImpulseSlots row = rows_on() ? soft_rows_.impulses_of(k) : ImpulseSlots{};
+  return row.normal != nullptr ? row : ImpulseSlots{&points_[k].lambda_n, &points_[k].lambda_t};
 }
 
 void WorldImpl::aim_bounces()
@@ -151,7 +146,7 @@ void WorldImpl::drive_to_targets(double fastest, StepReport& report)
 /// Returns how far the release moved them from those speeds (m/s).
 double WorldImpl::hold_and_release()
 {
-  if (some_held_)  // an elastic gas has none to hold: skip the scan
+  if (some_cannot_bounce_)  // an elastic gas has none to hold: skip the scan
   {
     hold_pushing_points();
   }
@@ -202,7 +197,7 @@ void WorldImpl::hold_pushing_points()
     {
       continue;
     }
-    double* normal = normal_impulse(k);
+    double* normal = point_impulses(k).normal;
     if (*normal > 0.0)
     {
       held_.push_back(HeldPoint{k, normal, p.target});

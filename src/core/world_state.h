@@ -171,7 +171,7 @@ struct WorldState
   std::vector<std::size_t> bouncing_;   ///< scratch: the bounce_points_ a substep's restitution drives
   std::vector<std::size_t> released_;   ///< scratch: the bounce_points_ it lets go of
   std::vector<HeldPoint> held_;         ///< scratch: the points it holds while it does
-  bool some_held_ = false;              ///< soft step: the frame has active points that cannot bounce
+  bool some_cannot_bounce_ = false;     ///< soft step: the frame has active points with e = 0
   std::vector<unsigned char> holding_body_;  ///< scratch: a body of a released or bouncing point
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).

@@ -21,6 +21,7 @@ namespace collision2d
 namespace
 {
 using test::kinetic_energy;
+using test::mechanical_energy;
 
 Vec2 momentum(const World& world)
 {
@@ -159,18 +160,6 @@ TEST(WorldSoftRestitution, BouncyBodiesAtRestStayAtRest)
   EXPECT_LT(fastest, 1e-3) << "m/s";
   EXPECT_NEAR(world.body(disk).position().y, 0.5, 5e-3);
   EXPECT_NEAR(world.body(box).position().y, 0.5, 5e-3);
-}
-
-/// Kinetic plus potential energy of the dynamic bodies (J), with gravity -g along y.
-double mechanical_energy(const World& world, double g)
-{
-  double energy = kinetic_energy(world);
-  for (BodyId id : world.body_ids())
-  {
-    const Body& b = world.body(id);
-    energy += b.type() == BodyType::Dynamic ? b.mass() * g * b.position().y : 0.0;
-  }
-  return energy;
 }
 
 /// A ground 40 m wide with its top at y = 0 and walls 20 m apart.

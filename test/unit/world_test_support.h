@@ -51,6 +51,18 @@ inline double kinetic_energy(const World& world)
   return e;
 }
 
+/// Kinetic plus potential energy of the dynamic bodies (J), with gravity -g along y.
+inline double mechanical_energy(const World& world, double g)
+{
+  double energy = kinetic_energy(world);
+  for (BodyId id : world.body_ids())
+  {
+    const Body& b = world.body(id);
+    energy += b.type() == BodyType::Dynamic ? b.mass() * g * b.position().y : 0.0;
+  }
+  return energy;
+}
+
 /// Every body's position, in body_ids() order.
 inline std::vector<Vec2> positions(const World& world)
 {

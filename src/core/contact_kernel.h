@@ -351,8 +351,9 @@ void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, const So
                              bool use_bias);
 /// Takes back a point's whole impulse, normal and tangential.
 void release_point(ContactPoint& p, std::vector<BodyVelocity>& state);
-/// Drives a point toward its Newton target, of either sign (normal impulse
-/// only, accumulated >= 0). Returns its residual before the update.
+/// Drives a point toward its Newton target, of either sign (accumulated
+/// normal impulse >= 0), and keeps its friction impulse inside the cone of
+/// the normal one. Returns its residual before the update.
 double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state);
 
 /// Normal residual (m/s): a pushing point must meet its target exactly, an

@@ -122,6 +122,15 @@ double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
 {
   double change = 0.0;
   const double vn = update_normal(p, state, change);
+  // A normal impulse driven down leaves the friction it carried outside the
+  // cone: that part comes back off (alone, it spun a light disk to 1.6e4 rad/s).
+  const double limit = cone(p) * p.lambda_n;
+  const double kept = std::max(-limit, std::min(limit, p.lambda_t));
+  if (kept != p.lambda_t)
+  {
+    apply_impulse(p, (kept - p.lambda_t) * p.tangent(), state);
+    p.lambda_t = kept;
+  }
   return p.lambda_n > 0.0 ? std::abs(vn - p.target) : std::max(0.0, p.target - vn);
 }
 

@@ -106,6 +106,7 @@ void WorldImpl::restitute(StepReport& report)
   {
     ContactPoint& p = points_[held.point];
     *held.normal = p.lambda_n;
+    *held.tangent = p.lambda_t;
     p.target = held.saved_target;
   }
 }
@@ -134,7 +135,9 @@ void WorldImpl::drive_to_targets(double fastest, StepReport& report)
   report.velocity_residual = std::max(report.velocity_residual, residual);
   for (std::size_t i : bouncing_)
   {
-    *bounce_points_[i].normal = points_[bounce_points_[i].point].lambda_n;
+    const BouncePoint& bounce = bounce_points_[i];
+    *bounce.normal = points_[bounce.point].lambda_n;
+    *bounce.tangent = points_[bounce.point].lambda_t;
   }
 }
 
@@ -154,7 +157,6 @@ double WorldImpl::hold_and_release()
   {
     const BouncePoint& bounce = bounce_points_[i];
     ContactPoint& p = points_[bounce.point];
-    p.lambda_t = *bounce.tangent;
     release_point(p, velocity_);
     *bounce.normal = p.lambda_n;
     *bounce.tangent = p.lambda_t;
@@ -197,11 +199,12 @@ void WorldImpl::hold_pushing_points()
     {
       continue;
     }
-    double* normal = point_impulses(k).normal;
-    if (*normal > 0.0)
+    const ImpulseSlots impulses = point_impulses(k);
+    if (*impulses.normal > 0.0)
     {
-      held_.push_back(HeldPoint{k, normal, p.target});
-      p.lambda_n = *normal;
+      held_.push_back(HeldPoint{k, impulses.normal, impulses.tangent, p.target});
+      p.lambda_n = *impulses.normal;
+      p.lambda_t = *impulses.tangent;
       p.target = dot(relative_velocity(p, velocity_), p.normal);
     }
   }
@@ -231,7 +234,8 @@ double WorldImpl::take_bouncing()
       continue;
     }
     ContactPoint& p = points_[bounce.point];
-    p.lambda_n = *bounce.normal;  // from its row, while the rows are packed
+    p.lambda_n = *bounce.normal;  // from their rows, while the rows are packed
+    p.lambda_t = *bounce.tangent;
     if (bounce.apart)
     {
       released_.push_back(i);  // hold_and_release

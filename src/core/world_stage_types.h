@@ -80,7 +80,8 @@ struct BouncePoint
 struct HeldPoint
 {
   std::size_t point = 0;
-  double* normal = nullptr;  ///< accumulated normal impulse: in its row, or the point's own
+  double* normal = nullptr;   ///< accumulated normal impulse: in its row, or the point's own
+  double* tangent = nullptr;  ///< ... and tangential impulse
   double saved_target = 0.0;  ///< the point's own target, put back after restitution
 };
 

@@ -3,8 +3,9 @@
 // frame bounce off each in turn (equal disks in a row pass the speed along),
 // e = 1 keeps the kinetic energy however many bodies meet at once, boxes on
 // the contact rows bounce like disks on the point verbs, a bouncy body at
-// rest stays at rest, and a light body that a heavy one presses against a
-// wall gains no energy when the step lets go of that press.
+// rest stays at rest, a light body that a heavy one presses against a wall
+// gains no energy when the step lets go of that press, and a bounce that
+// unloads a contact leaves its friction inside the Coulomb cone.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -250,6 +251,55 @@ TEST(WorldSoftRestitution, ALightBoxPressedIntoAWallByAHeavyDiskGainsNoEnergy)
       const double gain = largest_energy_gain(world, 120);
       std::printf("%s, %d substeps: largest energy gain %.3g J of %.4g\n", to_text(mode), substeps, gain, start);
       EXPECT_LE(gain, 1e-9 * start) << to_text(mode) << ", " << substeps << " substeps";
+    }
+  }
+}
+
+TEST(WorldSoftRestitution, ABounceThatUnloadsAContactTakesItsFrictionOffToo)
+{
+  // A 27 kg disk sits on a 70 g one by the left wall when a 96 kg plank
+  // slides into the light disk (from a random stress world, rounded). The
+  // heavy disk's bounce drove its normal impulse on the light one down and
+  // left the friction it had carried: the exact mode spun the light disk to
+  // 1.2e4 rad/s (energy +8200 J). Every published impulse must lie in the
+  // Coulomb cone, and no mode may gain energy.
+  const double half_width = 0.00308;
+  const double half_length = 0.3796;
+  const std::vector<Vec2> plank{{-half_width, -half_length},
+                                {half_width, -half_length},
+                                {half_width, half_length},
+                                {-half_width, half_length}};
+  for (SolverMode mode : {SolverMode::Iterative, SolverMode::Exact})
+  {
+    for (int substeps : {1, 2, 4, 8})
+    {
+      WorldSettings settings;
+      settings.gravity = Vec2{0.0, -10.0};
+      settings.solver_mode = mode;
+      settings.substeps = substeps;
+      World world(settings);
+      add_ground_and_walls(world);
+      world.add_body(Body(27.08, 0.04915, {-9.9509, 0.17718}, {0.0, -1.213}, -16.09), Material{0.2335, 0.9866, 0.7882});
+      world.add_body(Body(0.06965, 0.0545, {-9.9001, 0.05447}, {2.835, 0.0}, 145.3), Material{0.3945, 0.5806, 0.5443});
+      world.add_body(Body(96.22, plank, {-9.2678, 0.01827}, {-5.86, 0.0}, 4.7525, 0.0), Material{0.0765, 0.7279, 0.6395});
+      const double start = mechanical_energy(world, 10.0);
+      double gain = 0.0;
+      double outside = 0.0;  // N s
+      for (int frame = 0; frame < 60; ++frame)
+      {
+        world.step();
+        gain = std::max(gain, mechanical_energy(world, 10.0) - start);
+        for (const WorldContact& c : world.contacts())
+        {
+          const double mu = std::min(world.material(c.a).static_friction, world.material(c.b).static_friction);
+          const double limit = mu * c.impulse.normal;
+          outside = std::max(outside, std::abs(c.impulse.tangent) - limit - 1e-9 * (1.0 + limit));
+        }
+      }
+      std::printf("%s, %d substeps: largest energy gain %.3g J of %.4g, friction outside the cone %.3g N s\n",
+                  to_text(mode), substeps, gain, start, outside);
+      EXPECT_LE(gain, 1e-9 * start) << to_text(mode) << ", " << substeps << " substeps";
+      EXPECT_LE(outside, 0.0) << to_text(mode) << ", " << substeps << " substeps";
     }
   }
 }

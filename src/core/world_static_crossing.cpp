@@ -11,7 +11,8 @@
 // or pressed into it by less than the body's inner radius (the contacts did
 // not hold the body), keeps only the part of its move along the face, and
 // its turn: its velocity into the face goes, or the body would stay frozen
-// there with a velocity that never moves it.
+// there with a velocity that never moves it. That part is swept again, so
+// a corner stops it too.
 #include <algorithm>
 #include <limits>
 
@@ -27,6 +28,14 @@ namespace
 /// Once the core already touches a static body, the centroid itself is
 /// swept: a disk this fraction of the inner radius.
 constexpr double kCentroidFraction = 1e-3;
+
+/// Faces a centroid on a static face slides along before it stops: the two
+/// of a corner, and one more for a gap narrower than the body.
+constexpr int kCornerFaces = 3;
+
+/// A move into a face by at most this fraction of its length is along it
+/// (round-off of without_inward: the face's unit normal is not exact).
+constexpr double kAlongFace = 1e-12;
 
 /// d less its part into a face of outward normal n (unit).
 Vec2 without_inward(Vec2 d, Vec2 n) { return d - std::min(0.0, dot(d, n)) * n; }
@@ -107,7 +116,7 @@ double WorldMotion::centroid_entry_time(std::size_t i, Vec2 from, Vec2 d, const 
   // and contacts that could not hold a body leave it pressed in: up to its
   // inner radius either moves no deeper (a push would carry it through).
   const bool on_surface = gap.gap >= -std::max(inner, settings_.slop);
-  if (on_surface && dot(d, gap.normal) < 0.0)
+  if (on_surface && dot(d, gap.normal) < -kAlongFace * length(d))
   {
     face = gap.normal;
     return 0.0;
@@ -142,20 +151,27 @@ void WorldMotion::stop_static_crossings(StepContext& ctx, StepReport& report, bo
       return;  // checked here: the sweep's own call would save registers first
     }
     const double end_theta = soft ? frame_theta_[i] : bodies_[i].theta();
+    Vec2 d = end - start[i];
     Vec2 face;
-    const double t = static_crossing_time(i, start[i], end - start[i], face);
+    double t = static_crossing_time(i, start[i], d, face);
     if (t >= 1.0)
     {
       return;
     }
-    // On a face (t exactly 0) only the move and the velocity into it stop.
-    const bool on_face = t == 0.0;
-    const Vec2 at = on_face ? start[i] + without_inward(end - start[i], face) : start[i] + t * (end - start[i]);
-    const double theta = on_face ? end_theta : start_theta[i] + t * (end_theta - start_theta[i]);
-    if (on_face)
+    // On a face (t exactly 0) only the move and the velocity into it stop;
+    // the move along it is swept again, for the next face of a corner (a
+    // bar pressing a box down a wall drove it into the ground).
+    bool on_face = false;
+    for (int faces = 0; t == 0.0 && faces < kCornerFaces; ++faces)
     {
+      on_face = true;
+      d = without_inward(d, face);
       take_out_approach(i, kNoBody, face, start[i], !soft);  // world_toi.cpp
+      t = static_crossing_time(i, start[i], d, face);
     }
+    t = std::min(t, 1.0);
+    const Vec2 at = start[i] + t * d;
+    const double theta = on_face && t == 1.0 ? end_theta : start_theta[i] + t * (end_theta - start_theta[i]);
     if (soft)
     {
       frame_position_[i] = at;

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "collision2d/scenes/scene_parts.h"
@@ -163,6 +164,59 @@ TEST(WorldStaticCrossing, ACentroidOnTheFaceIsNotFrozenThere)
             EXPECT_LT(length(rod.velocity()), kRestSpeed);
           }
         }
+}
+
+// A small box pressed 1 to 3 mm into a wall (its centroid inside the
+// wall's face) is swept down by a kinematic bar striking at 30 to 60 m/s,
+// tilted so that it pushes toward the wall too. The crossing check kept the
+// box's move along the wall's face and did not sweep that move against the
+// ground: the box went through the ground's top (13 m down in 20 frames, in
+// the soft step at one substep). Its centroid must stay within kDeepest of
+// the ground's top, both pipelines, 1 to 4 substeps.
+TEST(WorldStaticCrossing, ABoxSlidDownAWallFaceStopsAtTheGround)
+{
+  constexpr double kWallFace = -10.0;   // m: the wall fills x < kWallFace
+  constexpr double kBoxHalf = 0.01;     // m
+  constexpr double kBoxMass = 0.05;     // kg
+  constexpr double kBarHalfLength = 2.0;  // m
+  constexpr double kBarHalfThick = 0.1;   // m
+  constexpr double kBarTilt = -0.1;     // rad: its lower face points down and toward the wall
+  constexpr double kBarBottom = 0.35;   // m: the bar's lower left corner's height, about, at the start
+  constexpr int kStrikeFrames = 20;
+  double worst = kGroundTop;
+  for (const bool soft : {false, true})
+    for (const int substeps : {1, 2, 4})
+      for (const double speed : {30.0, 45.0, 60.0})
+        for (const double pressed_in : {0.001, 0.002, 0.003})
+        {
+          WorldSettings settings;
+          settings.soft_step = soft;
+          settings.substeps = substeps;
+          settings.gravity = Vec2{0.0, -10.0};
+          World world(settings);
+          world.add_body(scenes::make_static_box(40.0, 1.0, {0.0, kGroundTop - 0.5}));
+          world.add_body(scenes::make_static_box(1.0, 30.0, {kWallFace - 0.5, 14.0}));
+          const BodyId box = world.add_body(
+              scenes::make_box(kBoxMass, 2 * kBoxHalf, 2 * kBoxHalf, {kWallFace - pressed_in, 0.3}, 0.0, {0.0, 0.0}, 0.0),
+              Material{0.0, 0.5, 0.4});
+          Body bar = scenes::make_box(1.0, 2 * kBarHalfLength, 2 * kBarHalfThick,
+                                      {kWallFace + kBarHalfLength, kBarBottom + kBarHalfThick - kBarHalfLength * kBarTilt},
+                                      kBarTilt, {0.0, -speed}, 0.0);
+          bar.set_type(BodyType::Kinematic);
+          world.add_body(bar);
+          double lowest = kGroundTop + kBoxHalf;
+          for (int f = 0; f < kStrikeFrames; ++f)
+          {
+            world.step();
+            lowest = std::min(lowest, world.body(box).position().y);
+          }
+          const std::string what = std::string(soft ? "soft step" : "Fx2D") + ", " + std::to_string(substeps) +
+                                   " substeps, " + std::to_string(speed) + " m/s, " + std::to_string(pressed_in) +
+                                   " m into the wall";
+          EXPECT_GE(lowest, kGroundTop - kDeepest) << what;
+          worst = std::min(worst, lowest);
+        }
+  std::printf("lowest centroid of the struck boxes: %.4g m (ground top %.4g m)\n", worst, kGroundTop);
 }
 
 }  // namespace

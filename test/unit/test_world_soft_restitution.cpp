@@ -171,6 +171,25 @@ void add_ground_and_walls(World& world)
   world.add_body(scenes::make_static_box(1.0, 30.0, {10.5, 14.0}));
 }
 
+/// A world under gravity (-10 m/s^2) in `mode` at `substeps`, with
+/// add_ground_and_walls.
+World walled_world(SolverMode mode, int substeps)
+{
+  WorldSettings settings;
+  settings.gravity = Vec2{0.0, -10.0};
+  settings.solver_mode = mode;
+  settings.substeps = substeps;
+  World world(settings);
+  add_ground_and_walls(world);
+  return world;
+}
+
+/// A rectangle's outline about its centre (m).
+std::vector<Vec2> rectangle(double half_width, double half_height)
+{
+  return {{-half_width, -half_height}, {half_width, -half_height}, {half_width, half_height}, {-half_width, half_height}};
+}
+
 /// The largest rise of the mechanical energy over `frames` frames (J).
 double largest_energy_gain(World& world, int frames)
 {
@@ -227,20 +246,12 @@ TEST(WorldSoftRestitution, ALightBoxPressedIntoAWallByAHeavyDiskGainsNoEnergy)
   // it (from a random stress world, kept to full precision: it meets the box
   // 1.5 s in). The exact mode let go of the disk's push and left the wall's,
   // throwing the box at 2500 m/s (energy +6.7e5 J, 11 times the start).
-  const double half_width = 0.13539458806499688;
-  const double half_height = 0.44768277326006206;
-  const std::vector<Vec2> box{
-      {-half_width, -half_height}, {half_width, -half_height}, {half_width, half_height}, {-half_width, half_height}};
+  const std::vector<Vec2> box = rectangle(0.13539458806499688, 0.44768277326006206);
   for (SolverMode mode : {SolverMode::Iterative, SolverMode::Exact})
   {
     for (int substeps : {1, 2, 4})
     {
-      WorldSettings settings;
-      settings.gravity = Vec2{0.0, -10.0};
-      settings.solver_mode = mode;
-      settings.substeps = substeps;
-      World world(settings);
-      add_ground_and_walls(world);
+      World world = walled_world(mode, substeps);
       world.add_body(Body(0.44046674059211038, box, {-5.3962684239280438, 11.310480006445957},
                           {-4.641343343185131, -26.337496492725229}, 0.87391837344346046, -7.3526587800540355),
                      Material{0.57348503142224239, 0.66275112484944598, 0.33389985929275467});
@@ -263,22 +274,12 @@ TEST(WorldSoftRestitution, ABounceThatUnloadsAContactTakesItsFrictionOffToo)
   // left the friction it had carried: the exact mode spun the light disk to
   // 1.2e4 rad/s (energy +8200 J). Every published impulse must lie in the
   // Coulomb cone, and no mode may gain energy.
-  const double half_width = 0.00308;
-  const double half_length = 0.3796;
-  const std::vector<Vec2> plank{{-half_width, -half_length},
-                                {half_width, -half_length},
-                                {half_width, half_length},
-                                {-half_width, half_length}};
+  const std::vector<Vec2> plank = rectangle(0.00308, 0.3796);
   for (SolverMode mode : {SolverMode::Iterative, SolverMode::Exact})
   {
     for (int substeps : {1, 2, 4, 8})
     {
-      WorldSettings settings;
-      settings.gravity = Vec2{0.0, -10.0};
-      settings.solver_mode = mode;
-      settings.substeps = substeps;
-      World world(settings);
-      add_ground_and_walls(world);
+      World world = walled_world(mode, substeps);
       world.add_body(Body(27.08, 0.04915, {-9.9509, 0.17718}, {0.0, -1.213}, -16.09), Material{0.2335, 0.9866, 0.7882});
       world.add_body(Body(0.06965, 0.0545, {-9.9001, 0.05447}, {2.835, 0.0}, 145.3), Material{0.3945, 0.5806, 0.5443});
       world.add_body(Body(96.22, plank, {-9.2678, 0.01827}, {-5.86, 0.0}, 4.7525, 0.0), Material{0.0765, 0.7279, 0.6395});

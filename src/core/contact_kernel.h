@@ -349,6 +349,25 @@ void solve_soft_normal(ContactPoint& p, const Softness& spring, double gap, std:
 void solve_soft_normal_block(ContactPoint& first, ContactPoint& second, const Softness& spring, double first_gap,
                              double second_gap, std::vector<BodyVelocity>& state, double inv_h, double max_push,
                              bool use_bias);
+/// Where a point's accumulated normal and tangential impulses (N s) live
+/// while it is solved: its lane of a row, or its own fields.
+struct ImpulseSlots
+{
+  double* normal = nullptr;
+  double* tangent = nullptr;
+};
+/// The point's impulses from their slots, for the point verbs.
+inline void load_impulses(ContactPoint& p, ImpulseSlots slots)
+{
+  p.lambda_n = *slots.normal;
+  p.lambda_t = *slots.tangent;
+}
+/// ... and back.
+inline void store_impulses(const ContactPoint& p, ImpulseSlots slots)
+{
+  *slots.normal = p.lambda_n;
+  *slots.tangent = p.lambda_t;
+}
 /// Takes back a point's whole impulse, normal and tangential.
 void release_point(ContactPoint& p, std::vector<BodyVelocity>& state);
 /// Drives a point toward its Newton target, of either sign (accumulated

@@ -125,7 +125,7 @@ double apply_restitution(ContactPoint& p, std::vector<BodyVelocity>& state)
   // A normal impulse driven down leaves the friction it carried outside the
   // cone: that part comes back off (alone, it spun a light disk to 1.6e4 rad/s).
   const double limit = cone(p) * p.lambda_n;
-  const double kept = std::max(-limit, std::min(limit, p.lambda_t));
+  const double kept = std::clamp(p.lambda_t, -limit, limit);
   if (kept != p.lambda_t)
   {
     apply_impulse(p, (kept - p.lambda_t) * p.tangent(), state);

@@ -102,12 +102,6 @@ struct RowPass
   bool use_bias = false;    ///< false: the relax pass
 };
 
-/// Where a point's accumulated normal and tangential impulses (N s) live.
-struct ImpulseSlots
-{
-  double* normal = nullptr;
-  double* tangent = nullptr;
-};
 /// What a point's solve leaves: its accumulated impulses (N s) and whether
 /// its friction ended at its bound.
 struct PointOutcome
@@ -181,11 +175,9 @@ public:
                        std::size_t parts = 1);
   void solve_rows(std::size_t colour, std::vector<BodyVelocity>& velocity, const RowPass& pass, std::size_t part = 0,
                   std::size_t parts = 1);
-  /// Where point k's accumulated normal impulse lives while the rows are
-  /// packed: its lane of a row, or nullptr when its manifold is solved on
-  /// the point verbs (the point's own field is then current).
-  double* normal_impulse_of(std::size_t k) { return impulses_of(k).normal; }
-  /// ... and both its accumulated impulses (both nullptr without a row).
+  /// Where point k's accumulated impulses live while the rows are packed:
+  /// its lane of a row, or both nullptr when its manifold is solved on the
+  /// point verbs (the point's own fields are then current).
   ImpulseSlots impulses_of(std::size_t k);
   /// After the passes: the spare body that pack added leaves `velocity`.
   /// The rows stay packed until point_outcome has read each point's.

@@ -41,9 +41,7 @@ void WorldImpl::find_bounce_points()
     }
     BouncePoint bounce;
     bounce.point = k;
-    const ImpulseSlots impulses = point_impulses(k);
-    bounce.normal = impulses.normal;
-    bounce.tangent = impulses.tangent;
+    bounce.impulses = point_impulses(k);
     bounce_points_.push_back(bounce);
   }
 }
@@ -105,8 +103,7 @@ void WorldImpl::restitute(StepReport& report)
   for (const HeldPoint& held : held_)
   {
     ContactPoint& p = points_[held.point];
-    *held.normal = p.lambda_n;
-    *held.tangent = p.lambda_t;
+    store_impulses(p, held.impulses);
     p.target = held.saved_target;
   }
 }
@@ -136,8 +133,7 @@ void WorldImpl::drive_to_targets(double fastest, StepReport& report)
   for (std::size_t i : bouncing_)
   {
     const BouncePoint& bounce = bounce_points_[i];
-    *bounce.normal = points_[bounce.point].lambda_n;
-    *bounce.tangent = points_[bounce.point].lambda_t;
+    store_impulses(points_[bounce.point], bounce.impulses);
   }
 }
 
@@ -158,8 +154,7 @@ double WorldImpl::hold_and_release()
     const BouncePoint& bounce = bounce_points_[i];
     ContactPoint& p = points_[bounce.point];
     release_point(p, velocity_);
-    *bounce.normal = p.lambda_n;
-    *bounce.tangent = p.lambda_t;
+    store_impulses(p, bounce.impulses);
   }
   double moved = 0.0;
   for (const HeldPoint& held : held_)
@@ -202,9 +197,8 @@ void WorldImpl::hold_pushing_points()
     const ImpulseSlots impulses = point_impulses(k);
     if (*impulses.normal > 0.0)
     {
-      held_.push_back(HeldPoint{k, impulses.normal, impulses.tangent, p.target});
-      p.lambda_n = *impulses.normal;
-      p.lambda_t = *impulses.tangent;
+      held_.push_back(HeldPoint{k, impulses, p.target});
+      load_impulses(p, impulses);
       p.target = dot(relative_velocity(p, velocity_), p.normal);
     }
   }
@@ -229,13 +223,12 @@ double WorldImpl::take_bouncing()
   for (std::size_t i = 0; i < bounce_points_.size(); ++i)
   {
     BouncePoint& bounce = bounce_points_[i];
-    if (*bounce.normal <= 0.0)
+    if (*bounce.impulses.normal <= 0.0)
     {
       continue;
     }
     ContactPoint& p = points_[bounce.point];
-    p.lambda_n = *bounce.normal;  // from their rows, while the rows are packed
-    p.lambda_t = *bounce.tangent;
+    load_impulses(p, bounce.impulses);  // from their rows, while the rows are packed
     if (bounce.apart)
     {
       released_.push_back(i);  // hold_and_release

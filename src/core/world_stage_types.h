@@ -69,8 +69,7 @@ struct FaceMove
 struct BouncePoint
 {
   std::size_t point = 0;
-  double* normal = nullptr;     ///< accumulated normal impulse: in its row, or the point's own
-  double* tangent = nullptr;    ///< ... and tangential impulse
+  ImpulseSlots impulses;        ///< its accumulated impulses: in its row, or the point's own
   double target = 0.0;          ///< this substep's Newton target (m/s), from its start
   bool apart = false;           ///< neither touching nor approaching at the substep's start
 };
@@ -80,8 +79,7 @@ struct BouncePoint
 struct HeldPoint
 {
   std::size_t point = 0;
-  double* normal = nullptr;   ///< accumulated normal impulse: in its row, or the point's own
-  double* tangent = nullptr;  ///< ... and tangential impulse
+  ImpulseSlots impulses;      ///< its accumulated impulses: in its row, or the point's own
   double saved_target = 0.0;  ///< the point's own target, put back after restitution
 };
 

@@ -150,7 +150,7 @@ void solve_by_rows(Scene& s, bool warm, bool use_bias)
   rows.drop_spare_body(s.bodies);
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
-    ASSERT_NE(rows.normal_impulse_of(k), nullptr) << k;
+    ASSERT_NE(rows.impulses_of(k).normal, nullptr) << k;
     const detail::PointOutcome outcome = rows.point_outcome(k, s.points[k]);
     s.points[k].lambda_n = outcome.normal;
     s.points[k].lambda_t = outcome.tangent;
@@ -244,7 +244,7 @@ TEST(SoftRows, TwoManifoldsGoTopDownWithoutColoursAndLeaveNoneBehind)
   EXPECT_EQ(rows.overflow(), (std::vector<std::size_t>{1, 0}));
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
-    EXPECT_EQ(rows.normal_impulse_of(k), nullptr) << "point " << k << " has no row";
+    EXPECT_EQ(rows.impulses_of(k).normal, nullptr) << "point " << k << " has no row";
   }
   // All 15 again: the colour holds its batches only, nothing left from before.
   pack_first(rows, s, kManifolds, workers, block);
@@ -253,7 +253,7 @@ TEST(SoftRows, TwoManifoldsGoTopDownWithoutColoursAndLeaveNoneBehind)
   EXPECT_TRUE(rows.overflow().empty());
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
-    EXPECT_NE(rows.normal_impulse_of(k), nullptr) << "point " << k << " is in a batch";
+    EXPECT_NE(rows.impulses_of(k).normal, nullptr) << "point " << k << " is in a batch";
   }
 }
 
@@ -321,12 +321,12 @@ void pack_crowded(Packed& out, const Scene& s, std::size_t active_every, int wor
   const double* lowest = nullptr;
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
-    const double* at = out.rows.normal_impulse_of(k);
+    const double* at = out.rows.impulses_of(k).normal;
     lowest = at != nullptr && (lowest == nullptr || at < lowest) ? at : lowest;
   }
   for (std::size_t k = 0; k < s.points.size(); ++k)
   {
-    const double* at = out.rows.normal_impulse_of(k);
+    const double* at = out.rows.impulses_of(k).normal;
     out.lanes.push_back(at == nullptr ? -1 : at - lowest);
   }
   for (std::size_t c = 0; c < out.rows.colour_count(); ++c)

@@ -114,10 +114,16 @@ void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool a
     double lead_sin = 0.0;
     turn_of(0.5 * h * face.omega, lead_cos, lead_sin);
     p.normal = rotate(normal, lead_cos, lead_sin);
-    // The disk's nearest point moves with its centre, however it rolls.
+    // The disk's arm reaches its nearest point, on its rim along the
+    // normal, so the push passes through its centre and friction turns it
+    // by its radius. (The arm as prepared ran to the face, as long as the
+    // gap then: friction spun a disk the bar struck 10 times too fast.)
     const Vec2 ahead = 0.5 * h * ((t.face_on_a ? b : a).v - face.v);
-    p.r_a = t.face_on_a ? apart + arm_a + ahead : arm_a;
-    p.r_b = t.face_on_a ? arm_b : arm_b - apart + ahead;
+    const double radius = bodies_[t.face_on_a ? p.b : p.a].radius();
+    const Vec2 disk_arm = (t.face_on_a ? -radius : radius) * p.normal;
+    const Vec2 centres_now = centres + b.moved - a.moved;
+    p.r_a = t.face_on_a ? centres_now + disk_arm + ahead : disk_arm;
+    p.r_b = t.face_on_a ? disk_arm : disk_arm - centres_now + ahead;
     prepare_masses(p, p.restitution);
   }
   // The gap and the slip the point verbs read from the anchors' offset are

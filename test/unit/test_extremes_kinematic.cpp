@@ -226,6 +226,7 @@ struct Sweep
   double deepest = 0.0;    ///< largest sinking below the face while on the bar (m)
   double nearest_middle = 1e300;  ///< least height of the centre above the bar's middle plane (m)
   double fastest = 0.0;    ///< largest speed (m/s)
+  double fastest_spin = 0.0;  ///< largest |omega| (rad/s)
   bool left = false;       ///< slid off the bar's end
 };
 
@@ -251,6 +252,7 @@ Sweep sweep(World& world, double omega, double mu)
     const double x = dot(c, along);
     const double height = dot(c, perp(along));  // above the middle plane, on the face's side
     out.fastest = std::max(out.fastest, length(world.body(disk_id).velocity()));
+    out.fastest_spin = std::max(out.fastest_spin, std::abs(world.body(disk_id).omega()));
     out.left = std::abs(x) > half + kDiskRadius;
     if (std::abs(x) <= half - kDiskRadius)
     {
@@ -300,6 +302,35 @@ TEST(ExtremesKinematic, SoftStepTurningBarKeepsASmallDiskAhead)
       std::printf("bar %g rad/s, mu %g:\n", omega, mu);
       expect_left_the_bar(out, omega, sinking_bound);
     }
+  }
+}
+
+// Only friction can spin the disk: the face's normal passes through its
+// centre. Friction is at most mu times the normal impulse J_n, so
+// I |omega| <= mu R J_n with I = m R^2 / 2. In the bar's frame the strike
+// gives the disk the face's speed omega x0, and sliding out by dx the face
+// pushes at most the Coriolis 2 m omega x' across it: J_n <= m omega (x0 +
+// 2 dx), and a tenth more for the spring's push-out of the strike's
+// overlap. Before, the disk's lever arm was the one prepared, as long as
+// the gap then (0.2 m, 20 radii) and half a substep's turn behind the
+// normal: the disk spun 14 to 200 times past this bound (a bar crushing a
+// disk in a corner spun it to 2500 rad/s).
+TEST(ExtremesKinematic, SoftStepTurningBarSpinsADiskOnlyByFriction)
+{
+  constexpr double kFaintFriction = 1e-3;
+  constexpr double kPushOut = 1.1;
+  const double slide = 0.5 * kBarLength + kDiskRadius - kDiskOnBar;
+  for (double omega : {5.0, 10.0, 20.0, 30.0, -20.0})
+  {
+    SCOPED_TRACE("bar at " + std::to_string(omega) + " rad/s");
+    World world = weightless_world(true);
+    const Sweep out = sweep(world, omega, kFaintFriction);
+    const double normal_impulse = kPushOut * std::abs(omega) * (kDiskOnBar + 2.0 * slide);  // per kg
+    const double spin_bound = 2.0 * kFaintFriction * normal_impulse / kDiskRadius;
+    std::printf("bar %g rad/s, mu %g:\n", omega, kFaintFriction);
+    test::print_figure("fastest spin of the disk (rad/s)", out.fastest_spin, spin_bound);
+    EXPECT_TRUE(out.left) << "the disk never slid off the bar";
+    EXPECT_LE(out.fastest_spin, spin_bound) << "spun faster than friction can";
   }
 }
 

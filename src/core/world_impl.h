@@ -205,15 +205,26 @@ struct WorldImpl : WorldMotion
     row.origin_theta_b = origin.theta_b;
     row.origin_known = origin.known;
   }
-  /// The point's origin as its published contact carries it.
+  /// The point's origin as its published contact carries it: its lever
+  /// arms to the detected point, without the soft step's reach_surfaces.
   static void publish_origin(const ContactPoint& row, ContactOrigin& origin)
   {
-    origin.r_a = row.r_a;
-    origin.r_b = row.r_b;
+    const double reach = surface_reach(row);
+    origin.r_a = reach > 0.0 ? row.r_a + reach * row.normal : row.r_a;
+    origin.r_b = reach > 0.0 ? row.r_b - reach * row.normal : row.r_b;
     origin.separation = row.origin_separation;
     origin.theta_a = row.origin_theta_a;
     origin.theta_b = row.origin_theta_b;
     origin.known = row.origin_known;
+  }
+  /// Soft step: how far a rough point's lever arms reach past the detected
+  /// point (midway across the gap) to each body's own surface (m): half the
+  /// gap where its manifold was detected; 0 for a touching or smooth point
+  /// (only friction rows read the difference).
+  static double surface_reach(const ContactPoint& row)
+  {
+    const double gap = row.origin_known ? row.origin_separation : row.separation;
+    return gap > 0.0 && (row.mu_s > 0.0 || row.mu_k > 0.0) ? 0.5 * gap : 0.0;
   }
   /// Whether pair k's manifold was kept (its points are contacts_ from kept_from_[k]).
   bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }
@@ -249,7 +260,8 @@ struct WorldImpl : WorldMotion
   void store_velocities();
   void prepare_points(const ActiveEffects& effects);
   /// prepare_points on points [begin, end) (whole pairs); without
-  /// `targets` (the soft step aims each substep) no Newton target is set.
+  /// `targets` (the soft step aims each substep) no Newton target is set,
+  /// and a point's lever arms reach each body's surface (surface_reach).
   void prepare_point_range(const ActiveEffects& effects, std::size_t begin, std::size_t end, bool targets = true);
   void warm_start();
   void solve_velocities(bool friction);

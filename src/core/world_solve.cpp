@@ -60,6 +60,16 @@ void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t be
     const bool rough = p.mu_s > 0.0 || p.mu_k > 0.0;
     p.inv_inertia_a = effects.rotation && (rough || a.shape() == Shape::Polygon) ? a.inv_inertia() : 0.0;
     p.inv_inertia_b = effects.rotation && (rough || b.shape() == Shape::Polygon) ? b.inv_inertia() : 0.0;
+    // The soft step finds a contact as far ahead as its bodies can travel in
+    // the frame. Friction acts where they meet, so a gap's arms reach each
+    // body's surface, not the point midway (a disk striking rough ground
+    // from 1 m was turned by a 0.5 m arm). The normal rows do not change.
+    const double reach = targets ? 0.0 : surface_reach(p);
+    if (reach > 0.0)
+    {
+      p.r_a -= reach * p.normal;
+      p.r_b += reach * p.normal;
+    }
     const double e = effects.restitution ? std::min(ma.restitution, mb.restitution) : 0.0;
     if (targets)
     {

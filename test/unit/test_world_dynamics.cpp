@@ -207,6 +207,56 @@ TEST(WorldDynamics, BulletDoesNotTunnelThroughThinWall)
   EXPECT_GT(without.body(without.body_ids().back()).position().x - radius, wall_right);
 }
 
+// A disk strikes rough level ground (e = 0, mu = 0.5, no gravity). Every
+// impulse acts at its bottom point, so its angular momentum about that
+// point, I omega - m R v_x, keeps its value. In closed form (J_n = m |v_y|):
+// friction up to mu J_n either brings it to rolling, v_x = 2/3 of its speed
+// along the ground (a solid disk), or takes mu J_n off that speed and gives
+// it a spin of 2 mu J_n / (m R). The soft step finds the contact up to a
+// frame's travel ahead, its point midway across the gap; friction used to
+// act there, the arm as long as half that gap: at 30 m/s along and 60 m/s
+// down the disk kept 29.9 m/s (20 in closed form), spun 10 times as fast as
+// its friction impulse turns it by its radius, and slid on.
+// (The Fx2D order, its hashes pinned, keeps the midway point: at 3 m/s
+// along and 6 down its disk ends at 1.59 m/s, rolling faster than it moves.)
+TEST(WorldDynamics, DiskStrikingRoughGroundKeepsAngularMomentumAboutItsContact)
+{
+  constexpr double kRadius = 0.05;    // m
+  constexpr double kMu = 0.5;
+  constexpr double kFlight = 0.1;     // s before it meets the ground
+  constexpr double kTolerance = 1e-9;  // relative
+  const Material rough{0.0, kMu, kMu};
+  for (const Vec2 v : {Vec2{3.0, -6.0}, Vec2{30.0, -60.0}, Vec2{300.0, -600.0}, Vec2{30.0, -3.0}, Vec2{-20.0, -5.0}})
+  {
+    SCOPED_TRACE("disk at (" + std::to_string(v.x) + ", " + std::to_string(v.y) + ") m/s");
+    WorldSettings settings;
+    settings.gravity = {0.0, 0.0};
+    World world(settings);
+    world.add_body(scenes::make_static_box(1e4, 1.0, {0.0, -0.5}), rough);  // top face at y = 0
+    const BodyId id = world.add_body(Body(1.0, kRadius, {-kFlight * v.x, kRadius - kFlight * v.y}, v), rough);
+    const Body& disk = world.body(id);
+    const double m = disk.mass();
+    const auto about_contact = [&] { return disk.inertia() * disk.omega() - m * kRadius * disk.velocity().x; };
+    const double before = about_contact();
+    double worst = 0.0;
+    for (int f = 0; f < 20; ++f)
+    {
+      world.step();
+      worst = std::max(worst, std::abs(about_contact() - before));
+    }
+    const double friction = kMu * m * std::abs(v.y);
+    const bool rolls = friction >= m * std::abs(v.x) / 3.0;
+    const double along = rolls ? 2.0 / 3.0 * v.x : v.x - std::copysign(friction / m, v.x);
+    const double rim = rolls ? -along : -std::copysign(2.0 * friction / m, v.x);  // omega R
+    std::printf("disk at (%g, %g) m/s: angular momentum about the contact, change / before %.3g (bound %.0e)\n", v.x,
+                v.y, worst / std::abs(before), kTolerance);
+    EXPECT_LE(worst, kTolerance * std::abs(before)) << "friction acted away from the disk's rim";
+    EXPECT_NEAR(disk.velocity().x, along, kTolerance * std::abs(v.x));
+    EXPECT_NEAR(disk.omega() * kRadius, rim, kTolerance * std::abs(v.x));
+    EXPECT_NEAR(disk.velocity().y, 0.0, kTolerance * std::abs(v.y));
+  }
+}
+
 TEST(WorldDynamics, FreeBodiesCentreOfMassMovesWithTheirMomentumWithTimeOfImpactOn)
 {
   // Free bodies without gravity: contacts exchange momentum in pairs, so the

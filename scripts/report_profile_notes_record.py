@@ -238,4 +238,23 @@ body a moving kinematic body touches against the static bodies (one world
 of 9000 fixed, no test either); holding the pushing contacts that cannot
 bounce whenever a contact bounces, not only when one is let go (blowups
 in the mixed worlds 8 -> 19).
+Lever arms across a gap (commits 1e893fc and 5088768; scratch drivers
+and the stress driver, not committed). The soft step finds a contact up to
+a frame's travel ahead, and its lever arms ran to the point midway across
+the gap for the whole frame. Friction then acted that far beyond the
+surfaces: a 5 cm disk striking rough ground (mu 0.5) at 30 m/s along and
+60 m/s down, found 1 m ahead, kept 29.87 m/s and spun at 54.8 rad/s, ten
+times what its friction impulse gives at its radius, where a rigid disk
+rolls away at 20 m/s and 400 rad/s. A rough point's arms now reach each
+body's surface by half the gap it was detected across; the normal rows do
+not change. Instructions of 30 frames of the base-20 pyramid after 60
+(callgrind): 74.41 -> 74.75 million (+0.45%, the check in preparing and
+publishing the points), the same trajectories. The turning-face fault of
+the note before was the same arm: kept from prepare, it ran to the face
+across the gap (0.2 m for a 1 cm disk the bar struck), and the lead only
+added to it; a test built from scratch now shows it (a disk on a bar at
+5 to 30 rad/s with mu 1e-3 spun 14 to 200 times past mu R J_n / I).
+Random crowded worlds, before -> after both: mixed settings blowups 8 ->
+10; exact mode with a bar 28 -> 19; iterative with a bar, through the
+ground 1 -> 1, blowups 1 -> 2: chaos moves them both ways.
 """

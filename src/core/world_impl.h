@@ -206,7 +206,7 @@ struct WorldImpl : WorldMotion
     row.origin_known = origin.known;
   }
   /// The point's origin as its published contact carries it: its lever
-  /// arms to the detected point, without the soft step's reach_surfaces.
+  /// arms to the detected point, less the soft step's surface_reach.
   static void publish_origin(const ContactPoint& row, ContactOrigin& origin)
   {
     const double reach = surface_reach(row);

@@ -117,7 +117,8 @@ void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool a
     // The disk's arm reaches its nearest point, on its rim along the
     // normal, so the push passes through its centre and friction turns it
     // by its radius. (The arm as prepared ran to the face, as long as the
-    // gap then: friction spun a disk the bar struck 10 times too fast.)
+    // gap then: a disk the bar struck spun up to 200 times faster than
+    // its friction can turn it.)
     const Vec2 ahead = 0.5 * h * ((t.face_on_a ? b : a).v - face.v);
     const double radius = bodies_[t.face_on_a ? p.b : p.a].radius();
     const Vec2 disk_arm = (t.face_on_a ? -radius : radius) * p.normal;

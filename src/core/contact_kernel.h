@@ -296,6 +296,8 @@ bool solve_stick_block(ContactPoint& first, ContactPoint& second, std::vector<Bo
 double coulomb(ContactPoint& p, double needed, double normal_impulse);
 /// The friction coefficient of the point's cone in its current state.
 inline double cone(const ContactPoint& p) { return p.kinetic ? p.mu_k : p.mu_s; }
+/// Whether the point has friction at all (either coefficient above 0).
+inline bool has_friction(const ContactPoint& p) { return p.mu_s > 0.0 || p.mu_k > 0.0; }
 
 /// Off-diagonal of a manifold's normal block: normal speed at one point per
 /// unit normal impulse at the other (1/kg).

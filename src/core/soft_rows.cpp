@@ -97,7 +97,7 @@ void fill_common(Batch& r, int j, const ContactPoint& p, bool friction, const Co
   r.mass_scale[j] = spring.mass_scale;
   r.mu_s[j] = p.mu_s;
   r.mu_k[j] = p.mu_k;
-  r.flags.rough[j] = friction && (p.mu_s > 0.0 || p.mu_k > 0.0) ? 1 : 0;
+  r.flags.rough[j] = friction && has_friction(p) ? 1 : 0;
 }
 
 /// Point `at` of lane j's manifold.

@@ -224,7 +224,7 @@ struct WorldImpl : WorldMotion
   static double surface_reach(const ContactPoint& row)
   {
     const double gap = row.origin_known ? row.origin_separation : row.separation;
-    return gap > 0.0 && (row.mu_s > 0.0 || row.mu_k > 0.0) ? 0.5 * gap : 0.0;
+    return gap > 0.0 && has_friction(row) ? 0.5 * gap : 0.0;
   }
   /// Whether pair k's manifold was kept (its points are contacts_ from kept_from_[k]).
   bool kept(std::size_t k) const { return kept_from_[k] != kNotKept; }

@@ -105,7 +105,7 @@ void WorldImpl::solve_soft_manifold(std::size_t k, const StepContext& ctx, bool 
   {
     return;
   }
-  const bool rough = ctx.effects.friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
+  const bool rough = ctx.effects.friction && has_friction(p);
   const double push = settings_.contact_push_speed;
   // The anchors' offset gives both the gap and the slip; the passes move no
   // body, so it is read once per point (as the rows read it).

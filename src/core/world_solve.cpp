@@ -57,7 +57,7 @@ void WorldImpl::prepare_point_range(const ActiveEffects& effects, std::size_t be
     // contact normal passes through its centre, so without friction it cannot
     // turn either; dropping its inertia there keeps the round-off of the lever
     // arm from spinning it.
-    const bool rough = p.mu_s > 0.0 || p.mu_k > 0.0;
+    const bool rough = has_friction(p);
     p.inv_inertia_a = effects.rotation && (rough || a.shape() == Shape::Polygon) ? a.inv_inertia() : 0.0;
     p.inv_inertia_b = effects.rotation && (rough || b.shape() == Shape::Polygon) ? b.inv_inertia() : 0.0;
     // The soft step finds a contact as far ahead as its bodies can travel in
@@ -120,7 +120,7 @@ void WorldImpl::solve_velocities(bool friction)
       {
         return;
       }
-      const bool rough = friction && (p.mu_s > 0.0 || p.mu_k > 0.0);
+      const bool rough = friction && has_friction(p);
       if (p.count == 2)
       {
         ContactPoint& q = points_[k + 1];

@@ -125,6 +125,8 @@ struct WorldImpl : WorldMotion
                               bool as_prepared);
   __attribute__((noinline, cold)) void list_round_points();
   __attribute__((noinline, cold)) void follow_round_points(double h, bool as_prepared);
+  __attribute__((noinline, cold)) void aim_round_bounces(double h);
+  RoundPlace round_place(const RoundPoint& r) const;
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();

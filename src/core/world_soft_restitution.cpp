@@ -44,6 +44,16 @@ void WorldImpl::find_bounce_points()
     bounce.impulses = point_impulses(k);
     bounce_points_.push_back(bounce);
   }
+  // Each substep's bouncing and released points are some of these: room for
+  // all of them, so a warmed-up world allocates nothing.
+  if (bouncing_.capacity() < bounce_points_.size())
+  {
+    bouncing_.reserve(bounce_points_.capacity());
+  }
+  if (released_.capacity() < bounce_points_.size())
+  {
+    released_.reserve(bounce_points_.capacity());
+  }
 }
 
 ImpulseSlots WorldImpl::point_impulses(std::size_t k)

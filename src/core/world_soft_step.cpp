@@ -14,7 +14,7 @@
 // Two kinds of contact follow their geometry before each pass instead: a disk
 // on the face of a turning kinematic body (world_turning_faces.cpp), and a
 // disk and a vertex or another disk whose centres slide past each other
-// (world_round_points.cpp).
+// (world_round_points.cpp; one that can bounce is aimed once a substep).
 // Static friction holds position, not only velocity: a sticking point
 // remembers how far it has slipped since it stuck (across frames, with its
 // impulses) and its friction pulls that back at the contact's rate, so a stack
@@ -54,6 +54,10 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
   for (int k = 0; k < settings_.substeps; ++k)
   {
     const bool last = k + 1 == settings_.substeps;
+    if (!round_points_.empty())
+    {
+      aim_round_bounces(ctx.h);                           // world_round_points.cpp
+    }
     aim_bounces();
     integrate_velocities(ctx, k == 0);                    // world_soft_bodies.cpp
     solve_contacts(ctx, true, report);
@@ -89,8 +93,7 @@ void WorldImpl::soft_frame(StepContext& ctx, StepReport& report)
 }
 
 /// After prepare, before the rows are packed. Inline: most frames have
-/// neither, by the census (counted at each edit, census_for_frame); a
-/// pair bounces, and is not followed, unless one of its bodies does not.
+/// neither, by the census (counted at each edit, census_for_frame).
 inline void WorldImpl::find_followed_points()
 {
   turning_faces_.clear();
@@ -99,7 +102,7 @@ inline void WorldImpl::find_followed_points()
   {
     list_turning_faces();
   }
-  if (census_.disks > 0 && census_.bouncy < bodies_.size())
+  if (census_.disks > 0)
   {
     list_round_points();
   }

@@ -113,6 +113,17 @@ struct RoundPoint
   double radius_b = 0.0;
 };
 
+/// Where a RoundPoint's centres of curvature are during a pass.
+struct RoundPlace
+{
+  Vec2 arm_a;         ///< from each body's centre to its centre of curvature now (m)
+  Vec2 arm_b;
+  Vec2 apart;         ///< b's centre of curvature less a's (m)
+  double reach = 0.0; ///< |apart| (m)
+  double gap = 0.0;   ///< reach less the radii (m)
+  Vec2 slide;         ///< b's centre of curvature's velocity less a's (m/s)
+};
+
 /// Bodies below which a per-body stage stays on the calling thread: each
 /// body's update is a few operations, less than waking the workers costs.
 constexpr std::size_t kMinSharedBodies = 2048;

@@ -124,6 +124,7 @@ struct WorldImpl : WorldMotion
   void follow_nearest_feature(const TurningFacePoint& t, const DiskFeature& nearest, double slip, double h,
                               bool as_prepared);
   __attribute__((noinline, cold)) void list_round_points();
+  bool round_point_followed(const ContactPoint& p, Vec2 slide, double reach) const;
   __attribute__((noinline, cold)) void follow_round_points(double h, bool as_prepared);
   __attribute__((noinline, cold)) void aim_round_bounces(double h);
   RoundPlace round_place(const RoundPoint& r) const;

@@ -61,15 +61,32 @@ double touch_time(Vec2 apart, Vec2 slide, double radius, double h)
   return std::clamp(t, 0.0, h);
 }
 
+/// Whether round point p, whose centres of curvature are `reach` apart and
+/// slide at `slide`, is followed this frame (round_points_).
+bool WorldImpl::round_point_followed(const ContactPoint& p, Vec2 slide, double reach) const
+{
+  const double frame = settings_.dt;
+  const double across = dot(slide, perp(p.normal)) * frame;
+  if (p.restitution <= 0.0)
+  {
+    return std::abs(across) > kRoundSlideFraction * reach;
+  }
+  // A bouncing pair whose approach cannot close its gap in twice the frame
+  // meets only if another contact sends one of them its way: it keeps its
+  // row (most of a gas's contacts, found a frame ahead).
+  const double closing = std::max(0.0, -dot(slide, p.normal)) + std::max(0.0, closing_gravity(p)) * frame;
+  return std::abs(across) > kBounceSlideFraction * reach && 2.0 * closing * frame >= p.separation;
+}
+
 /// Round contacts whose centres slide past each other by more than
-/// kRoundSlideFraction of their distance in a frame (the straight gap would err).
+/// kRoundSlideFraction of their distance in a frame (the straight gap would
+/// err), and those that can bounce and may meet this frame.
 void WorldImpl::list_round_points()
 {
   if (round_points_.capacity() < points_.size())
   {
     round_points_.reserve(2 * points_.size());  // room to grow: a warmed-up world allocates nothing
   }
-  const double frame = settings_.dt;
   for (std::size_t k = 0; k < points_.size(); ++k)
   {
     const ContactPoint& p = points_[k];
@@ -99,17 +116,7 @@ void WorldImpl::list_round_points()
     const BodyVelocity& va = velocity_[p.a];
     const BodyVelocity& vb = velocity_[p.b];
     const Vec2 slide = (vb.v + cross(vb.omega, arm_b)) - (va.v + cross(va.omega, arm_a));
-    const double across = dot(slide, perp(p.normal)) * frame;
-    const double fraction = p.restitution > 0.0 ? kBounceSlideFraction : kRoundSlideFraction;
-    if (std::abs(across) <= fraction * reach)
-    {
-      continue;
-    }
-    // A bouncing pair whose approach cannot close its gap in twice the frame
-    // meets only if another contact sends one of them its way: it keeps its
-    // row (most of a gas's contacts, found a frame ahead).
-    const double closing = std::max(0.0, -dot(slide, p.normal)) + std::max(0.0, closing_gravity(p)) * frame;
-    if (p.restitution > 0.0 && 2.0 * closing * frame < p.separation)
+    if (!round_point_followed(p, slide, reach))
     {
       continue;
     }

@@ -161,6 +161,16 @@ double round_speculative_gap(const ContactPoint& p, const RoundPoint& r, const R
   return place.gap;
 }
 
+/// Puts p back on the normal and lever arms it was prepared with; returns its
+/// slip along the tangent of prepare, which friction goes on reading (m).
+double back_to_prepared(ContactPoint& p, const RoundPoint& r, const std::vector<BodyVelocity>& velocity)
+{
+  p.normal = r.normal;
+  p.r_a = r.r_a;
+  p.r_b = r.r_b;
+  return slip_at(p, anchor_offset(p, velocity));
+}
+
 /// Pushes p along `normal` from the middle of the gap between the surfaces.
 void aim_round_point(ContactPoint& p, const RoundPoint& r, const RoundPlace& place, Vec2 normal)
 {
@@ -180,21 +190,19 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
   for (const RoundPoint& r : round_points_)
   {
     ContactPoint& p = points_[r.point];
-    const ContactPoint aimed = p;
+    const Vec2 aimed_normal = p.normal;
+    const Vec2 aimed_r_a = p.r_a;
+    const Vec2 aimed_r_b = p.r_b;
     const RoundPlace place = round_place(r);
-    // The slip along the tangent of prepare, which friction goes on reading.
-    p.normal = r.normal;
-    p.r_a = r.r_a;
-    p.r_b = r.r_b;
-    const double slip = slip_at(p, anchor_offset(p, velocity_));
+    const double slip = back_to_prepared(p, r, velocity_);
     double speculative = place.gap;
     if (!as_prepared && place.reach > 0.0)
     {
       if (p.restitution > 0.0)
       {
-        p.normal = aimed.normal;  // and its lever arms: one row all substep
-        p.r_a = aimed.r_a;
-        p.r_b = aimed.r_b;
+        p.normal = aimed_normal;  // and its lever arms: one row all substep
+        p.r_a = aimed_r_a;
+        p.r_b = aimed_r_b;
       }
       else
       {
@@ -243,10 +251,7 @@ void WorldImpl::aim_round_bounces(double h)
     {
       continue;
     }
-    p.normal = r.normal;
-    p.r_a = r.r_a;
-    p.r_b = r.r_b;
-    const double slip = slip_at(p, anchor_offset(p, velocity_));
+    const double slip = back_to_prepared(p, r, velocity_);
     // The lever arms reach the surfaces where that line puts them, so
     // friction acts at one point of both bodies too.
     RoundPlace along = place;

@@ -171,12 +171,12 @@ double back_to_prepared(ContactPoint& p, const RoundPoint& r, const std::vector<
   return slip_at(p, anchor_offset(p, velocity));
 }
 
-/// Pushes p along `normal` from the middle of the gap between the surfaces.
-void aim_round_point(ContactPoint& p, const RoundPoint& r, const RoundPlace& place, Vec2 normal)
+/// Pushes p along `normal` from the middle of a gap of `gap` (m) between the surfaces.
+void aim_round_point(ContactPoint& p, const RoundPoint& r, const RoundPlace& place, Vec2 normal, double gap)
 {
   p.normal = normal;
-  p.r_a = place.arm_a + (r.radius_a + 0.5 * place.gap) * normal;
-  p.r_b = place.arm_b - (r.radius_b + 0.5 * place.gap) * normal;
+  p.r_a = place.arm_a + (r.radius_a + 0.5 * gap) * normal;
+  p.r_b = place.arm_b - (r.radius_b + 0.5 * gap) * normal;
   prepare_masses(p, p.restitution);
 }
 }  // namespace
@@ -206,7 +206,7 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
       }
       else
       {
-        aim_round_point(p, r, place, place.apart / place.reach);
+        aim_round_point(p, r, place, place.apart / place.reach, place.gap);
         speculative = round_speculative_gap(p, r, place, h);
       }
     }
@@ -254,9 +254,7 @@ void WorldImpl::aim_round_bounces(double h)
     const double slip = back_to_prepared(p, r, velocity_);
     // The lever arms reach the surfaces where that line puts them, so
     // friction acts at one point of both bodies too.
-    RoundPlace along = place;
-    along.gap = turned - (r.radius_a + r.radius_b);
-    aim_round_point(p, r, along, line / turned);
+    aim_round_point(p, r, place, line / turned, turned - (r.radius_a + r.radius_b));
     set_followed(p, anchor_offset(p, velocity_), place.gap, r.anchor_drift + slip);
   }
 }

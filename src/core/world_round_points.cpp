@@ -38,6 +38,11 @@ constexpr double kRoundSlideFraction = 0.01;
 /// other by more than this fraction of their distance in a frame: a head-on
 /// meeting (no slide but round-off) keeps its normal and its bits.
 constexpr double kBounceSlideFraction = 1e-12;
+/// A point that can bounce is aimed in a substep only while its centres
+/// slide past each other by at most this fraction of their distance in it:
+/// farther, the relax at the substep's end finds them apart and undoes the
+/// stop, and the pair passes through (a disk past a plank's end at 51 m/s).
+constexpr double kBounceAimSlide = 0.25;
 
 bool round_kind(std::uint32_t feature)
 {
@@ -120,8 +125,8 @@ void WorldImpl::list_round_points()
     {
       continue;
     }
-    round_points_.push_back(
-        RoundPoint{k, p.normal, p.r_a, p.r_b, p.anchor_drift, arm_a, arm_b, reach, radius_a, radius_b});
+    round_points_.push_back(RoundPoint{k, p.normal, p.r_a, p.r_b, p.anchor_drift, p.base_separation, arm_a, arm_b,
+                                       reach, radius_a, radius_b});
     if (rows_on())
     {
       soft_rows_.keep_on_point_verbs(k);
@@ -171,6 +176,16 @@ double back_to_prepared(ContactPoint& p, const RoundPoint& r, const std::vector<
   return slip_at(p, anchor_offset(p, velocity));
 }
 
+/// Puts p back on the row it was prepared with: its normal, lever arms,
+/// masses and the straight gap along that normal.
+void keep_prepared_row(ContactPoint& p, const RoundPoint& r, const std::vector<BodyVelocity>& velocity)
+{
+  back_to_prepared(p, r, velocity);
+  prepare_masses(p, p.restitution);
+  p.base_separation = r.base_separation;
+  p.anchor_drift = r.anchor_drift;
+}
+
 /// Pushes p along `normal` from the middle of a gap of `gap` (m) between the surfaces.
 void aim_round_point(ContactPoint& p, const RoundPoint& r, const RoundPlace& place, Vec2 normal, double gap)
 {
@@ -194,6 +209,11 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
     const Vec2 aimed_r_a = p.r_a;
     const Vec2 aimed_r_b = p.r_b;
     const RoundPlace place = round_place(r);
+    if (!as_prepared && p.restitution > 0.0 && !r.aimed)
+    {
+      keep_prepared_row(p, r, velocity_);
+      continue;
+    }
     const double slip = back_to_prepared(p, r, velocity_);
     double speculative = place.gap;
     if (!as_prepared && place.reach > 0.0)
@@ -223,15 +243,22 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
 /// times its stop, so the line e / (1 + e) of the way along).
 void WorldImpl::aim_round_bounces(double h)
 {
-  for (const RoundPoint& r : round_points_)
+  for (RoundPoint& r : round_points_)
   {
     ContactPoint& p = points_[r.point];
     const RoundPlace place = round_place(r);
+    r.aimed = false;
     if (p.restitution <= 0.0 || !(place.reach > 0.0))
     {
       continue;
     }
     const Vec2 now = place.apart / place.reach;
+    const Vec2 across = place.slide - dot(place.slide, now) * now;
+    if (length(across) * h > kBounceAimSlide * place.reach)
+    {
+      keep_prepared_row(p, r, velocity_);
+      continue;
+    }
     const double approach = -dot(place.slide, now);
     const double stop = std::max(0.0, approach - std::max(place.gap, 0.0) / h);
     // It rebounds only if the substep pushes it: its passes if it closes
@@ -244,7 +271,6 @@ void WorldImpl::aim_round_bounces(double h)
     // rebound, weighted by the two: in the substep the pair slides on and
     // closes by at most its gap.
     const double closes = std::min(std::max(approach, 0.0) * h, std::max(place.gap, 0.0));
-    const Vec2 across = place.slide - dot(place.slide, now) * now;
     const Vec2 line = place.apart + share * (h * across - closes * now);
     const double turned = length(line);
     if (!(turned > 0.0))
@@ -256,6 +282,7 @@ void WorldImpl::aim_round_bounces(double h)
     // friction acts at one point of both bodies too.
     aim_round_point(p, r, place, line / turned, turned - (r.radius_a + r.radius_b));
     set_followed(p, anchor_offset(p, velocity_), place.gap, r.anchor_drift + slip);
+    r.aimed = true;
   }
 }
 

@@ -106,11 +106,15 @@ struct RoundPoint
   Vec2 r_a;             ///< as prepared: lever arms (m)
   Vec2 r_b;
   double anchor_drift = 0.0;  ///< as prepared: slip since it stuck (m)
+  double base_separation = 0.0;  ///< as prepared: its gap less the anchors' offset along its normal (m)
   Vec2 arm_a;           ///< from each body's centre to its centre of curvature (m): 0 for a disk
   Vec2 arm_b;
   double reach = 0.0;   ///< the centres' distance at prepare (m)
   double radius_a = 0.0;  ///< a disk's radius, 0 for a vertex (m)
   double radius_b = 0.0;
+  /// A point that can bounce: whether this substep's aim turned it (else it
+  /// keeps its prepared row, and the straight gap along it, this substep).
+  bool aimed = false;
 };
 
 /// Where a RoundPoint's centres of curvature are during a pass.

@@ -281,5 +281,54 @@ TEST(WorldRoundContacts, GlancingDisksBounceAlongTheLineBetweenTheirCentres)
         }
 }
 
+// A 2.2 kg disk (r = 0.29 m) meets the end of a thin 119 kg plank (4.9 cm x
+// 1.11 m) turning at 10.8 rad/s, 51 m/s across each other, as a random
+// stress world left them: touching at the plank's corner, approaching along
+// the line between the disk's centre and the corner at 36 m/s and sliding
+// across it at 42 m/s. Aimed along the line it would have at the substep's
+// end, the bounce turned so far that the pair no longer met, and the disk
+// passed through the plank. Checked without gravity over the first frame:
+// momentum kept, no kinetic energy gained, and the corner and the disk
+// moving apart along the line of first touch.
+TEST(WorldRoundContacts, ADiskBouncingOffAPlanksCornerAtSpeedDoesNotPassThrough)
+{
+  const Vec2 disk_at{2.2595156240818159, 2.0987088395999476};
+  const Vec2 corner_at{2.4630, 2.3141};  // the plank's corner at first touch (m)
+  for (const int substeps : {1, 2, 4})
+  {
+    SCOPED_TRACE(std::to_string(substeps) + " substeps");
+    WorldSettings s = settings(substeps);
+    s.gravity = Vec2{0.0, 0.0};
+    World world(s);
+    const BodyId disk = world.add_body(Body(2.2138918355067485, 0.29350498749155302, disk_at,
+                                            {23.261904208130666, -8.3310112448981215}, -14.215929078434598),
+                                       Material{0.96116, 0.27509, 0.14103});
+    const double half_width = 0.024416134190390248;  // m
+    const double half_length = 0.55546276298348163;  // m
+    const BodyId plank = world.add_body(
+        Body(118.73649859816969,
+             {{-half_width, -half_length}, {half_width, -half_length}, {half_width, half_length},
+              {-half_width, half_length}},
+             {2.8877814252302176, 2.6769911090396472}, {-27.901645273170676, -9.6103383847779398},
+             2.2333144004838852, -10.829486976163434),
+        Material{0.91875, 0.55635, 0.42577});
+    const Body d0 = world.body(disk);
+    const Body p0 = world.body(plank);
+    const Vec2 n = (corner_at - disk_at) / length(corner_at - disk_at);  // from the disk to the corner
+    const Vec2 arm = corner_at - p0.position();
+    const double approach = dot(p0.velocity() + cross(p0.omega(), arm) - d0.velocity(), n);
+    ASSERT_LT(approach, -30.0);  // closing fast
+    world.step();
+    const Body& d1 = world.body(disk);
+    const Body& p1 = world.body(plank);
+    const Vec2 momentum = d1.mass() * d1.velocity() + p1.mass() * p1.velocity();
+    const Vec2 momentum0 = d0.mass() * d0.velocity() + p0.mass() * p0.velocity();
+    EXPECT_LE(length(momentum - momentum0), 1e-9 * length(momentum0));
+    EXPECT_LE(d1.kinetic_energy() + p1.kinetic_energy(), d0.kinetic_energy() + p0.kinetic_energy());
+    const double after = dot(p1.velocity() + cross(p1.omega(), arm) - d1.velocity(), n);
+    EXPECT_GE(after, 0.0) << "the corner still closes on the disk at " << -after << " m/s: it passed through";
+  }
+}
+
 }  // namespace
 }  // namespace collision2d

@@ -128,6 +128,7 @@ struct WorldImpl : WorldMotion
   __attribute__((noinline, cold)) void follow_round_points(double h, bool as_prepared);
   __attribute__((noinline, cold)) void aim_round_bounces(double h);
   RoundPlace round_place(const RoundPoint& r) const;
+  void to_nearest_feature(const ContactPoint& p, const RoundPoint& r, RoundPlace& place) const;
   // world_soft_restitution.cpp: restitution, substep by substep.
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();

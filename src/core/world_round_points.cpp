@@ -7,8 +7,9 @@
 // squared over twice their distance, which the straight line misses: a
 // corner sliding over a round peg reads as sinking into it and is thrown
 // up. These points follow their gap exactly instead, as the distance between
-// the centres less the radii. They stay on the kernel's point verbs, so no
-// other contact pays for them.
+// the centres less the radii; a disk that slides off its vertex follows the
+// polygon's feature nearest it (iterative mode). They stay on the kernel's
+// point verbs, so no other contact pays for them.
 // A point that can bounce pushes along the line between the centres too, or
 // the pair's angular momentum changes by the impulse times the line's turn
 // (two glancing disks lost up to 88% of theirs). Its normal is aimed once a
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "collide_features.h"
 #include "world_impl.h"
@@ -147,8 +149,52 @@ RoundPlace WorldImpl::round_place(const RoundPoint& r) const
   place.apart = r.reach * r.normal + (b.moved + place.arm_b - r.arm_b) - (a.moved + place.arm_a - r.arm_a);
   place.reach = length(place.apart);
   place.gap = place.reach - (r.radius_a + r.radius_b);
+  if ((r.radius_a == 0.0 || r.radius_b == 0.0) && settings_.solver_mode != SolverMode::Exact)
+  {
+    to_nearest_feature(p, r, place);
+  }
   place.slide = (b.v + cross(b.omega, place.arm_b)) - (a.v + cross(a.omega, place.arm_a));
   return place;
+}
+
+/// A disk on a polygon's vertex may slide past it within a frame onto a
+/// face, or on past the face's far vertex; the vertex's gap would then read
+/// the distance to the corner while the disk closes on the polygon (a disk
+/// skimming over a box's corner sank 20 mm into its top face). The place
+/// follows the polygon's feature nearest the disk's centre now: the
+/// polygon's centre of curvature becomes that feature's closest point, and
+/// the line to the disk's centre runs along its normal. The exact mode
+/// keeps the vertex: with the nearest feature its island solve blew up more
+/// random worlds with a kinematic bar.
+void WorldImpl::to_nearest_feature(const ContactPoint& p, const RoundPoint& r, RoundPlace& place) const
+{
+  const bool polygon_first = r.radius_a == 0.0;
+  const std::size_t polygon = polygon_first ? p.a : p.b;
+  const std::size_t disk = polygon_first ? p.b : p.a;
+  const double radius = polygon_first ? r.radius_b : r.radius_a;
+  const Body& body = bodies_[polygon];  // posed as prepared until the frame's end
+  const BodyVelocity& turn = velocity_[polygon];
+  const Vec2 centre = prepared_position_[disk] + velocity_[disk].moved - (prepared_position_[polygon] + turn.moved);
+  const Vec2 local =
+      rotate_inv(rotate_inv(centre, turn.turned_cos, turn.turned_sin), body.cos_theta(), body.sin_theta());
+  DiskFeature nearest;
+  nearest_feature_to_disk(body, local, radius, std::numeric_limits<double>::infinity(), nearest);
+  const double distance = radius - nearest.depth;
+  const bool same_vertex =
+      nearest.kind == FeatureKind::PolygonVertexDisk && nearest.index == reference_index(p.feature);
+  if (same_vertex || !(distance > 0.0))
+  {
+    return;  // the vertex stands (or the disk's centre is inside the polygon)
+  }
+  const Vec2 normal =
+      rotate(rotate(nearest.normal, body.cos_theta(), body.sin_theta()), turn.turned_cos, turn.turned_sin);
+  const Vec2 closest =
+      rotate(rotate(nearest.closest, body.cos_theta(), body.sin_theta()), turn.turned_cos, turn.turned_sin);
+  (polygon_first ? place.arm_a : place.arm_b) = closest;
+  place.apart = (polygon_first ? distance : -distance) * normal;
+  place.reach = distance;
+  place.gap = distance - radius;
+  place.on_face = nearest.kind == FeatureKind::PolygonFaceDisk;
 }
 
 namespace
@@ -227,7 +273,7 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
       else
       {
         aim_round_point(p, r, place, place.apart / place.reach, place.gap);
-        speculative = round_speculative_gap(p, r, place, h);
+        speculative = place.on_face ? place.gap : round_speculative_gap(p, r, place, h);
       }
     }
     set_followed(p, anchor_offset(p, velocity_), speculative, r.anchor_drift + slip);
@@ -253,6 +299,16 @@ void WorldImpl::aim_round_bounces(double h)
       continue;
     }
     const Vec2 now = place.apart / place.reach;
+    if (place.on_face)
+    {
+      // Slid off its vertex onto a face: it bounces along the face's normal,
+      // which the slide does not turn.
+      const double slip = back_to_prepared(p, r, velocity_);
+      aim_round_point(p, r, place, now, place.gap);
+      set_followed(p, anchor_offset(p, velocity_), place.gap, r.anchor_drift + slip);
+      r.aimed = true;
+      continue;
+    }
     const Vec2 across = place.slide - dot(place.slide, now) * now;
     if (length(across) * h > kBounceAimSlide * place.reach)
     {

@@ -126,6 +126,7 @@ struct RoundPlace
   double reach = 0.0; ///< |apart| (m)
   double gap = 0.0;   ///< reach less the radii (m)
   Vec2 slide;         ///< b's centre of curvature's velocity less a's (m/s)
+  bool on_face = false;  ///< a disk that slid off its vertex onto a face of the polygon
 };
 
 /// Bodies below which a per-body stage stays on the calling thread: each

@@ -240,6 +240,17 @@ void aim_round_point(ContactPoint& p, const RoundPoint& r, const RoundPlace& pla
   p.r_b = place.arm_b - (r.radius_b + 0.5 * gap) * normal;
   prepare_masses(p, p.restitution);
 }
+
+/// Aims bouncing point p along `normal` for a substep (aim_round_point),
+/// its gap followed from `place` along it.
+void aim_for_substep(ContactPoint& p, RoundPoint& r, const RoundPlace& place, Vec2 normal, double gap,
+                     const std::vector<BodyVelocity>& velocity)
+{
+  const double slip = back_to_prepared(p, r, velocity);
+  aim_round_point(p, r, place, normal, gap);
+  set_followed(p, anchor_offset(p, velocity), place.gap, r.anchor_drift + slip);
+  r.aimed = true;
+}
 }  // namespace
 
 /// Round contacts: their normals along the line between their centres now
@@ -303,10 +314,7 @@ void WorldImpl::aim_round_bounces(double h)
     {
       // Slid off its vertex onto a face: it bounces along the face's normal,
       // which the slide does not turn.
-      const double slip = back_to_prepared(p, r, velocity_);
-      aim_round_point(p, r, place, now, place.gap);
-      set_followed(p, anchor_offset(p, velocity_), place.gap, r.anchor_drift + slip);
-      r.aimed = true;
+      aim_for_substep(p, r, place, now, place.gap, velocity_);
       continue;
     }
     const Vec2 across = place.slide - dot(place.slide, now) * now;
@@ -333,12 +341,9 @@ void WorldImpl::aim_round_bounces(double h)
     {
       continue;
     }
-    const double slip = back_to_prepared(p, r, velocity_);
     // The lever arms reach the surfaces where that line puts them, so
     // friction acts at one point of both bodies too.
-    aim_round_point(p, r, place, line / turned, turned - (r.radius_a + r.radius_b));
-    set_followed(p, anchor_offset(p, velocity_), place.gap, r.anchor_drift + slip);
-    r.aimed = true;
+    aim_for_substep(p, r, place, line / turned, turned - (r.radius_a + r.radius_b), velocity_);
   }
 }
 

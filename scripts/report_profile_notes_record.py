@@ -335,8 +335,9 @@ where the disk clears the turning corner by 1 cm), where the parent's
 vertex gap gave 4.3 and then 0. Not fixed: a bouncing disk passing a
 corner at 20 m/s across (0.1 m disk, 4 substeps) is bounced as if the
 corner's prepared line were a wall though it clears the corner by 5 mm
-(vertical speed after 14 to 20 m/s instead of e times 1 to 6), as
-before. In the exact mode the nearest feature blew up 8 more of the 2000
+(vertical speed after 14 to 20 m/s instead of e times 1 to 6); before
+0c5d806 it was so at 1 and 3 m/s down, while at 6 m/s down it left the
+face at the right speed after sinking 20 mm into it. In the exact mode the nearest feature blew up 8 more of the 2000
 random worlds with a bar (27 against 19), so it keeps the vertex there.
 Random crowded worlds, 0ec36e3 -> 0c5d806 -> 3d6a039: mixed settings
 (9000 worlds) embedded 10 -> 10 -> 12 (the two new ones sink their

@@ -286,7 +286,8 @@ TEST(WorldRoundContacts, GlancingDisksBounceAlongTheLineBetweenTheirCentres)
 // stress world left them: touching at the plank's corner, approaching along
 // the line between the disk's centre and the corner at 36 m/s and sliding
 // across it at 42 m/s. Aimed along the line it would have at the substep's
-// end, the bounce turned so far that the pair no longer met, and the disk
+// end (0.7 m of slide away), the stop held along that normal, the relax
+// found the disk 0.45 m from the corner and took it back, and the disk
 // passed through the plank. Checked without gravity over the first frame:
 // momentum kept, no kinetic energy gained, and the corner and the disk
 // moving apart along the line of first touch.

@@ -121,6 +121,7 @@ struct WorldImpl : WorldMotion
   __attribute__((noinline, cold)) void follow_turning_points(double h, bool as_prepared);
   void follow_turning_point(const TurningFacePoint& t, double h, bool as_prepared);
   bool nearest_is_followed_face(const TurningFacePoint& t, DiskFeature& nearest) const;
+  DiskFeature nearest_feature_now(std::size_t polygon, std::size_t disk) const;
   void follow_nearest_feature(const TurningFacePoint& t, const DiskFeature& nearest, double slip, double h,
                               bool as_prepared);
   __attribute__((noinline, cold)) void list_round_points();

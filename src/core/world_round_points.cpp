@@ -20,7 +20,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "collide_features.h"
 #include "world_impl.h"
@@ -169,16 +168,8 @@ RoundPlace WorldImpl::round_place(const RoundPoint& r) const
 void WorldImpl::to_nearest_feature(const ContactPoint& p, const RoundPoint& r, RoundPlace& place) const
 {
   const bool polygon_first = r.radius_a == 0.0;
-  const std::size_t polygon = polygon_first ? p.a : p.b;
-  const std::size_t disk = polygon_first ? p.b : p.a;
   const double radius = polygon_first ? r.radius_b : r.radius_a;
-  const Body& body = bodies_[polygon];  // posed as prepared until the frame's end
-  const BodyVelocity& turn = velocity_[polygon];
-  const Vec2 centre = prepared_position_[disk] + velocity_[disk].moved - (prepared_position_[polygon] + turn.moved);
-  const Vec2 local =
-      rotate_inv(rotate_inv(centre, turn.turned_cos, turn.turned_sin), body.cos_theta(), body.sin_theta());
-  DiskFeature nearest;
-  nearest_feature_to_disk(body, local, radius, std::numeric_limits<double>::infinity(), nearest);
+  const DiskFeature nearest = polygon_first ? nearest_feature_now(p.a, p.b) : nearest_feature_now(p.b, p.a);
   const double distance = radius - nearest.depth;
   const bool same_vertex =
       nearest.kind == FeatureKind::PolygonVertexDisk && nearest.index == reference_index(p.feature);
@@ -186,12 +177,8 @@ void WorldImpl::to_nearest_feature(const ContactPoint& p, const RoundPoint& r, R
   {
     return;  // the vertex stands (or the disk's centre is inside the polygon)
   }
-  const Vec2 normal =
-      rotate(rotate(nearest.normal, body.cos_theta(), body.sin_theta()), turn.turned_cos, turn.turned_sin);
-  const Vec2 closest =
-      rotate(rotate(nearest.closest, body.cos_theta(), body.sin_theta()), turn.turned_cos, turn.turned_sin);
-  (polygon_first ? place.arm_a : place.arm_b) = closest;
-  place.apart = (polygon_first ? distance : -distance) * normal;
+  (polygon_first ? place.arm_a : place.arm_b) = nearest.closest;
+  place.apart = (polygon_first ? distance : -distance) * nearest.normal;
   place.reach = distance;
   place.gap = distance - radius;
   place.on_face = nearest.kind == FeatureKind::PolygonFaceDisk;

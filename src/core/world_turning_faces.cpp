@@ -138,17 +138,25 @@ void WorldImpl::follow_turning_point(const TurningFacePoint& t, double h, bool a
 bool WorldImpl::nearest_is_followed_face(const TurningFacePoint& t, DiskFeature& nearest) const
 {
   const ContactPoint& p = points_[t.point];
-  const std::size_t face = t.face_on_a ? p.a : p.b;
-  const std::size_t disk = t.face_on_a ? p.b : p.a;
-  const BodyVelocity& turn = velocity_[face];
-  const double prepared_cos = std::cos(prepared_theta_[face]);
-  const double prepared_sin = std::sin(prepared_theta_[face]);
-  const Vec2 centre = prepared_position_[disk] + velocity_[disk].moved - (prepared_position_[face] + turn.moved);
+  nearest = nearest_feature_now(t.face_on_a ? p.a : p.b, t.face_on_a ? p.b : p.a);
+  return nearest.kind == FeatureKind::PolygonFaceDisk && nearest.index == reference_index(p.feature);
+}
+
+/// The feature of the polygon nearest the disk's centre at the poses the
+/// substeps have moved them to (from prepare), its normal and closest point
+/// (from the polygon's centre) in the world's axes.
+DiskFeature WorldImpl::nearest_feature_now(std::size_t polygon, std::size_t disk) const
+{
+  const BodyVelocity& turn = velocity_[polygon];
+  const double prepared_cos = std::cos(prepared_theta_[polygon]);
+  const double prepared_sin = std::sin(prepared_theta_[polygon]);
+  const Vec2 centre = prepared_position_[disk] + velocity_[disk].moved - (prepared_position_[polygon] + turn.moved);
   const Vec2 local = rotate_inv(rotate_inv(centre, turn.turned_cos, turn.turned_sin), prepared_cos, prepared_sin);
-  nearest_feature_to_disk(bodies_[face], local, bodies_[disk].radius(), kAnyDistance, nearest);
+  DiskFeature nearest;
+  nearest_feature_to_disk(bodies_[polygon], local, bodies_[disk].radius(), kAnyDistance, nearest);
   nearest.normal = rotate(rotate(nearest.normal, prepared_cos, prepared_sin), turn.turned_cos, turn.turned_sin);
   nearest.closest = rotate(rotate(nearest.closest, prepared_cos, prepared_sin), turn.turned_cos, turn.turned_sin);
-  return nearest.kind == FeatureKind::PolygonFaceDisk && nearest.index == reference_index(p.feature);
+  return nearest;
 }
 
 /// A disk no longer nearest its face: its gap to the polygon's nearest

@@ -255,7 +255,10 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
     const RoundPlace place = round_place(r);
     if (!as_prepared && p.restitution > 0.0 && !r.aimed)
     {
+      // Too fast to aim: the prepared row, its gap the true one and as far
+      // as the path closes before touching (a corner's prepared line is no wall).
       keep_prepared_row(p, r, velocity_);
+      set_followed(p, anchor_offset(p, velocity_), round_speculative_gap(p, r, place, 2.0 * h), r.anchor_drift);
       continue;
     }
     const double slip = back_to_prepared(p, r, velocity_);
@@ -310,13 +313,20 @@ void WorldImpl::aim_round_bounces(double h)
       keep_prepared_row(p, r, velocity_);
       continue;
     }
+    // It meets only if its path touches within two substeps: its passes if
+    // it closes its gap, else the relax at the substep's end if it is left
+    // within a substep's approach of touching. A pair that passes wide keeps
+    // the prepared row, its gap followed along the path (no ghost bounce).
+    const double radius = r.radius_a + r.radius_b;
+    const bool meets = place.gap <= 0.0 || touch_time(place.apart, place.slide, radius, 2.0 * h) < 2.0 * h;
+    if (!meets)
+    {
+      keep_prepared_row(p, r, velocity_);
+      continue;
+    }
     const double approach = -dot(place.slide, now);
     const double stop = std::max(0.0, approach - std::max(place.gap, 0.0) / h);
-    // It rebounds only if the substep pushes it: its passes if it closes
-    // its gap, else the relax at the substep's end if it is left within a
-    // substep's approach of touching.
-    const bool meets = approach * 2.0 * h >= std::max(place.gap, 0.0);
-    const double rebound = meets && approach > settings_.restitution_threshold ? p.restitution * approach : 0.0;
+    const double rebound = approach > settings_.restitution_threshold ? p.restitution * approach : 0.0;
     const double share = stop + rebound > 0.0 ? rebound / (stop + rebound) : 0.0;
     // The line between where the centres are at the push and at the
     // rebound, weighted by the two: in the substep the pair slides on and
@@ -330,7 +340,7 @@ void WorldImpl::aim_round_bounces(double h)
     }
     // The lever arms reach the surfaces where that line puts them, so
     // friction acts at one point of both bodies too.
-    aim_for_substep(p, r, place, line / turned, turned - (r.radius_a + r.radius_b), velocity_);
+    aim_for_substep(p, r, place, line / turned, turned - radius, velocity_);
   }
 }
 

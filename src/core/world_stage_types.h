@@ -113,7 +113,7 @@ struct RoundPoint
   double radius_a = 0.0;  ///< a disk's radius, 0 for a vertex (m)
   double radius_b = 0.0;
   /// A point that can bounce: whether this substep's aim turned it (else it
-  /// keeps its prepared row, and the straight gap along it, this substep).
+  /// keeps its prepared row this substep, its gap followed along the path).
   bool aimed = false;
 };
 

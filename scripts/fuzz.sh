@@ -8,16 +8,23 @@
 # turn it into a regression test in test/unit/). Idempotent: reuses
 # <repo>/.build/fuzz and its grown corpora.
 #
-# Usage: scripts/fuzz.sh [seconds-per-target]
+# Usage: scripts/fuzz.sh [--with-ros devel-space] [seconds-per-target]
+#        --with-ros also builds and runs the ROS conversion's target
+#        (scripts/fuzz_ros.sh) in the same pool, against that catkin devel space
 #        scripts/fuzz.sh --library   (only builds the instrumented core
 #        library, <build>/build/libfuzz_collision2d.a, for scripts/fuzz_ros.sh)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 LIBRARY_ONLY=0
+ROS_DEVEL=""
+ROS_TARGET=fuzz_ros_conversion
 if [[ ${1:-} == --library ]]; then
   LIBRARY_ONLY=1
   shift
+elif [[ ${1:-} == --with-ros ]]; then
+  ROS_DEVEL="${2:?--with-ros needs a devel space}"
+  shift 2
 fi
 SECONDS_PER_TARGET="${1:-60}"
 BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz"
@@ -50,6 +57,11 @@ if [[ $LIBRARY_ONLY -eq 1 ]]; then
 fi
 log "building (-j$JOBS)"
 cmake --build "$BUILD_DIR/build" -j"$JOBS" --target "${TARGETS[@]}"
+POOL=("${TARGETS[@]}")
+if [[ -n $ROS_DEVEL ]]; then
+  "$ROOT/scripts/fuzz_ros.sh" --build-only "$SECONDS_PER_TARGET" "$ROS_DEVEL"
+  POOL+=("$ROS_TARGET")
+fi
 
 # Extra read-only seed folders per target (libFuzzer adds new inputs to the
 # first corpus folder only).
@@ -67,6 +79,11 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # FAILED ...") goes to $BUILD_DIR/<target>.summary.
 run_target() {
   local target=$1
+  if [[ $target == "$ROS_TARGET" ]]; then
+    "$ROOT/scripts/fuzz_ros.sh" --run-only "$SECONDS_PER_TARGET" "$ROS_DEVEL" \
+      >"$BUILD_DIR/$target.summary" 2>"$BUILD_DIR/$target.log" || true
+    return
+  fi
   local corpus="$BUILD_DIR/corpus/$target" artifacts="$BUILD_DIR/artifacts/$target"
   local output="$BUILD_DIR/$target.log" status=0 seeds extra executions crashes
   mkdir -p "$corpus" "$artifacts"
@@ -90,7 +107,7 @@ run_target() {
 
 # The targets share nothing, so up to $JOBS run at once (each is one process
 # on one core): the run takes about ceil(targets / jobs) times the seconds.
-for target in "${TARGETS[@]}"; do
+for target in "${POOL[@]}"; do
   rm -f "$BUILD_DIR/$target.summary"
   while [[ $(jobs -rp | wc -l) -ge $JOBS ]]; do
     wait -n || true
@@ -101,14 +118,14 @@ done
 wait
 
 failed=0
-for target in "${TARGETS[@]}"; do
+for target in "${POOL[@]}"; do
   # A run that died before writing its summary failed too.
   if ! grep -q "^$target: ok" "$BUILD_DIR/$target.summary" 2>/dev/null; then
     failed=1
     tail -n 60 "$BUILD_DIR/$target.log" >&2
   fi
 done
-for target in "${TARGETS[@]}"; do
+for target in "${POOL[@]}"; do
   cat "$BUILD_DIR/$target.summary" 2>/dev/null || echo "$target: FAILED (no summary)"
 done
 if [[ $failed -ne 0 ]]; then

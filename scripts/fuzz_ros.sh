@@ -12,13 +12,20 @@
 # reused from <repo>/.build/fuzz_ros (or $COLLISION2D_BUILD_ROOT/fuzz_ros), the
 # core library from <repo>/.build/fuzz/build.
 #
-# Usage: scripts/fuzz_ros.sh [seconds] [devel-space]
+# Usage: scripts/fuzz_ros.sh [--build-only|--run-only] [seconds] [devel-space]
+#   --build-only only builds the target; --run-only runs the one built
+#                (scripts/fuzz.sh --with-ros runs it beside the core's targets)
 #   seconds      run time (default 60)
 #   devel-space  catkin devel folder holding include/collision2d/*.h
 #                (default $COLLISION2D_DEVEL, else <repo>/.build/ws/devel)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+MODE=all
+if [[ ${1:-} == --build-only || ${1:-} == --run-only ]]; then
+  MODE="${1#--}"
+  shift
+fi
 SECONDS_TO_RUN="${1:-60}"
 DEVEL="${2:-${COLLISION2D_DEVEL:-$ROOT/.build/ws/devel}}"
 BUILD_DIR="${COLLISION2D_BUILD_ROOT:-$ROOT/.build}/fuzz_ros"
@@ -48,39 +55,47 @@ command -v clang++ >/dev/null || { log "clang++ not found (install clang and lib
 [[ -f $DEVEL/include/collision2d/ResolveContacts.h ]] ||
   { log "no generated messages in $DEVEL/include/collision2d: build the package first or pass its devel space"; exit 2; }
 
-# The core as the core's fuzz targets link it (same sanitizers and coverage
-# hooks): one build of it, configured in one place, serves both scripts.
-"$ROOT/scripts/fuzz.sh" --library
+# Builds the target (and the core library it links).
+build() {
+  # The core as the core's fuzz targets link it (same sanitizers and coverage
+  # hooks): one build of it, configured in one place, serves both scripts.
+  "$ROOT/scripts/fuzz.sh" --library
 
-sources=()
-for name in "${ROS_SOURCES[@]}"; do
-  sources+=("$ROOT/src/ros/$name.cpp")
-done
-
-# A generated Makefile: make rebuilds only what changed (-MMD tracks headers)
-# and builds the objects in parallel.
-mkdir -p "$BUILD_DIR/obj" "$BUILD_DIR/corpus" "$BUILD_DIR/artifacts"
-makefile="$BUILD_DIR/Makefile"
-{
-  echo "CXX := clang++"
-  echo "CXXFLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined" \
-    "-fno-sanitize-recover=all -I$ROOT/include -I$ROOT/fuzz -I$DEVEL/include -I/usr/include/eigen3"
-  objects=()
-  for src in "${sources[@]}" "$ROOT/fuzz/$TARGET.cpp"; do
-    obj="obj/$(basename "$(dirname "$src")")_$(basename "${src%.cpp}").o"
-    objects+=("$obj")
-    # The target itself links libFuzzer's main; everything else only its coverage hooks.
-    extra="-fsanitize=fuzzer-no-link"
-    [[ $src == *"/$TARGET.cpp" ]] && extra="-fsanitize=fuzzer"
-    printf '%s: %s\n\t$(CXX) $(CXXFLAGS) %s -MMD -MP -c $< -o $@\n' "$obj" "$src" "$extra"
+  sources=()
+  for name in "${ROS_SOURCES[@]}"; do
+    sources+=("$ROOT/src/ros/$name.cpp")
   done
-  printf '%s: %s %s\n\t$(CXX) $(CXXFLAGS) -fsanitize=fuzzer $^ -o $@ %s\n' "$TARGET" "${objects[*]}" "$CORE_LIBRARY" \
-    "${ROS_LIBS[*]}"
-  echo "-include obj/*.d"
-} >"$makefile.new"
-mv "$makefile.new" "$makefile"
-log "building $BUILD_DIR/$TARGET (-j$JOBS, devel space $DEVEL)"
-make -s -C "$BUILD_DIR" -j"$JOBS" "$TARGET"
+
+  # A generated Makefile: make rebuilds only what changed (-MMD tracks headers)
+  # and builds the objects in parallel.
+  mkdir -p "$BUILD_DIR/obj" "$BUILD_DIR/corpus" "$BUILD_DIR/artifacts"
+  makefile="$BUILD_DIR/Makefile"
+  {
+    echo "CXX := clang++"
+    echo "CXXFLAGS := -std=c++17 -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined" \
+      "-fno-sanitize-recover=all -I$ROOT/include -I$ROOT/fuzz -I$DEVEL/include -I/usr/include/eigen3"
+    objects=()
+    for src in "${sources[@]}" "$ROOT/fuzz/$TARGET.cpp"; do
+      obj="obj/$(basename "$(dirname "$src")")_$(basename "${src%.cpp}").o"
+      objects+=("$obj")
+      # The target itself links libFuzzer's main; everything else only its coverage hooks.
+      extra="-fsanitize=fuzzer-no-link"
+      [[ $src == *"/$TARGET.cpp" ]] && extra="-fsanitize=fuzzer"
+      printf '%s: %s\n\t$(CXX) $(CXXFLAGS) %s -MMD -MP -c $< -o $@\n' "$obj" "$src" "$extra"
+    done
+    printf '%s: %s %s\n\t$(CXX) $(CXXFLAGS) -fsanitize=fuzzer $^ -o $@ %s\n' "$TARGET" "${objects[*]}" "$CORE_LIBRARY" \
+      "${ROS_LIBS[*]}"
+    echo "-include obj/*.d"
+  } >"$makefile.new"
+  mv "$makefile.new" "$makefile"
+  log "building $BUILD_DIR/$TARGET (-j$JOBS, devel space $DEVEL)"
+  make -s -C "$BUILD_DIR" -j"$JOBS" "$TARGET"
+}
+
+[[ $MODE == run-only ]] || build
+if [[ $MODE == build-only ]]; then
+  exit 0
+fi
 
 export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"

@@ -35,9 +35,9 @@ run_check "the performance report's scripts (unit tests)" \
   "$SYSTEM_PYTHON" -m unittest discover -s "$COLLISION2D_ROOT/scripts" -p 'test_*.py'
 run_check "sanitizers (ASan + UBSan unit tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh"
 run_check "thread sanitizer (the multi-worker tests)" "$COLLISION2D_ROOT/scripts/sanitize.sh" thread
-run_check "fuzzing the core (${FUZZ_SECONDS} s per target)" "$COLLISION2D_ROOT/scripts/fuzz.sh" "$FUZZ_SECONDS"
-run_check "fuzzing the ROS conversion (${FUZZ_SECONDS} s)" \
-  "$COLLISION2D_ROOT/scripts/fuzz_ros.sh" "$FUZZ_SECONDS" "$COLLISION2D_WS/devel"
+# The ROS conversion's target runs in the core's pool: four targets, two at a time.
+run_check "fuzzing the core and the ROS conversion (${FUZZ_SECONDS} s per target)" \
+  "$COLLISION2D_ROOT/scripts/fuzz.sh" --with-ros "$COLLISION2D_WS/devel" "$FUZZ_SECONDS"
 
 log "building the tests"
 started=$SECONDS

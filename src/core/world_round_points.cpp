@@ -255,8 +255,9 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
     const RoundPlace place = round_place(r);
     if (!as_prepared && p.restitution > 0.0 && !r.aimed)
     {
-      // Too fast to aim: the prepared row, its gap the true one and as far
-      // as the path closes before touching (a corner's prepared line is no wall).
+      // Not aimed this substep (too fast, or its path passes wide): the
+      // prepared row, its gap the true one and as far as the path closes
+      // before touching (a corner's prepared line is no wall).
       keep_prepared_row(p, r, velocity_);
       set_followed(p, anchor_offset(p, velocity_), round_speculative_gap(p, r, place, 2.0 * h), r.anchor_drift);
       continue;

@@ -337,8 +337,8 @@ TEST(WorldRoundContacts, ADiskBouncingOffAPlanksCornerAtSpeedDoesNotPassThrough)
 // face (it sank up to 2 cm into the face at 20 m/s). The contact now follows
 // the box's feature nearest the disk. A bouncing disk at 20 m/s passes
 // 5 mm clear of the corner, and was bounced off the corner's line of first
-// touch as if it were a wall (it left at 14 to 20 m/s up); now a bouncing
-// contact too fast to aim pushes only where its path touches. Checked at the
+// touch as if it were a wall (it left at 14 to 20 m/s up); a bouncing
+// contact now pushes only where its path touches. Checked at the
 // default 4 substeps, without gravity: the disk never sinks below the face
 // by more than the slop, and it leaves the face at e times the speed it
 // came in at (Newton's rule along the face's normal).

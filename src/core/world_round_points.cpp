@@ -257,9 +257,11 @@ void WorldImpl::follow_round_points(double h, bool as_prepared)
     {
       // Not aimed this substep (too fast, or its path passes wide): the
       // prepared row, its gap the true one and as far as the path closes
-      // before touching (a corner's prepared line is no wall).
+      // before touching (a corner's prepared line is no wall); its slip
+      // goes on from the prepared anchor.
       keep_prepared_row(p, r, velocity_);
-      set_followed(p, anchor_offset(p, velocity_), round_speculative_gap(p, r, place, 2.0 * h), r.anchor_drift);
+      const Vec2 offset = anchor_offset(p, velocity_);
+      set_followed(p, offset, round_speculative_gap(p, r, place, 2.0 * h), r.anchor_drift + slip_at(p, offset));
       continue;
     }
     const double slip = back_to_prepared(p, r, velocity_);

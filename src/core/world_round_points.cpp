@@ -148,7 +148,7 @@ RoundPlace WorldImpl::round_place(const RoundPoint& r) const
   place.apart = r.reach * r.normal + (b.moved + place.arm_b - r.arm_b) - (a.moved + place.arm_a - r.arm_a);
   place.reach = length(place.apart);
   place.gap = place.reach - (r.radius_a + r.radius_b);
-  if ((r.radius_a == 0.0 || r.radius_b == 0.0) && settings_.solver_mode != SolverMode::Exact)
+  if (r.radius_a == 0.0 || r.radius_b == 0.0)
   {
     to_nearest_feature(p, r, place);
   }
@@ -162,9 +162,8 @@ RoundPlace WorldImpl::round_place(const RoundPoint& r) const
 /// skimming over a box's corner sank 20 mm into its top face). The place
 /// follows the polygon's feature nearest the disk's centre now: the
 /// polygon's centre of curvature becomes that feature's closest point, and
-/// the line to the disk's centre runs along its normal. The exact mode
-/// keeps the vertex: with the nearest feature its island solve blew up more
-/// random worlds with a kinematic bar.
+/// the line to the disk's centre runs along its normal. The same in the
+/// exact mode (a point that can bounce is not followed there).
 void WorldImpl::to_nearest_feature(const ContactPoint& p, const RoundPoint& r, RoundPlace& place) const
 {
   const bool polygon_first = r.radius_a == 0.0;

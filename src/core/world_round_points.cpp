@@ -100,13 +100,6 @@ void WorldImpl::list_round_points()
     {
       continue;
     }
-    // The exact mode keeps a point that can bounce on its prepared normal:
-    // aimed, a disk squeezed under a heavy one and against a plank was let
-    // go of by its island's solve and the world gained energy.
-    if (p.restitution > 0.0 && settings_.solver_mode == SolverMode::Exact)
-    {
-      continue;
-    }
     const double radius_a = disk_[p.a] ? bodies_[p.a].radius() : 0.0;
     const double radius_b = disk_[p.b] ? bodies_[p.b].radius() : 0.0;
     const double reach = radius_a + radius_b + p.separation;  // the centres' distance at prepare
@@ -163,7 +156,7 @@ RoundPlace WorldImpl::round_place(const RoundPoint& r) const
 /// follows the polygon's feature nearest the disk's centre now: the
 /// polygon's centre of curvature becomes that feature's closest point, and
 /// the line to the disk's centre runs along its normal. The same in the
-/// exact mode (a point that can bounce is not followed there).
+/// exact mode.
 void WorldImpl::to_nearest_feature(const ContactPoint& p, const RoundPoint& r, RoundPlace& place) const
 {
   const bool polygon_first = r.radius_a == 0.0;
@@ -307,6 +300,15 @@ void WorldImpl::aim_round_bounces(double h)
       // Slid off its vertex onto a face: it bounces along the face's normal,
       // which the slide does not turn.
       aim_for_substep(p, r, place, now, place.gap, velocity_);
+      continue;
+    }
+    if (settings_.solver_mode == SolverMode::Exact)
+    {
+      // Its row as prepared, its gap followed along the path: aimed along
+      // the line between the centres, a disk squeezed under a heavy one and
+      // against a plank was let go of by its island's solve and the world
+      // gained energy.
+      keep_prepared_row(p, r, velocity_);
       continue;
     }
     const Vec2 across = place.slide - dot(place.slide, now) * now;

@@ -230,6 +230,25 @@ void aim_for_substep(ContactPoint& p, RoundPoint& r, const RoundPlace& place, Ve
   set_followed(p, anchor_offset(p, velocity), place.gap, r.anchor_drift + slip);
   r.aimed = true;
 }
+
+/// Whether a bouncing round point off any face is aimed this substep of h
+/// seconds along the line between its centres (else it keeps its prepared
+/// row, its gap followed along the path). Not in the exact mode: aimed so, a
+/// disk squeezed under a heavy one and against a plank was let go of by its
+/// island's solve and the world gained energy. Not when the centres slide
+/// across by more than kBounceAimSlide of their distance in the substep.
+/// Not when the path passes wide: the pair meets only if its path touches
+/// within two substeps (its passes if it closes its gap, else the relax at
+/// the substep's end if it is left within a substep's approach of
+/// touching), so no ghost bounce.
+bool aims_along_line(const RoundPlace& place, double radius, Vec2 across, double h, bool exact)
+{
+  if (exact || length(across) * h > kBounceAimSlide * place.reach)
+  {
+    return false;
+  }
+  return place.gap <= 0.0 || touch_time(place.apart, place.slide, radius, 2.0 * h) < 2.0 * h;
+}
 }  // namespace
 
 /// Round contacts: their normals along the line between their centres now
@@ -302,28 +321,9 @@ void WorldImpl::aim_round_bounces(double h)
       aim_for_substep(p, r, place, now, place.gap, velocity_);
       continue;
     }
-    if (settings_.solver_mode == SolverMode::Exact)
-    {
-      // Its row as prepared, its gap followed along the path: aimed along
-      // the line between the centres, a disk squeezed under a heavy one and
-      // against a plank was let go of by its island's solve and the world
-      // gained energy.
-      keep_prepared_row(p, r, velocity_);
-      continue;
-    }
     const Vec2 across = place.slide - dot(place.slide, now) * now;
-    if (length(across) * h > kBounceAimSlide * place.reach)
-    {
-      keep_prepared_row(p, r, velocity_);
-      continue;
-    }
-    // It meets only if its path touches within two substeps: its passes if
-    // it closes its gap, else the relax at the substep's end if it is left
-    // within a substep's approach of touching. A pair that passes wide keeps
-    // the prepared row, its gap followed along the path (no ghost bounce).
     const double radius = r.radius_a + r.radius_b;
-    const bool meets = place.gap <= 0.0 || touch_time(place.apart, place.slide, radius, 2.0 * h) < 2.0 * h;
-    if (!meets)
+    if (!aims_along_line(place, radius, across, h, settings_.solver_mode == SolverMode::Exact))
     {
       keep_prepared_row(p, r, velocity_);
       continue;

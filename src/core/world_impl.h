@@ -141,9 +141,12 @@ struct WorldImpl : WorldMotion
   /// iterated to the fixed point.
   void restitute(StepReport& report);
   double take_bouncing();
-  double hold_and_release();
   void hold_pushing_points();
+  void save_bounce_start();
+  double release_points();
   void drive_to_targets(double fastest, StepReport& report);
+  __attribute__((noinline, cold)) void drop_unsettled_bounces();
+  void store_bounce_impulses();
   /// Where point k's accumulated normal and tangential impulses live during the substeps.
   ImpulseSlots point_impulses(std::size_t k);
   /// The deepest overlap of the frame's contact points at the poses now,

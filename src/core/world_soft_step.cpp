@@ -9,7 +9,8 @@
 // substep's end, restitution drives the contacts the substep pushed to their
 // Newton targets (e times the approach speed at the substep's start), iterated
 // to the fixed point: a body that meets several others in turn within one
-// frame bounces off each as it meets it. After the substeps no body's
+// frame bounces off each as it meets it (bodies whose passes find no fixed
+// point keep the relax's velocities instead). After the substeps no body's
 // centroid may have passed into a static body (world_static_crossing.cpp).
 // Two kinds of contact follow their geometry before each pass instead: a disk
 // on the face of a turning kinematic body (world_turning_faces.cpp), and a

@@ -83,6 +83,15 @@ struct HeldPoint
   double saved_target = 0.0;  ///< the point's own target, put back after restitution
 };
 
+/// Soft step: a point's accumulated impulses as restitution found them (N s),
+/// put back if its bounce finds no fixed point (world_soft_restitution.cpp).
+struct SavedImpulses
+{
+  std::size_t point = 0;
+  double normal = 0.0;
+  double tangent = 0.0;
+};
+
 /// Soft step: a disk's contact point on the face of a kinematic body that
 /// turns this frame, as it was prepared (world_turning_faces.cpp).
 struct TurningFacePoint

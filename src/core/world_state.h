@@ -173,6 +173,9 @@ struct WorldState
   std::vector<HeldPoint> held_;         ///< scratch: the points it holds while it does
   bool some_cannot_bounce_ = false;     ///< soft step: the frame has active points with e = 0
   std::vector<unsigned char> holding_body_;  ///< scratch: a body of a released or bouncing point
+  std::vector<SavedImpulses> bounce_start_;  ///< scratch: the impulses of the points restitution drives, at its start
+  std::vector<std::size_t> bounce_group_;    ///< scratch: union-find parents over their bodies, when a bounce is dropped
+  std::vector<unsigned char> bounce_dropped_;  ///< scratch: by union-find root, the group's bounce is dropped
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).
   bool followed_known_ = false;

@@ -146,6 +146,8 @@ struct WorldImpl : WorldMotion
   double release_points();
   void drive_to_targets(double fastest, StepReport& report);
   __attribute__((noinline, cold)) void drop_unsettled_bounces();
+  void group_restituted_bodies();
+  std::size_t bounce_group_of(const ContactPoint& p);
   void store_bounce_impulses();
   /// Where point k's accumulated normal and tangential impulses live during the substeps.
   ImpulseSlots point_impulses(std::size_t k);

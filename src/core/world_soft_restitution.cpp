@@ -213,34 +213,13 @@ double WorldImpl::release_points()
 /// relax left, as if nothing in it could bounce this substep.
 void WorldImpl::drop_unsettled_bounces()
 {
-  bounce_group_.resize(bodies_.size());
-  bounce_dropped_.resize(bodies_.size());
-  for (const SavedImpulses& saved : bounce_start_)
-  {
-    const ContactPoint& p = points_[saved.point];
-    for (const std::size_t body : {p.a, p.b})
-    {
-      bounce_group_[body] = body;
-      bounce_dropped_[body] = 0;
-    }
-  }
-  const auto group_of = [this](const ContactPoint& p) {
-    return island_root(bounce_group_, awake_dynamic(p.a) ? p.a : p.b);
-  };
+  group_restituted_bodies();
   bool dropped = false;
-  for (const SavedImpulses& saved : bounce_start_)
-  {
-    const ContactPoint& p = points_[saved.point];
-    if (awake_dynamic(p.a) && awake_dynamic(p.b))
-    {
-      bounce_group_[island_root(bounce_group_, p.a)] = island_root(bounce_group_, p.b);
-    }
-  }
   const auto mark = [&](std::size_t k) {
     const ContactPoint& p = points_[k];
     if (normal_residual(p, velocity_) > settings_.restitution_threshold)
     {
-      bounce_dropped_[group_of(p)] = 1;
+      bounce_dropped_[bounce_group_of(p)] = 1;
       dropped = true;
     }
   };
@@ -262,7 +241,7 @@ void WorldImpl::drop_unsettled_bounces()
   for (const SavedImpulses& saved : bounce_start_)
   {
     ContactPoint& p = points_[saved.point];
-    if (bounce_dropped_[group_of(p)] != 0)
+    if (bounce_dropped_[bounce_group_of(p)] != 0)
     {
       const Vec2 back = (saved.normal - p.lambda_n) * p.normal + (saved.tangent - p.lambda_t) * p.tangent();
       apply_impulse(p, back, velocity_);
@@ -270,6 +249,38 @@ void WorldImpl::drop_unsettled_bounces()
       p.lambda_t = saved.tangent;
     }
   }
+}
+
+/// bounce_group_: union-find over the bodies of the points restitution
+/// drives, two dynamic bodies joined by each point between them (static
+/// and kinematic bodies join nothing); bounce_dropped_ cleared for them.
+void WorldImpl::group_restituted_bodies()
+{
+  bounce_group_.resize(bodies_.size());
+  bounce_dropped_.resize(bodies_.size());
+  for (const SavedImpulses& saved : bounce_start_)
+  {
+    const ContactPoint& p = points_[saved.point];
+    for (const std::size_t body : {p.a, p.b})
+    {
+      bounce_group_[body] = body;
+      bounce_dropped_[body] = 0;
+    }
+  }
+  for (const SavedImpulses& saved : bounce_start_)
+  {
+    const ContactPoint& p = points_[saved.point];
+    if (awake_dynamic(p.a) && awake_dynamic(p.b))
+    {
+      bounce_group_[island_root(bounce_group_, p.a)] = island_root(bounce_group_, p.b);
+    }
+  }
+}
+
+/// The group of a restituted point: its dynamic body's.
+std::size_t WorldImpl::bounce_group_of(const ContactPoint& p)
+{
+  return island_root(bounce_group_, awake_dynamic(p.a) ? p.a : p.b);
 }
 
 /// The restituted impulses into their slots; the held points' own targets back.

@@ -133,7 +133,10 @@ void WorldImpl::restitute(StepReport& report)
   {
     hold_pushing_points();
   }
-  save_bounce_start();
+  if (fastest > 0.0 || !released_.empty())  // else nothing below changes a velocity
+  {
+    save_bounce_start();
+  }
   if (!released_.empty())
   {
     fastest = std::max(fastest, release_points());

@@ -5,9 +5,12 @@
 // faster than the bar that presses it. Restitution leaves friction out, and
 // without friction the disk's only way out is sideways at the bar's speed
 // over the wedge's tangent: its passes, looking for that bounce, threw the
-// disk at 40 to 80 m/s (2260 m/s in a random world). A bounce whose passes
-// find no fixed point is now dropped for the bodies it joins, and a pair
-// bouncing elsewhere in the same substep still bounces by Newton's rule.
+// disk at 82 and 55 m/s (4 and 8 substeps; 2260 m/s in a random world). A
+// bounce whose passes find no fixed point is now dropped for the bodies it
+// joins, and a pair bouncing elsewhere in the same substep still bounces by
+// Newton's rule.
+// Iterative mode only: the exact mode's relax, normal impulses only, still
+// lets a jammed disk out (CHANGELOG).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -42,12 +45,11 @@ struct WedgeRun
   Vec2 pair_momentum_after;
 };
 
-WedgeRun run_wedge(SolverMode mode, int substeps)
+WedgeRun run_wedge(int substeps)
 {
   WorldSettings s;
   s.gravity = Vec2{0.0, 0.0};  // the bar alone presses
   s.sleeping = Toggle::Off;
-  s.solver_mode = mode;
   s.substeps = substeps;
   World world(s);
   Body ground = scenes::make_box(1.0, 40.0, 1.0, {0.0, -0.5});
@@ -78,9 +80,9 @@ WedgeRun run_wedge(SolverMode mode, int substeps)
   return run;
 }
 
-void expect_jammed_and_pair_bounces(SolverMode mode, int substeps)
+void expect_jammed_and_pair_bounces(int substeps)
 {
-  const WedgeRun run = run_wedge(mode, substeps);
+  const WedgeRun run = run_wedge(substeps);
   test::print_figure("wedged disk's fastest speed (m/s)", run.fastest_disk, kBarSpeed);
   EXPECT_LT(run.fastest_disk, kBarSpeed);
   // Newton's rule on the pair: its closing speed reversed and halved, its momentum kept.
@@ -91,12 +93,12 @@ void expect_jammed_and_pair_bounces(SolverMode mode, int substeps)
 
 TEST(ExtremesKinematicWedge, AJammedBouncyDiskIsNotThrownOutAtFourSubsteps)
 {
-  expect_jammed_and_pair_bounces(SolverMode::Iterative, 4);
+  expect_jammed_and_pair_bounces(4);
 }
 
 TEST(ExtremesKinematicWedge, AJammedBouncyDiskIsNotThrownOutAtEightSubsteps)
 {
-  expect_jammed_and_pair_bounces(SolverMode::Iterative, 8);
+  expect_jammed_and_pair_bounces(8);
 }
 
 }  // namespace

@@ -111,6 +111,49 @@ void build_islands(const std::vector<detail::BodyVelocity>& velocity, const deta
   out.lcp.local_body.assign(velocity.size(), -1);
 }
 
+/// The island's rows without friction: an LCP of normal impulses only.
+void drop_cones(detail::ContactPoints& rows, detail::IslandRange island)
+{
+  for (std::size_t r = island.begin; r < island.end; ++r)
+  {
+    rows[r].mu_s = 0.0;
+    rows[r].mu_k = 0.0;
+  }
+}
+
+/// The velocities of the island's bodies from `from` into `to`; other
+/// bodies' are left as they are (a free body may have had its next gravity
+/// kick since `from` was taken).
+void set_island_velocities(const detail::ContactPoints& rows, detail::IslandRange island,
+                           const std::vector<detail::BodyVelocity>& from, std::vector<detail::BodyVelocity>& to)
+{
+  for (std::size_t r = island.begin; r < island.end; ++r)
+  {
+    for (std::size_t i : {rows[r].a, rows[r].b})
+    {
+      to[i].v = from[i].v;
+      to[i].omega = from[i].omega;
+    }
+  }
+}
+
+/// Whether a kinematic body that moves this frame touches the island.
+bool kinematic_moves_island(const detail::ContactPoints& rows, detail::IslandRange island,
+                            const std::vector<FrameMotion>& motion, const std::vector<detail::BodyVelocity>& velocity)
+{
+  for (std::size_t r = island.begin; r < island.end; ++r)
+  {
+    for (std::size_t i : {rows[r].a, rows[r].b})
+    {
+      if (motion[i] == FrameMotion::Kinematic && (velocity[i].v != Vec2{} || velocity[i].omega != 0.0))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 /// Pivots the island's velocity LCP and stores the impulses in its rows;
 /// false when pivoting failed or the island is too large. With friction the
 /// grouped form is used (grouped_friction_lcp.h).
@@ -150,9 +193,9 @@ enum class IslandSolve
 };
 
 /// Velocity solve of one island: impulses in the rows and velocities in
-/// `state`, or the island's velocities back where they started. The residual
-/// recomputed from the velocities must be round-off of the speeds involved,
-/// as in solve_exact.
+/// `state`, or the island's velocities set to `velocity` (those the passes
+/// go on from). The residual recomputed from the velocities must be round-off
+/// of the speeds involved, as in solve_exact.
 IslandSolve solve_velocity_island(const std::vector<detail::BodyVelocity>& velocity, ExactIslands& islands,
                                   detail::IslandRange island)
 {
@@ -187,21 +230,37 @@ IslandSolve solve_velocity_island(const std::vector<detail::BodyVelocity>& veloc
 
 }  // namespace
 
-void WorldImpl::solve_exact_islands(StepReport& report, bool seed, const std::vector<double>* targets, bool add)
+void WorldImpl::solve_exact_islands(StepReport& report, bool seed, const std::vector<double>* targets, bool relax)
 {
-  // A second pass of the substep adds normal impulses only: its cones would
-  // hold just what that pass pushes, not the substep's load.
+  // The relax's LCP only holds what the first pass left: with still
+  // neighbours, no speed may grow (the answer is the nearest allowed
+  // velocity, and rest is allowed), so it adds normal impulses only; cones
+  // on those would hold what the relax pushes, not the substep's load. A
+  // moving kinematic body does work: a disk it jams into a wedge found the
+  // frictionless way out sideways (86.6 m/s under a bar closing at 10 m/s),
+  // so such an island solves its impulses again, cones and all, from the
+  // velocities the first pass began with.
   ExactIslands islands;
-  build_islands(velocity_, points_, !add, targets, islands);
+  build_islands(velocity_, points_, true, targets, islands);
   for (const detail::IslandRange& island : islands.islands)
   {
+    const bool again = relax && kinematic_moves_island(islands.rows, island, frame_motion_, velocity_);
+    if (relax && !again)
+    {
+      drop_cones(islands.rows, island);
+    }
+    if (again)
+    {
+      set_island_velocities(islands.rows, island, exact_start_, islands.state);
+    }
+    const bool add = relax && !again;
     const IslandSolve solve = solve_velocity_island(velocity_, islands, island);
     const bool solved = solve == IslandSolve::Exact;
     ++(solved ? report.exact_islands : report.exact_fallbacks);
     // A near answer replaces the warm start the passes begin from (a light
     // body squeezed by a heavy one is where pivoting loses digits, and
     // where a pass from the last substep's impulses goes furthest wrong).
-    const bool seeds = solve == IslandSolve::Seed && seed && !add;
+    const bool seeds = solve == IslandSolve::Seed && seed && !relax;
     for (std::size_t r = island.begin; (solved || seeds) && r < island.end; ++r)
     {
       const detail::ContactPoint& row = islands.rows[r];
@@ -211,11 +270,7 @@ void WorldImpl::solve_exact_islands(StepReport& report, bool seed, const std::ve
       w.lambda_t = add ? w.lambda_t : row.lambda_t;
       w.sliding = add ? w.sliding : row.sliding;
     }
-  }
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-  {
-    velocity_[i].v = islands.state[i].v;
-    velocity_[i].omega = islands.state[i].omega;
+    set_island_velocities(islands.rows, island, islands.state, velocity_);
   }
 }
 

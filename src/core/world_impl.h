@@ -320,11 +320,12 @@ struct WorldImpl : WorldMotion
 
   // world_exact.cpp
   /// With `targets`, row k aims at (*targets)[k] instead of its Newton target;
-  /// with `add`, a second pass of the substep: normal impulses only, added to the points'.
+  /// with `relax`, the substep's second pass: normal impulses added, or, in an
+  /// island a moving kinematic body touches, all solved again from `exact_start_`.
   /// With `seed`, the passes that follow warm start: an island solved near
   /// but not exactly leaves its impulses as their warm start.
   void solve_exact_islands(StepReport& report, bool seed, const std::vector<double>* targets = nullptr,
-                           bool add = false);
+                           bool relax = false);
   void solve_position_islands(double softness, StepReport& report);
 
   // world_rest.cpp: a frame at rest repeats the last one, which is replayed.

@@ -22,7 +22,8 @@
 // cannot creep by round-off-sized slips.
 // In the exact mode each pass solves every island as one LCP instead
 // (world_exact.cpp): from scratch, a gap allowed to close, an overlap pushed
-// out rigidly at the soft rate; the relax adds normal impulses only.
+// out rigidly at the soft rate; the relax adds normal impulses, or, in an
+// island a moving kinematic body touches, solves again from the same start.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -191,6 +192,10 @@ void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport
   {
     // Each island at once by pivoting, from scratch (no warm start); an
     // island too large for it goes through the soft passes below.
+    if (use_bias)
+    {
+      exact_start_ = velocity_;  // for the relax (capacity kept: no allocation after the first frame)
+    }
     aim_exact_targets(ctx, use_bias);
     solve_exact_islands(report, use_bias, &exact_targets_, !use_bias);  // world_exact.cpp: the biased pass warm starts
   }

@@ -156,6 +156,7 @@ struct WorldState
   std::vector<unsigned char> stopped_;
   std::vector<unsigned char> touching_;  ///< soft step: has a contact point this frame (bytes: the workers reset it)
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
+  std::vector<BodyVelocity> exact_start_;  ///< soft step, exact mode: the velocities the substep's solve began from
   ContactSprings springs_;               ///< soft step: this frame's contact springs (a point's: springs_.of(p))
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at

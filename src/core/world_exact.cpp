@@ -44,6 +44,13 @@ namespace detail
 {
 namespace
 {
+/// An island's solve may raise its contacts' speeds (targets included) by
+/// at most this factor. A body squeezed between a kinematic body and a
+/// static one makes the LCP nearly singular; pivoting then answers with
+/// huge impulses that cancel each other, within a residual scaled by those
+/// impulses, and their friction flung a 114 kg box at 6.4e4 m/s.
+constexpr double kMaxSpeedGain = 10.0;
+
 /// A solve whose residual is within this fraction of its speeds, but not
 /// round-off (kTrustedResidual), seeds the passes instead (m/s per m/s).
 constexpr double kSeedResidual = 1e-2;

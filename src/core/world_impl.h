@@ -144,11 +144,8 @@ struct WorldImpl : WorldMotion
   void hold_pushing_points();
   void save_bounce_start();
   double release_points();
-  bool drive_to_targets(double fastest, StepReport& report);
-  // world_soft_restitution_drop.cpp: bounces that found no fixed point, or a wild one, taken back.
-  void drop_wild_bounces(bool settled, double change_bound);
-  __attribute__((noinline, cold)) bool mark_wild_groups(bool settled, double change_bound);
-  void take_back_dropped_bounces();
+  void drive_to_targets(double fastest, StepReport& report);
+  __attribute__((noinline, cold)) void drop_unsettled_bounces();
   void group_restituted_bodies();
   std::size_t bounce_group_of(const ContactPoint& p);
   void store_bounce_impulses();

@@ -84,13 +84,12 @@ struct HeldPoint
 };
 
 /// Soft step: a point's accumulated impulses as restitution found them (N s),
-/// put back if its bounce finds no fixed point or a wild one (world_soft_restitution_drop.cpp).
+/// put back if its bounce finds no fixed point (world_soft_restitution.cpp).
 struct SavedImpulses
 {
   std::size_t point = 0;
   double normal = 0.0;
   double tangent = 0.0;
-  Vec2 relative;  ///< the bodies' relative velocity at the point then (m/s)
 };
 
 /// Soft step: a disk's contact point on the face of a kinematic body that
@@ -163,14 +162,6 @@ constexpr double kCoreFraction = 0.25;
 constexpr double kCrossingMoveFraction = 0.5;
 /// kept_from_ of a pair whose manifold was found by the narrow phase.
 constexpr std::size_t kNotKept = static_cast<std::size_t>(-1);
-/// A solve of contacts may change their speeds by at most this factor of
-/// its own scale: an exact island's LCP its speeds and targets, a substep's
-/// restitution its fastest target. A body that a moving kinematic body
-/// squeezes against a static one makes the problem nearly singular, and its
-/// answers fling bodies out: a 114 kg box at 6.4e4 m/s from the LCP's huge
-/// cancelling impulses, a polygon at 1052 m/s from 55 m/s from
-/// restitution's normal impulses alone.
-constexpr double kMaxSpeedGain = 10.0;
 
 /// What select_effects needs to know of the bodies (world_effects.cpp).
 struct BodyCensus

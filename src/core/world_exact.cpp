@@ -217,14 +217,7 @@ IslandSolve solve_velocity_island(const std::vector<detail::BodyVelocity>& veloc
   {
     return IslandSolve::Exact;
   }
-  for (std::size_t r = island.begin; r < island.end; ++r)
-  {
-    for (std::size_t i : {islands.rows[r].a, islands.rows[r].b})
-    {
-      islands.state[i].v = velocity[i].v;
-      islands.state[i].omega = velocity[i].omega;
-    }
-  }
+  set_island_velocities(islands.rows, island, velocity, islands.state);
   return calm && residual <= kSeedResidual * scale ? IslandSolve::Seed : IslandSolve::Failed;
 }
 

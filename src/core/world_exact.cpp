@@ -201,6 +201,7 @@ IslandSolve solve_velocity_island(const std::vector<detail::BodyVelocity>& veloc
 {
   if (!pivot_velocity_island(islands, island))
   {
+    set_island_velocities(islands.rows, island, velocity, islands.state);  // a relax solving again began elsewhere
     return IslandSolve::Failed;
   }
   const double speed_before = detail::contact_speed_scale(islands.rows, island, islands.state);

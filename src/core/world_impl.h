@@ -130,7 +130,8 @@ struct WorldImpl : WorldMotion
   __attribute__((noinline, cold)) void aim_round_bounces(double h);
   RoundPlace round_place(const RoundPoint& r) const;
   void to_nearest_feature(const ContactPoint& p, const RoundPoint& r, RoundPlace& place) const;
-  // world_soft_restitution.cpp: restitution, substep by substep.
+  // world_soft_restitution.cpp: restitution, substep by substep (taken back
+  // in world_soft_bounce_drop.cpp).
   /// The frame's points that can bounce, after the rows are packed.
   void find_bounce_points();
   /// At a substep's start: each bouncing point's Newton target from the

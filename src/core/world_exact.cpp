@@ -245,7 +245,7 @@ void WorldImpl::solve_exact_islands(StepReport& report, bool seed, const std::ve
     }
     if (again)
     {
-      set_island_velocities(islands.rows, island, exact_start_, islands.state);
+      set_island_velocities(islands.rows, island, solve_start_, islands.state);
     }
     const bool add = relax && !again;
     const IslandSolve solve = solve_velocity_island(velocity_, islands, island);

@@ -146,7 +146,9 @@ struct WorldImpl : WorldMotion
   void save_bounce_start();
   double release_points();
   void drive_to_targets(double fastest, StepReport& report);
-  __attribute__((noinline, cold)) void drop_unsettled_bounces();
+  void drop_bounces(bool unsettled);
+  bool mark_unsettled_groups();
+  bool mark_energetic_groups();
   void group_restituted_bodies();
   std::size_t bounce_group_of(const ContactPoint& p);
   void store_bounce_impulses();
@@ -322,7 +324,7 @@ struct WorldImpl : WorldMotion
   // world_exact.cpp
   /// With `targets`, row k aims at (*targets)[k] instead of its Newton target;
   /// with `relax`, the substep's second pass: normal impulses added, or, in an
-  /// island a moving kinematic body touches, all solved again from `exact_start_`.
+  /// island a moving kinematic body touches, all solved again from `solve_start_`.
   /// With `seed`, the passes that follow warm start: an island solved near
   /// but not exactly leaves its impulses as their warm start.
   void solve_exact_islands(StepReport& report, bool seed, const std::vector<double>* targets = nullptr,

@@ -7,7 +7,7 @@
 // frame, and lose its energy; per substep, each meeting bounces from the speed
 // it happened at. Where the passes find no fixed point (a body jammed in a
 // wedge that a kinematic body closes), the bodies that point joins keep the
-// relax's velocities for that substep (drop_unsettled_bounces).
+// relax's velocities for that substep (drop_bounces).
 #include <algorithm>
 #include <cmath>
 
@@ -170,19 +170,17 @@ void WorldImpl::drive_to_targets(double fastest, StepReport& report)
     }
   }
   report.velocity_residual = std::max(report.velocity_residual, residual);
-  if (residual > kRestitutionTolerance * fastest)
-  {
-    drop_unsettled_bounces();
-  }
+  drop_bounces(residual > kRestitutionTolerance * fastest);  // world_soft_bounce_drop.cpp
 }
 
 /// The impulses of the bouncing, released and held points before
-/// restitution changes any (drop_unsettled_bounces).
+/// restitution changes any (drop_bounces).
 void WorldImpl::save_bounce_start()
 {
   bounce_start_.clear();
   for_each_restituted(bouncing_, released_, held_, bounce_points_, [this](std::size_t k, ImpulseSlots) {
-    bounce_start_.push_back(SavedImpulses{k, points_[k].lambda_n, points_[k].lambda_t});
+    const ContactPoint& p = points_[k];
+    bounce_start_.push_back(SavedImpulses{k, p.lambda_n, p.lambda_t, relative_velocity(p, velocity_)});
   });
 }
 

@@ -188,14 +188,15 @@ bool WorldImpl::prepare_soft_range(std::size_t begin, std::size_t end)
 void WorldImpl::solve_contacts(const StepContext& ctx, bool use_bias, StepReport& report)
 {
   follow_points(ctx.h);                                   // world_turning_faces.cpp, world_round_points.cpp
-  if (settings_.solver_mode == SolverMode::Exact)
+  const bool exact = settings_.solver_mode == SolverMode::Exact;
+  if (use_bias && (exact || !bounce_points_.empty()))
+  {
+    solve_start_ = velocity_;  // for the exact relax and restitution (capacity kept: no allocation after the first frame)
+  }
+  if (exact)
   {
     // Each island at once by pivoting, from scratch (no warm start); an
     // island too large for it goes through the soft passes below.
-    if (use_bias)
-    {
-      exact_start_ = velocity_;  // for the relax (capacity kept: no allocation after the first frame)
-    }
     aim_exact_targets(ctx, use_bias);
     solve_exact_islands(report, use_bias, &exact_targets_, !use_bias);  // world_exact.cpp: the biased pass warm starts
   }

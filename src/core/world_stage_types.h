@@ -84,12 +84,28 @@ struct HeldPoint
 };
 
 /// Soft step: a point's accumulated impulses as restitution found them (N s),
-/// put back if its bounce finds no fixed point (world_soft_restitution.cpp).
+/// put back if its bounce is dropped (world_soft_bounce_drop.cpp), and the
+/// relative velocity there then (m/s) for the work restitution does.
 struct SavedImpulses
 {
   std::size_t point = 0;
   double normal = 0.0;
   double tangent = 0.0;
+  Vec2 velocity;
+};
+
+/// Soft step: restitution's bookkeeping per group of bodies (sums at the
+/// union-find root) and per body (`counted`), when it checks its answer.
+struct BounceGroup
+{
+  double work = 0.0;          ///< J: what restitution's impulses did inside the group
+  double energy_start = 0.0;  ///< J: kinetic, at the substep's solve's start
+  double energy_after = 0.0;  ///< J: kinetic, after restitution
+  double mass = 0.0;          ///< kg: the group's dynamic bodies
+  double target = 0.0;        ///< m/s: the fastest target at its points
+  bool kinematic = false;     ///< a moving kinematic body touches it
+  bool dropped = false;
+  bool counted = false;  ///< the body is in its group's sums
 };
 
 /// Soft step: a disk's contact point on the face of a kinematic body that

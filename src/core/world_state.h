@@ -156,7 +156,9 @@ struct WorldState
   std::vector<unsigned char> stopped_;
   std::vector<unsigned char> touching_;  ///< soft step: has a contact point this frame (bytes: the workers reset it)
   std::vector<double> exact_targets_;    ///< soft step, exact mode: each point's velocity target (m/s)
-  std::vector<BodyVelocity> exact_start_;  ///< soft step, exact mode: the velocities the substep's solve began from
+  /// soft step: the velocities the substep's solve began from (the exact
+  /// relax solves again from them; restitution checks its energy against them)
+  std::vector<BodyVelocity> solve_start_;
   ContactSprings springs_;               ///< soft step: this frame's contact springs (a point's: springs_.of(p))
   SoftRows soft_rows_;                   ///< soft step, iterative mode: the frame's manifolds in colours
   std::vector<Vec2> held_position_;      ///< ... and the pose it stopped at
@@ -175,8 +177,8 @@ struct WorldState
   bool some_cannot_bounce_ = false;     ///< soft step: the frame has active points with e = 0
   std::vector<unsigned char> holding_body_;  ///< scratch: a body of a released or bouncing point
   std::vector<SavedImpulses> bounce_start_;  ///< scratch: the impulses of the points restitution drives, at its start
-  std::vector<std::size_t> bounce_group_;    ///< scratch: union-find parents over their bodies, when a bounce is dropped
-  std::vector<unsigned char> bounce_dropped_;  ///< scratch: by union-find root, the group's bounce is dropped
+  std::vector<std::size_t> bounce_group_;    ///< scratch: union-find parents over their bodies, when restitution checks its answer
+  std::vector<BounceGroup> bounce_groups_;  ///< scratch: by union-find root, what restitution did in the group
   /// Soft step: followed_penetration() of the step's last frame, worked out
   /// by publish_contacts (nothing changes the points or poses after it).
   bool followed_known_ = false;

@@ -138,14 +138,13 @@ void set_island_velocities(const detail::ContactPoints& rows, detail::IslandRang
 }
 
 /// Whether a kinematic body that moves this frame touches the island.
-bool kinematic_moves_island(const detail::ContactPoints& rows, detail::IslandRange island,
-                            const std::vector<FrameMotion>& motion, const std::vector<detail::BodyVelocity>& velocity)
+bool kinematic_moves_island(const WorldImpl& world, const detail::ContactPoints& rows, detail::IslandRange island)
 {
   for (std::size_t r = island.begin; r < island.end; ++r)
   {
     for (std::size_t i : {rows[r].a, rows[r].b})
     {
-      if (motion[i] == FrameMotion::Kinematic && (velocity[i].v != Vec2{} || velocity[i].omega != 0.0))
+      if (world.moving_kinematic(i))
       {
         return true;
       }
@@ -238,7 +237,7 @@ void WorldImpl::solve_exact_islands(StepReport& report, bool seed, const std::ve
   build_islands(velocity_, points_, true, targets, islands);
   for (const detail::IslandRange& island : islands.islands)
   {
-    const bool again = relax && kinematic_moves_island(islands.rows, island, frame_motion_, velocity_);
+    const bool again = relax && kinematic_moves_island(*this, islands.rows, island);
     if (relax && !again)
     {
       drop_cones(islands.rows, island);

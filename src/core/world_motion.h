@@ -72,6 +72,12 @@ struct WorldMotion : WorldState
   std::size_t visited(std::size_t k) const { return body_pass_full_ ? k : movers_[k]; }
   /// A dynamic body that is awake: gravity and contacts move it.
   bool awake_dynamic(std::size_t i) const { return bodies_[i].type() == BodyType::Dynamic && !asleep_[i]; }
+  /// Soft step: a kinematic body that moves this frame (it does work on what
+  /// it touches).
+  bool moving_kinematic(std::size_t i) const
+  {
+    return frame_motion_[i] == FrameMotion::Kinematic && (velocity_[i].v != Vec2{} || velocity_[i].omega != 0.0);
+  }
 
   // world_motion.cpp: a body's move over a substep, and its velocity
   // between the body record and the solver's copy.

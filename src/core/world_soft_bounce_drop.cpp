@@ -110,8 +110,7 @@ bool WorldImpl::mark_energetic_groups()
         group.energy_start += body_kinetic_energy(solve_start_[body]);
         group.energy_after += body_kinetic_energy(velocity_[body]);
       }
-      const BodyVelocity& b = velocity_[body];
-      group.kinematic = group.kinematic || (bodies_[body].type() == BodyType::Kinematic && (b.v != Vec2{} || b.omega != 0.0));
+      group.kinematic = group.kinematic || moving_kinematic(body);
     }
   }
   bool dropped = false;
